@@ -1,0 +1,6 @@
+//! durer: a POV-Ray 3.7 scene description language interpreter and recursive ray tracer.
+//!
+//! The pipeline runs one way: `syntax` (pest grammar to spanned AST) → `eval` (AST to
+//! [`scene::Scene`]) → `geometry` + `accel` (render objects and BVH) → `render` (image).
+
+pub mod scene;

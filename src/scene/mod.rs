@@ -1,0 +1,300 @@
+//! The evaluated scene: plain, immutable data handed from `eval` to the renderer.
+//!
+//! In: nothing (this is a data definition). Out: [`Scene`]. Holds: every value is final
+//! (defaults filled in, camera vectors resolved); no macros, identifiers or spans remain.
+
+mod colour;
+mod transform;
+
+pub use colour::Colour;
+pub use transform::Transform;
+
+use glam::DVec3;
+use std::sync::Arc;
+
+/// A whole scene ready to render.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    /// The camera (POV-Ray's default camera when the scene has none).
+    pub camera: Camera,
+    /// All light sources, in scene order.
+    pub lights: Vec<LightSource>,
+    /// Top-level objects, in scene order.
+    pub objects: Vec<Object>,
+    /// Colour seen by rays that hit nothing.
+    pub background: Colour,
+    /// `global_settings` and the language version that decides gamma handling.
+    pub settings: GlobalSettings,
+}
+
+/// `global_settings` with POV-Ray's defaults filled in.
+#[derive(Clone, Debug)]
+pub struct GlobalSettings {
+    /// `assumed_gamma` as written, or `None` when the scene gives none.
+    pub assumed_gamma: Option<f64>,
+    /// The `#version` in force when parsing ended (3.7 when the scene declares none).
+    pub language_version: f64,
+    /// Whether the scene declared a `#version` at all.
+    pub version_declared: bool,
+    /// Maximum recursion depth of reflected and refracted rays (default 5).
+    pub max_trace_level: u32,
+    /// Rays contributing less than this are not traced (default 1/255).
+    pub adc_bailout: f64,
+    /// Multiplies every finish's ambient term (default white).
+    pub ambient_light: DVec3,
+}
+
+impl Default for GlobalSettings {
+    fn default() -> Self {
+        GlobalSettings {
+            assumed_gamma: None,
+            language_version: 3.7,
+            version_declared: false,
+            max_trace_level: 5,
+            adc_bailout: 1.0 / 255.0,
+            ambient_light: DVec3::ONE,
+        }
+    }
+}
+
+/// The kind of projection a camera makes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Projection {
+    /// Rays fan out from `location` through the image plane.
+    Perspective,
+    /// Parallel rays along `direction`; the image spans `right` by `up`.
+    Orthographic,
+}
+
+/// A camera with all vectors resolved (look_at, angle, sky and transformations applied).
+///
+/// A perspective ray through image coordinates (u, v) in [-0.5, 0.5] (v up) has direction
+/// `direction + u * right + v * up`, starting at `location`. An orthographic ray starts at
+/// `location + u * right + v * up` and runs along `direction`.
+#[derive(Clone, Debug)]
+pub struct Camera {
+    /// Projection type.
+    pub projection: Projection,
+    /// The eye point (centre of the image plane for orthographic).
+    pub location: DVec3,
+    /// From the eye to the centre of the image plane.
+    pub direction: DVec3,
+    /// The full width of the image plane (POV-Ray's default is `<1.33, 0, 0>`).
+    pub right: DVec3,
+    /// The full height of the image plane.
+    pub up: DVec3,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        Camera {
+            projection: Projection::Perspective,
+            location: DVec3::ZERO,
+            direction: DVec3::Z,
+            right: DVec3::new(1.33, 0.0, 0.0),
+            up: DVec3::Y,
+        }
+    }
+}
+
+/// A light source.
+#[derive(Clone, Debug)]
+pub struct LightSource {
+    /// Position of the light.
+    pub position: DVec3,
+    /// Colour (intensity) of the light.
+    pub colour: DVec3,
+    /// A `shadowless` light is never blocked by objects.
+    pub shadowless: bool,
+    /// Spotlight cone, when the light is a spotlight.
+    pub spotlight: Option<Spotlight>,
+    /// `fade_distance`; 0 means no fading.
+    pub fade_distance: f64,
+    /// `fade_power`; 0 means no fading.
+    pub fade_power: f64,
+}
+
+/// The cone of a `spotlight`.
+#[derive(Clone, Copy, Debug)]
+pub struct Spotlight {
+    /// The point the spotlight aims at.
+    pub point_at: DVec3,
+    /// Half-angle in degrees of the fully lit cone (default 30).
+    pub radius: f64,
+    /// Half-angle in degrees where the light reaches zero (default 45).
+    pub falloff: f64,
+    /// Exponent sharpening the edge of the cone.
+    pub tightness: f64,
+}
+
+/// One object of the scene tree: a shape or a CSG node, with its appearance.
+#[derive(Clone, Debug)]
+pub struct Object {
+    /// What the object is.
+    pub shape: Shape,
+    /// Maps this object's local space into its parent's space (world for top-level objects).
+    pub transform: Transform,
+    /// Appearance; `None` inherits the parent's (or the default texture at top level).
+    /// Pattern transformations inside are expressed in this object's local space.
+    pub texture: Option<Arc<Texture>>,
+    /// Interior (index of refraction...); `None` inherits the parent's or the default.
+    pub interior: Option<Interior>,
+    /// Swaps inside and outside (`inverse`).
+    pub inverse: bool,
+    /// The object casts no shadow (`no_shadow`).
+    pub no_shadow: bool,
+    /// `hollow` as written: `Some(true)` hollow, `Some(false)` `hollow off`, `None` unspecified.
+    pub hollow: Option<bool>,
+}
+
+impl Object {
+    /// An object with the given shape and everything else at its default.
+    pub fn new(shape: Shape) -> Object {
+        Object {
+            shape,
+            transform: Transform::IDENTITY,
+            texture: None,
+            interior: None,
+            inverse: false,
+            no_shadow: false,
+            hollow: None,
+        }
+    }
+}
+
+/// The geometry of an object, in the object's local space, as written in the scene.
+#[derive(Clone, Debug)]
+pub enum Shape {
+    /// `sphere { centre, radius }`.
+    Sphere { centre: DVec3, radius: f64 },
+    /// `box { corner1, corner2 }`.
+    Box { corner1: DVec3, corner2: DVec3 },
+    /// `plane { normal, distance }`, the normal as written (not yet normalised).
+    Plane { normal: DVec3, distance: f64 },
+    /// `cylinder { base, cap, radius [open] }`.
+    Cylinder { base: DVec3, cap: DVec3, radius: f64, open: bool },
+    /// `cone { base, base_radius, cap, cap_radius [open] }`.
+    Cone { base: DVec3, base_radius: f64, cap: DVec3, cap_radius: f64, open: bool },
+    /// `torus { major, minor }`, in the XZ plane around the Y axis.
+    Torus { major: f64, minor: f64 },
+    /// `disc { centre, normal, radius [, hole_radius] }`.
+    Disc { centre: DVec3, normal: DVec3, radius: f64, hole_radius: f64 },
+    /// `quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }`:
+    /// A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
+    Quadric { coefficients: [f64; 10] },
+    /// `triangle { a, b, c }`.
+    Triangle { corners: [DVec3; 3] },
+    /// A CSG combination of child objects.
+    Csg { operation: CsgOperation, children: Vec<Object> },
+}
+
+/// The four CSG operations.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgOperation {
+    /// All surfaces of all children.
+    Union,
+    /// Surfaces of each child that lie inside all the others.
+    Intersection,
+    /// The first child minus the rest (an intersection with the later children inverted).
+    Difference,
+    /// A union without the surfaces that lie inside other children.
+    Merge,
+}
+
+/// Surface appearance: pigment, finish and (later) normal perturbation.
+#[derive(Clone, Debug)]
+pub struct Texture {
+    /// Colour and transparency at each point.
+    pub pigment: Pigment,
+    /// How the surface reacts to light.
+    pub finish: Finish,
+}
+
+impl Default for Texture {
+    fn default() -> Self {
+        Texture { pigment: Pigment::Solid(Colour::BLACK), finish: Finish::default() }
+    }
+}
+
+/// A pigment: a colour function of position.
+#[derive(Clone, Debug)]
+pub enum Pigment {
+    /// The same colour everywhere.
+    Solid(Colour),
+    /// A pattern looked up through a map; the point is first mapped by `transform`'s
+    /// `inner_from_outer` (object local space to pattern space).
+    Pattern { pattern: Pattern, map: PigmentMap, transform: Transform },
+}
+
+/// A pattern: a function from pattern space to a value in [0, 1] or a block index.
+#[derive(Clone, Debug)]
+pub enum Pattern {
+    /// 3-D checkerboard of unit cubes; block index 0 or 1.
+    Checker,
+    /// Ramp along a direction (the fractional part of `dot(p, direction)`).
+    Gradient(DVec3),
+}
+
+/// What a pattern's value is looked up in.
+#[derive(Clone, Debug)]
+pub enum PigmentMap {
+    /// A colour map: sorted (value, colour) entries, interpolated.
+    Colours(Vec<(f64, Colour)>),
+    /// For block patterns (checker): one pigment per block.
+    Blocks(Vec<Pigment>),
+}
+
+/// POV-Ray's `finish` with its defaults.
+#[derive(Clone, Debug)]
+pub struct Finish {
+    /// Ambient light reflected (colour; default 0.1 grey).
+    pub ambient: DVec3,
+    /// Light emitted independently of `ambient_light` (default black).
+    pub emission: DVec3,
+    /// Diffuse reflection (default 0.6).
+    pub diffuse: f64,
+    /// Diffuse falloff exponent (default 1).
+    pub brilliance: f64,
+    /// Phong highlight amount (default 0).
+    pub phong: f64,
+    /// Phong exponent (default 40).
+    pub phong_size: f64,
+    /// Blinn specular highlight amount (default 0).
+    pub specular: f64,
+    /// Specular roughness (default 0.05).
+    pub roughness: f64,
+    /// Tints highlights with the surface colour, 0 to 1 (default 0).
+    pub metallic: f64,
+    /// Mirror reflection colour (default black).
+    pub reflection: DVec3,
+}
+
+impl Default for Finish {
+    fn default() -> Self {
+        Finish {
+            ambient: DVec3::splat(0.1),
+            emission: DVec3::ZERO,
+            diffuse: 0.6,
+            brilliance: 1.0,
+            phong: 0.0,
+            phong_size: 40.0,
+            specular: 0.0,
+            roughness: 0.05,
+            metallic: 0.0,
+            reflection: DVec3::ZERO,
+        }
+    }
+}
+
+/// What is inside an object.
+#[derive(Clone, Debug)]
+pub struct Interior {
+    /// Index of refraction (default 1: no bending).
+    pub ior: f64,
+}
+
+impl Default for Interior {
+    fn default() -> Self {
+        Interior { ior: 1.0 }
+    }
+}
