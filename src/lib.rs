@@ -3,4 +3,7 @@
 //! The pipeline runs one way: `syntax` (pest grammar to spanned AST) → `eval` (AST to
 //! [`scene::Scene`]) → `geometry` + `accel` (render objects and BVH) → `render` (image).
 
+pub mod accel;
+pub mod geometry;
+pub mod render;
 pub mod scene;

@@ -1,0 +1,1 @@
+//! Acceleration structures: the SAH bounding volume hierarchy.

@@ -1,0 +1,1 @@
+//! Render-time geometry: shapes prepared for ray intersection, CSG, and the World of objects.

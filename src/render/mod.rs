@@ -1,0 +1,1 @@
+//! The recursive ray tracer: camera rays, shading, lights, output image.
