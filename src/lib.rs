@@ -7,3 +7,4 @@ pub mod accel;
 pub mod geometry;
 pub mod render;
 pub mod scene;
+pub mod syntax;

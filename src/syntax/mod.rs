@@ -1,0 +1,3 @@
+//! Syntax: source text to spanned AST.
+mod grammar;
+pub use grammar::{Rule, SdlParser};
