@@ -4,6 +4,7 @@
 //! [`scene::Scene`]) → `geometry` + `accel` (render objects and BVH) → `render` (image).
 
 pub mod accel;
+pub mod diag;
 pub mod geometry;
 pub mod render;
 pub mod scene;

@@ -1,3 +1,196 @@
 //! Syntax: source text to spanned AST.
+//!
+//! In: the text of one file. Out: its top-level [`ast::Item`]s, or one diagnostic for the
+//! first syntax error. Holds: every node carries a [`Span`]; no pest types escape.
+
+pub mod ast;
 mod grammar;
+pub mod keywords;
+mod lower;
+
 pub use grammar::{Rule, SdlParser};
+
+use crate::diag::{did_you_mean, Diagnostic, FileId, Span};
+use pest::Parser;
+use std::rc::Rc;
+
+/// Parses one file's text into its top-level items.
+pub fn parse(text: &str, file: FileId) -> Result<Rc<[ast::Item]>, Box<Diagnostic>> {
+    match SdlParser::parse(Rule::file, text) {
+        Ok(mut pairs) => {
+            let file_pair = pairs.next().expect("file rule");
+            let items = file_pair.into_inner().next().expect("items");
+            Ok(lower::Lowerer::new(file).items(items))
+        }
+        Err(error) => Err(Box::new(syntax_diagnostic(text, file, error))),
+    }
+}
+
+/// Turns a pest error into a diagnostic, preferring an unclosed brace or directive when the
+/// text has one (pest would report where the file ended instead).
+fn syntax_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) -> Diagnostic {
+    if let Some(d) = unbalanced(text, file) {
+        return d;
+    }
+    let offset = match error.location {
+        pest::error::InputLocation::Pos(p) => p,
+        pest::error::InputLocation::Span((s, _)) => s,
+    };
+    let found = token_at(text, offset);
+    let span = Span::new(file, offset, offset + found.len().max(1).min(text.len() - offset.min(text.len())));
+    let expected = match &error.variant {
+        pest::error::ErrorVariant::ParsingError { positives, .. } => describe_expected(positives),
+        pest::error::ErrorVariant::CustomError { message } => message.clone(),
+    };
+    let found_text = if found.is_empty() { "end of file".to_string() } else { format!("`{found}`") };
+    let mut d = Diagnostic::error(span, format!("expected {expected}, found {found_text}"))
+        .with_label(format!("expected {expected}"));
+    if found.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') {
+        if let Some(k) = did_you_mean(found, keywords::ALL.iter().copied()) {
+            d = d.with_help(format!("did you mean `{k}`?"));
+        }
+    }
+    d
+}
+
+/// The word or symbol starting at `offset`.
+fn token_at(text: &str, offset: usize) -> &str {
+    let rest = text.get(offset..).unwrap_or("");
+    let word_len = rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(rest.len());
+    if word_len > 0 {
+        &rest[..word_len]
+    } else {
+        rest.char_indices().nth(1).map_or(rest, |(i, _)| &rest[..i])
+    }
+}
+
+fn describe_expected(rules: &[Rule]) -> String {
+    let mut names: Vec<&str> = rules.iter().map(|r| rule_name(*r)).collect();
+    names.sort();
+    names.dedup();
+    match names.len() {
+        0 => "something else".to_string(),
+        1 => names[0].to_string(),
+        _ => {
+            let last = names.pop().unwrap_or_default();
+            format!("{} or {last}", names.join(", "))
+        }
+    }
+}
+
+/// Human names for grammar rules in error messages.
+fn rule_name(rule: Rule) -> &'static str {
+    match rule {
+        Rule::expr | Rule::full_expr | Rule::postfix_expr | Rule::relational_expr
+        | Rule::logical_expr => "an expression",
+        Rule::number => "a number",
+        Rule::string => "a string",
+        Rule::ident | Rule::target => "an identifier",
+        Rule::block | Rule::block_head => "a block",
+        Rule::end => "`#end`",
+        Rule::comma => "`,`",
+        Rule::keyword => "a keyword",
+        Rule::vector => "a vector",
+        Rule::EOI => "end of file",
+        Rule::map_entry => "a map entry",
+        Rule::arguments => "arguments",
+        Rule::parameters | Rule::parameter => "a parameter",
+        _ => "a directive, block or value",
+    }
+}
+
+/// Finds the first `{` or directive opener that is never closed (or a stray closer).
+fn unbalanced(text: &str, file: FileId) -> Option<Diagnostic> {
+    let bytes = text.as_bytes();
+    let mut stack: Vec<(u8, usize, usize)> = Vec::new(); // (kind, start, end)
+    let mut i = 0;
+    while i < bytes.len() {
+        let c = bytes[i];
+        match c {
+            b'"' => {
+                i += 1;
+                while i < bytes.len() && bytes[i] != b'"' {
+                    i += if bytes[i] == b'\\' { 2 } else { 1 };
+                }
+            }
+            b'/' if bytes.get(i + 1) == Some(&b'/') => {
+                while i < bytes.len() && bytes[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            b'/' if bytes.get(i + 1) == Some(&b'*') => {
+                let mut depth = 0;
+                while i < bytes.len() {
+                    if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'*') {
+                        depth += 1;
+                        i += 2;
+                    } else if bytes[i] == b'*' && bytes.get(i + 1) == Some(&b'/') {
+                        depth -= 1;
+                        i += 2;
+                        if depth == 0 {
+                            break;
+                        }
+                    } else {
+                        i += 1;
+                    }
+                }
+                continue;
+            }
+            b'{' => stack.push((b'{', i, i + 1)),
+            b'}' => match stack.last() {
+                Some((b'{', _, _)) => {
+                    stack.pop();
+                }
+                _ => {
+                    return Some(
+                        Diagnostic::error(Span::new(file, i, i + 1), "unexpected `}`")
+                            .with_label("this `}` closes nothing"),
+                    )
+                }
+            },
+            b'#' => {
+                let rest = &text[i + 1..];
+                let trimmed = rest.trim_start_matches([' ', '\t']);
+                let skip = rest.len() - trimmed.len();
+                let word_len = trimmed
+                    .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                    .unwrap_or(trimmed.len());
+                let word = &trimmed[..word_len];
+                let end = i + 1 + skip + word_len;
+                match word {
+                    "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro" => {
+                        stack.push((b'#', i, end))
+                    }
+                    "end" => {
+                        // An `#end` inside an open brace belongs to a directive cut across braces;
+                        // only report a structure problem when nothing is open at all.
+                        if let Some(pos) = stack.iter().rposition(|(k, _, _)| *k == b'#') {
+                            stack.truncate(pos);
+                        } else {
+                            return Some(
+                                Diagnostic::error(Span::new(file, i, end), "`#end` without an opening directive")
+                                    .with_label("nothing to end here"),
+                            );
+                        }
+                    }
+                    _ => {}
+                }
+                i = end;
+                continue;
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    let (kind, start, end) = *stack.last()?;
+    let span = Span::new(file, start, end);
+    Some(if kind == b'{' {
+        Diagnostic::error(span, "unclosed `{`").with_label("this `{` is never closed")
+            .with_help("add the matching `}`")
+    } else {
+        let word = text[start + 1..end].trim();
+        Diagnostic::error(span, format!("unterminated `#{word}`"))
+            .with_label(format!("this `#{word}` has no matching `#end`"))
+            .with_help("add `#end` where the directive's body ends")
+    })
+}

@@ -1,0 +1,430 @@
+//! The spanned abstract syntax tree of a scene file.
+//!
+//! Block bodies are lists of generic [`Item`]s; which items a context accepts is decided by
+//! the evaluator, so directives and macro calls can stand anywhere.
+
+use crate::diag::Span;
+use std::rc::Rc;
+
+/// An identifier or keyword as written.
+pub type Name = Rc<str>;
+
+/// One element of a block body or of the file's top level.
+#[derive(Clone, Debug)]
+pub enum Item {
+    /// `#declare`, `#if`, `#while`, ...
+    Directive(Rc<Directive>),
+    /// `word { items }`, e.g. `sphere { ... }` or `pigment { ... }`.
+    Block(Rc<Block>),
+    /// `[ items ]` in a map.
+    MapEntry(Rc<[Item]>, Span),
+    /// A separating comma.
+    Comma(Span),
+    /// A reserved word standing alone, e.g. `translate` or `hollow`.
+    Keyword(Name, Span),
+    /// A value: number, vector, colour, identifier, macro call...
+    Expr(Expr),
+}
+
+impl Item {
+    /// The source range of the item.
+    pub fn span(&self) -> Span {
+        match self {
+            Item::Directive(d) => d.span,
+            Item::Block(b) => b.span,
+            Item::MapEntry(_, span) | Item::Comma(span) | Item::Keyword(_, span) => *span,
+            Item::Expr(e) => e.span(),
+        }
+    }
+}
+
+/// `word { body }`.
+#[derive(Clone, Debug)]
+pub struct Block {
+    /// The keyword (or, for a misspelling, the word) before the brace.
+    pub head: BlockHead,
+    /// Span of the head word.
+    pub head_span: Span,
+    /// The items between the braces.
+    pub body: Rc<[Item]>,
+    /// The whole block.
+    pub span: Span,
+}
+
+/// What names a block.
+#[derive(Clone, Debug)]
+pub enum BlockHead {
+    /// A plain keyword such as `sphere`.
+    Word(Name),
+    /// `#if (C) merge { #else union { #end`: the first branch whose condition holds.
+    Conditional(Vec<(Option<Expr>, Name)>),
+}
+
+/// Unary operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnaryOp {
+    /// `-a`
+    Negate,
+    /// `+a`
+    Plus,
+    /// `!a`
+    Not,
+}
+
+/// Binary operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinaryOp {
+    /// `+`
+    Add,
+    /// `-`
+    Subtract,
+    /// `*`
+    Multiply,
+    /// `/`
+    Divide,
+    /// `<`
+    Less,
+    /// `<=`
+    LessEqual,
+    /// `=`
+    Equal,
+    /// `!=`
+    NotEqual,
+    /// `>=`
+    GreaterEqual,
+    /// `>`
+    Greater,
+    /// `&`
+    And,
+    /// `|`
+    Or,
+}
+
+impl BinaryOp {
+    /// The operator as written.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            BinaryOp::Add => "+",
+            BinaryOp::Subtract => "-",
+            BinaryOp::Multiply => "*",
+            BinaryOp::Divide => "/",
+            BinaryOp::Less => "<",
+            BinaryOp::LessEqual => "<=",
+            BinaryOp::Equal => "=",
+            BinaryOp::NotEqual => "!=",
+            BinaryOp::GreaterEqual => ">=",
+            BinaryOp::Greater => ">",
+            BinaryOp::And => "&",
+            BinaryOp::Or => "|",
+        }
+    }
+}
+
+/// An expression.
+#[derive(Clone, Debug)]
+pub enum Expr {
+    /// A float literal.
+    Number(f64, Span),
+    /// A string literal, escapes already resolved.
+    String(Rc<str>, Span),
+    /// `<a, b, ...>`.
+    Vector(Rc<[Expr]>, Span),
+    /// An identifier (or built-in constant such as `pi` or `x`).
+    Ident(Name, Span),
+    /// `name(arguments)`: built-in function, macro or user function.
+    Call(Rc<Call>),
+    /// Unary operation.
+    Unary(UnaryOp, Box<Expr>, Span),
+    /// Binary operation.
+    Binary(BinaryOp, Box<Expr>, Box<Expr>, Span),
+    /// `c ? a : b`.
+    Conditional(Box<(Expr, Expr, Expr)>, Span),
+    /// `value.x`, `value.red`...
+    Member(Box<Expr>, Name, Span),
+    /// `array[index]`.
+    Index(Box<Expr>, Box<Expr>, Span),
+    /// `color rgb <..> filter 0.5`...
+    Colour(Rc<ColourLiteral>),
+    /// `array[n] { ... }`.
+    Array(Rc<ArrayLiteral>),
+    /// `function(a, b) { ... }`.
+    Function(Rc<FunctionLiteral>),
+    /// `#if` used inside an expression.
+    Directive(Rc<Directive>),
+}
+
+impl Expr {
+    /// The source range of the expression.
+    pub fn span(&self) -> Span {
+        match self {
+            Expr::Number(_, s)
+            | Expr::String(_, s)
+            | Expr::Vector(_, s)
+            | Expr::Ident(_, s)
+            | Expr::Unary(_, _, s)
+            | Expr::Binary(_, _, _, s)
+            | Expr::Conditional(_, s)
+            | Expr::Member(_, _, s)
+            | Expr::Index(_, _, s) => *s,
+            Expr::Call(c) => c.span,
+            Expr::Colour(c) => c.span,
+            Expr::Array(a) => a.span,
+            Expr::Function(f) => f.span,
+            Expr::Directive(d) => d.span,
+        }
+    }
+}
+
+/// `name(arguments)`.
+#[derive(Clone, Debug)]
+pub struct Call {
+    /// The called name.
+    pub name: Name,
+    /// Span of the name.
+    pub name_span: Span,
+    /// The arguments; blocks (e.g. `texture { .. }`) are allowed for macros.
+    pub arguments: Vec<Argument>,
+    /// The whole call.
+    pub span: Span,
+}
+
+/// One argument of a call.
+#[derive(Clone, Debug)]
+pub enum Argument {
+    /// An expression.
+    Expr(Expr),
+    /// A block such as `pigment { .. }`.
+    Block(Rc<Block>),
+}
+
+impl Argument {
+    /// The source range of the argument.
+    pub fn span(&self) -> Span {
+        match self {
+            Argument::Expr(e) => e.span(),
+            Argument::Block(b) => b.span,
+        }
+    }
+}
+
+/// The kind keyword of a colour literal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColourType {
+    /// `rgb`
+    Rgb,
+    /// `rgbf`
+    Rgbf,
+    /// `rgbt`
+    Rgbt,
+    /// `rgbft`
+    Rgbft,
+    /// `srgb` (and friends): values given in sRGB.
+    Srgb,
+    /// `srgbf`
+    Srgbf,
+    /// `srgbt`
+    Srgbt,
+    /// `srgbft`
+    Srgbft,
+}
+
+/// A colour component keyword.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColourComponent {
+    /// `red`
+    Red,
+    /// `green`
+    Green,
+    /// `blue`
+    Blue,
+    /// `filter`
+    Filter,
+    /// `transmit`
+    Transmit,
+    /// `gray`: all three colour channels.
+    Grey,
+}
+
+/// `color rgb <..> filter 0.5` and the other colour forms.
+#[derive(Clone, Debug)]
+pub struct ColourLiteral {
+    /// `rgb`, `rgbf`, ... when given.
+    pub kind: Option<ColourType>,
+    /// The base value, when given.
+    pub base: Option<Expr>,
+    /// Component overrides in order.
+    pub components: Vec<(ColourComponent, Expr)>,
+    /// The whole literal.
+    pub span: Span,
+}
+
+/// `array[n][m] { ... }`.
+#[derive(Clone, Debug)]
+pub struct ArrayLiteral {
+    /// Declared sizes, outermost first.
+    pub sizes: Vec<Expr>,
+    /// The initialiser, when given.
+    pub initialiser: Option<ArrayInit>,
+    /// The whole literal.
+    pub span: Span,
+}
+
+/// One `{ ... }` level of an array initialiser.
+#[derive(Clone, Debug)]
+pub struct ArrayInit {
+    /// Nested levels and items, in order.
+    pub elements: Vec<ArrayElement>,
+    /// The braces.
+    pub span: Span,
+}
+
+/// An element of an array initialiser.
+#[derive(Clone, Debug)]
+pub enum ArrayElement {
+    /// A nested `{ ... }` for the next dimension.
+    Nested(ArrayInit),
+    /// An item (value, comma, directive).
+    Item(Item),
+}
+
+/// `function(params) { body }`.
+#[derive(Clone, Debug)]
+pub struct FunctionLiteral {
+    /// Parameter names; empty means POV-Ray's default `x, y, z`.
+    pub parameters: Vec<Name>,
+    /// The body.
+    pub body: FunctionBody,
+    /// The whole literal.
+    pub span: Span,
+}
+
+/// What a function literal contains.
+#[derive(Clone, Debug)]
+pub enum FunctionBody {
+    /// An expression in x, y, z (or the parameters).
+    Expr(Expr),
+    /// Items, e.g. `pigment { .. }` or `pattern { .. }`.
+    Items(Rc<[Item]>),
+}
+
+/// A macro parameter.
+#[derive(Clone, Debug)]
+pub struct Parameter {
+    /// Its name.
+    pub name: Name,
+    /// Declared `optional`.
+    pub optional: bool,
+    /// Where it is declared.
+    pub span: Span,
+}
+
+/// `#macro Name(params) body #end`.
+#[derive(Debug)]
+pub struct MacroDefinition {
+    /// The macro's name.
+    pub name: Name,
+    /// Its parameters.
+    pub parameters: Vec<Parameter>,
+    /// The body; `None` when it could not be given a tree shape.
+    pub body: Option<Rc<[Item]>>,
+    /// Span of the `#macro ... )` header.
+    pub header_span: Span,
+}
+
+/// A directive with its span.
+#[derive(Debug)]
+pub struct Directive {
+    /// What it is.
+    pub kind: DirectiveKind,
+    /// The whole directive.
+    pub span: Span,
+}
+
+/// Where `#declare`/`#local`/`#read` store a value: a name and optional array indices.
+#[derive(Clone, Debug)]
+pub struct Target {
+    /// The identifier.
+    pub name: Name,
+    /// Array indices, outermost first.
+    pub indices: Vec<Expr>,
+    /// The whole target.
+    pub span: Span,
+}
+
+/// One branch of a conditional.
+#[derive(Clone, Debug)]
+pub struct Branch {
+    /// The condition; `None` for `#else`.
+    pub condition: Option<Expr>,
+    /// The items run when chosen.
+    pub body: Rc<[Item]>,
+}
+
+/// A `#case` or `#range` clause of `#switch`.
+#[derive(Clone, Debug)]
+pub struct SwitchClause {
+    /// What selects this clause.
+    pub label: SwitchLabel,
+    /// The items of the clause.
+    pub body: Rc<[Item]>,
+}
+
+/// `#case (v)` or `#range (low, high)`.
+#[derive(Clone, Debug)]
+pub enum SwitchLabel {
+    /// `#case (value)`.
+    Case(Expr),
+    /// `#range (low, high)`.
+    Range(Expr, Expr),
+}
+
+/// Every directive.
+#[derive(Debug)]
+pub enum DirectiveKind {
+    /// `#declare` (global) or `#local` (innermost scope).
+    Declare { local: bool, target: Target, value: Item },
+    /// `#undef Name`.
+    Undef(Name, Span),
+    /// `#if`, `#ifdef`, `#ifndef` with `#elseif`/`#else` branches (an `#ifdef` test is
+    /// lowered to a condition on `defined`).
+    If { branches: Vec<Branch>, end_span: Span },
+    /// `#ifdef (Target)`/`#ifndef`: the first branch tests definedness.
+    IfDefined { negate: bool, target: Target, then: Rc<[Item]>, rest: Vec<Branch> },
+    /// `#while (c) body #end`.
+    While { condition: Expr, body: Rc<[Item]> },
+    /// `#for (Name, start, end[, step]) body #end`.
+    For { variable: Name, variable_span: Span, start: Expr, end: Expr, step: Option<Expr>, body: Rc<[Item]> },
+    /// `#switch (v) clauses [#else ..] #end`.
+    Switch { value: Expr, clauses: Vec<SwitchClause>, otherwise: Option<Rc<[Item]>> },
+    /// `#break`.
+    Break,
+    /// `#macro`.
+    Macro(Rc<MacroDefinition>),
+    /// `#include "file"`.
+    Include(Expr),
+    /// `#version v;`.
+    Version(Expr),
+    /// `#default { .. }`.
+    Default(Rc<[Item]>),
+    /// `#debug`, `#warning`, `#error` with their message.
+    Message { level: MessageLevel, text: Expr },
+    /// `#fopen Name "file" read|write|append`.
+    FileOpen { handle: Name, path: Expr, mode: Name },
+    /// `#fclose Name`.
+    FileClose(Name),
+    /// `#read (Handle, targets..)`.
+    FileRead { handle: Name, targets: Vec<Target> },
+    /// `#write (Handle, values..)`.
+    FileWrite { handle: Name, values: Vec<Expr> },
+}
+
+/// The level of a message directive.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MessageLevel {
+    /// `#debug`: printed to stderr.
+    Debug,
+    /// `#warning`: a warning diagnostic.
+    Warning,
+    /// `#error`: stops the scene.
+    Error,
+}

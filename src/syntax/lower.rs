@@ -1,0 +1,519 @@
+//! Lowering pest pairs into the spanned AST (no `'input` lifetime leaks past this file).
+
+use super::ast::*;
+use super::grammar::Rule;
+use crate::diag::{FileId, Span};
+use pest::iterators::{Pair, Pairs};
+use pest::pratt_parser::{Assoc, Op, PrattParser};
+use std::rc::Rc;
+use std::sync::OnceLock;
+
+/// Lowers pairs of one file into AST nodes.
+pub struct Lowerer {
+    file: FileId,
+}
+
+fn pratt() -> &'static PrattParser<Rule> {
+    static PRATT: OnceLock<PrattParser<Rule>> = OnceLock::new();
+    PRATT.get_or_init(|| {
+        PrattParser::new()
+            .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
+            .op(Op::infix(Rule::mul, Assoc::Left) | Op::infix(Rule::div, Assoc::Left))
+            .op(Op::prefix(Rule::neg) | Op::prefix(Rule::pos) | Op::prefix(Rule::not))
+    })
+}
+
+impl Lowerer {
+    /// A lowerer for the file with this id.
+    pub fn new(file: FileId) -> Lowerer {
+        Lowerer { file }
+    }
+
+    fn span(&self, pair: &Pair<Rule>) -> Span {
+        let s = pair.as_span();
+        Span::new(self.file, s.start(), s.end())
+    }
+
+    /// Lowers an `items` pair.
+    pub fn items(&self, pair: Pair<Rule>) -> Rc<[Item]> {
+        pair.into_inner().filter_map(|p| self.item(p)).collect()
+    }
+
+    fn item(&self, pair: Pair<Rule>) -> Option<Item> {
+        let span = self.span(&pair);
+        Some(match pair.as_rule() {
+            Rule::block => Item::Block(Rc::new(self.block(pair))),
+            Rule::map_entry => Item::MapEntry(self.items_of(pair.into_inner()), span),
+            Rule::comma => Item::Comma(span),
+            Rule::keyword => Item::Keyword(Rc::from(pair.as_str()), span),
+            Rule::expr => Item::Expr(self.expr(pair)),
+            Rule::EOI => return None,
+            _ => Item::Directive(Rc::new(self.directive(pair))),
+        })
+    }
+
+    fn items_of(&self, pairs: Pairs<Rule>) -> Rc<[Item]> {
+        pairs.filter_map(|p| self.item(p)).collect()
+    }
+
+    fn block(&self, pair: Pair<Rule>) -> Block {
+        let span = self.span(&pair);
+        let mut inner = pair.into_inner();
+        let first = inner.next().expect("block has a head");
+        let head_span = self.span(&first);
+        let head = match first.as_rule() {
+            Rule::block_head => BlockHead::Word(Rc::from(first.as_str())),
+            _ => {
+                // conditional_head: (expr block_head)* (block_head)? end
+                let mut branches = Vec::new();
+                let mut pending: Option<Expr> = None;
+                for p in first.into_inner() {
+                    match p.as_rule() {
+                        Rule::expr => pending = Some(self.expr(p)),
+                        Rule::block_head => branches.push((pending.take(), Rc::from(p.as_str()))),
+                        _ => {}
+                    }
+                }
+                BlockHead::Conditional(branches)
+            }
+        };
+        let body = inner.next().map(|p| self.items(p)).unwrap_or_else(|| Rc::from(Vec::new()));
+        Block { head, head_span, body, span }
+    }
+
+    /// Lowers an `expr` pair (arithmetic with Pratt precedence).
+    pub fn expr(&self, pair: Pair<Rule>) -> Expr {
+        pratt()
+            .map_primary(|p| self.postfix_expr(p))
+            .map_prefix(|op, operand| {
+                let span = self.span(&op).join(operand.span());
+                let op = match op.as_rule() {
+                    Rule::neg => UnaryOp::Negate,
+                    Rule::pos => UnaryOp::Plus,
+                    _ => UnaryOp::Not,
+                };
+                Expr::Unary(op, Box::new(operand), span)
+            })
+            .map_infix(|lhs, op, rhs| {
+                let span = lhs.span().join(rhs.span());
+                let op = match op.as_rule() {
+                    Rule::add => BinaryOp::Add,
+                    Rule::sub => BinaryOp::Subtract,
+                    Rule::mul => BinaryOp::Multiply,
+                    _ => BinaryOp::Divide,
+                };
+                Expr::Binary(op, Box::new(lhs), Box::new(rhs), span)
+            })
+            .parse(pair.into_inner())
+    }
+
+    fn full_expr(&self, pair: Pair<Rule>) -> Expr {
+        let span = self.span(&pair);
+        let mut inner = pair.into_inner();
+        let logical = self.logical(inner.next().expect("full_expr has a condition"));
+        match (inner.next(), inner.next()) {
+            (Some(a), Some(b)) => {
+                Expr::Conditional(Box::new((logical, self.full_expr(a), self.full_expr(b))), span)
+            }
+            _ => logical,
+        }
+    }
+
+    fn logical(&self, pair: Pair<Rule>) -> Expr {
+        self.left_chain(pair, |l, p| l.relational(p))
+    }
+
+    fn relational(&self, pair: Pair<Rule>) -> Expr {
+        self.left_chain(pair, |l, p| l.expr(p))
+    }
+
+    /// Folds `operand (op operand)*` left to right.
+    fn left_chain(&self, pair: Pair<Rule>, operand: impl Fn(&Self, Pair<Rule>) -> Expr) -> Expr {
+        let mut inner = pair.into_inner();
+        let mut lhs = operand(self, inner.next().expect("chain has an operand"));
+        while let (Some(op), Some(rhs)) = (inner.next(), inner.next()) {
+            let rhs = operand(self, rhs);
+            let op = match op.as_rule() {
+                Rule::and => BinaryOp::And,
+                Rule::or => BinaryOp::Or,
+                Rule::lt => BinaryOp::Less,
+                Rule::le => BinaryOp::LessEqual,
+                Rule::eq => BinaryOp::Equal,
+                Rule::ne => BinaryOp::NotEqual,
+                Rule::ge => BinaryOp::GreaterEqual,
+                _ => BinaryOp::Greater,
+            };
+            let span = lhs.span().join(rhs.span());
+            lhs = Expr::Binary(op, Box::new(lhs), Box::new(rhs), span);
+        }
+        lhs
+    }
+
+    fn postfix_expr(&self, pair: Pair<Rule>) -> Expr {
+        let mut inner = pair.into_inner();
+        let mut value = self.primary(inner.next().expect("postfix_expr has a primary"));
+        for post in inner {
+            let span = value.span().join(self.span(&post));
+            value = match post.as_rule() {
+                Rule::member => {
+                    let name = post.into_inner().next().map(|w| w.as_str()).unwrap_or("");
+                    Expr::Member(Box::new(value), Rc::from(name), span)
+                }
+                _ => {
+                    let index = self.full_expr(post.into_inner().next().expect("index"));
+                    Expr::Index(Box::new(value), Box::new(index), span)
+                }
+            };
+        }
+        value
+    }
+
+    fn primary(&self, pair: Pair<Rule>) -> Expr {
+        let span = self.span(&pair);
+        match pair.as_rule() {
+            Rule::number => Expr::Number(pair.as_str().parse().unwrap_or(0.0), span),
+            Rule::string => {
+                let raw = pair.into_inner().next().map(|p| p.as_str()).unwrap_or("");
+                Expr::String(Rc::from(unescape(raw)), span)
+            }
+            Rule::vector => Expr::Vector(pair.into_inner().map(|p| self.expr(p)).collect(), span),
+            Rule::paren => self.full_expr(pair.into_inner().next().expect("paren")),
+            Rule::ident => Expr::Ident(Rc::from(pair.as_str()), span),
+            Rule::call => Expr::Call(Rc::new(self.call(pair))),
+            Rule::colour => Expr::Colour(Rc::new(self.colour(pair))),
+            Rule::array_literal => Expr::Array(Rc::new(self.array(pair))),
+            Rule::function_literal => Expr::Function(Rc::new(self.function(pair))),
+            _ => Expr::Directive(Rc::new(self.directive(pair))),
+        }
+    }
+
+    fn call(&self, pair: Pair<Rule>) -> Call {
+        let span = self.span(&pair);
+        let mut inner = pair.into_inner();
+        let name = inner.next().expect("call name");
+        let name_span = self.span(&name);
+        let arguments = inner
+            .next()
+            .map(|args| {
+                args.into_inner()
+                    .map(|a| match a.as_rule() {
+                        Rule::block => Argument::Block(Rc::new(self.block(a))),
+                        _ => Argument::Expr(self.full_expr(a)),
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        Call { name: Rc::from(name.as_str()), name_span, arguments, span }
+    }
+
+    fn colour(&self, pair: Pair<Rule>) -> ColourLiteral {
+        let span = self.span(&pair);
+        let mut literal = ColourLiteral { kind: None, base: None, components: Vec::new(), span };
+        for p in pair.into_inner() {
+            match p.as_rule() {
+                Rule::colour_type => {
+                    literal.kind = Some(match p.as_str() {
+                        "rgb" => ColourType::Rgb,
+                        "rgbf" => ColourType::Rgbf,
+                        "rgbt" => ColourType::Rgbt,
+                        "rgbft" => ColourType::Rgbft,
+                        "srgb" => ColourType::Srgb,
+                        "srgbf" => ColourType::Srgbf,
+                        "srgbt" => ColourType::Srgbt,
+                        _ => ColourType::Srgbft,
+                    })
+                }
+                Rule::expr => literal.base = Some(self.expr(p)),
+                Rule::colour_component => {
+                    let mut inner = p.into_inner();
+                    let word = inner.next().map(|w| w.as_str()).unwrap_or("");
+                    let component = match word {
+                        "red" => ColourComponent::Red,
+                        "green" => ColourComponent::Green,
+                        "blue" => ColourComponent::Blue,
+                        "filter" => ColourComponent::Filter,
+                        "transmit" => ColourComponent::Transmit,
+                        _ => ColourComponent::Grey,
+                    };
+                    let value = self.expr(inner.next().expect("component value"));
+                    literal.components.push((component, value));
+                }
+                _ => {}
+            }
+        }
+        literal
+    }
+
+    fn array(&self, pair: Pair<Rule>) -> ArrayLiteral {
+        let span = self.span(&pair);
+        let mut literal = ArrayLiteral { sizes: Vec::new(), initialiser: None, span };
+        for p in pair.into_inner() {
+            match p.as_rule() {
+                Rule::array_size => {
+                    literal.sizes.push(self.full_expr(p.into_inner().next().expect("size")))
+                }
+                Rule::array_init => literal.initialiser = Some(self.array_init(p)),
+                _ => {}
+            }
+        }
+        literal
+    }
+
+    fn array_init(&self, pair: Pair<Rule>) -> ArrayInit {
+        let span = self.span(&pair);
+        let elements = pair
+            .into_inner()
+            .filter_map(|p| match p.as_rule() {
+                Rule::array_init => Some(ArrayElement::Nested(self.array_init(p))),
+                _ => self.item(p).map(ArrayElement::Item),
+            })
+            .collect();
+        ArrayInit { elements, span }
+    }
+
+    fn function(&self, pair: Pair<Rule>) -> FunctionLiteral {
+        let span = self.span(&pair);
+        let mut parameters = Vec::new();
+        let mut body = FunctionBody::Items(Rc::from(Vec::new()));
+        for p in pair.into_inner() {
+            match p.as_rule() {
+                Rule::parameters => parameters = self.parameters(p).into_iter().map(|p| p.name).collect(),
+                Rule::function_body => {
+                    let inner = p.into_inner().next();
+                    body = match inner {
+                        Some(e) if e.as_rule() == Rule::full_expr => FunctionBody::Expr(self.full_expr(e)),
+                        Some(items) => FunctionBody::Items(self.items(items)),
+                        None => FunctionBody::Items(Rc::from(Vec::new())),
+                    };
+                }
+                _ => {}
+            }
+        }
+        FunctionLiteral { parameters, body, span }
+    }
+
+    fn parameters(&self, pair: Pair<Rule>) -> Vec<Parameter> {
+        pair.into_inner()
+            .map(|p| {
+                let span = self.span(&p);
+                let mut optional = false;
+                let mut name = Rc::from("");
+                for q in p.into_inner() {
+                    match q.as_rule() {
+                        Rule::optional => optional = true,
+                        _ => name = Rc::from(q.as_str()),
+                    }
+                }
+                Parameter { name, optional, span }
+            })
+            .collect()
+    }
+
+    fn target(&self, pair: Pair<Rule>) -> Target {
+        let span = self.span(&pair);
+        let mut inner = pair.into_inner();
+        let name = Rc::from(inner.next().map(|p| p.as_str()).unwrap_or(""));
+        let indices = inner
+            .map(|p| self.full_expr(p.into_inner().next().expect("index expression")))
+            .collect();
+        Target { name, indices, span }
+    }
+
+    fn branches<'i>(&self, pairs: impl Iterator<Item = Pair<'i, Rule>>) -> (Vec<Branch>, Span) {
+        let mut branches = Vec::new();
+        let mut end_span = Span::default();
+        for p in pairs {
+            match p.as_rule() {
+                Rule::elseif_branch => {
+                    let mut inner = p.into_inner();
+                    let condition = self.expr(inner.next().expect("elseif condition"));
+                    let body = self.items(inner.next().expect("elseif body"));
+                    branches.push(Branch { condition: Some(condition), body });
+                }
+                Rule::else_branch => {
+                    let body = self.items(p.into_inner().next().expect("else body"));
+                    branches.push(Branch { condition: None, body });
+                }
+                Rule::end => end_span = self.span(&p),
+                _ => {}
+            }
+        }
+        (branches, end_span)
+    }
+
+    fn directive(&self, pair: Pair<Rule>) -> Directive {
+        let span = self.span(&pair);
+        let rule = pair.as_rule();
+        let mut inner = pair.into_inner().filter(|p| !is_directive_word(p.as_rule()));
+        let kind = match rule {
+            Rule::declare | Rule::local => {
+                let mut first = inner.next().expect("declare target");
+                if first.as_rule() == Rule::deprecation {
+                    first = inner.next().expect("declare target");
+                }
+                let target = self.target(first);
+                let value = inner.next().and_then(|p| match p.as_rule() {
+                    Rule::expr | Rule::block => self.item(p),
+                    _ => Some(Item::Directive(Rc::new(self.directive(p)))),
+                });
+                let value = value.unwrap_or(Item::Comma(span));
+                DirectiveKind::Declare { local: rule == Rule::local, target, value }
+            }
+            Rule::undef => {
+                let name = inner.next().expect("undef name");
+                DirectiveKind::Undef(Rc::from(name.as_str()), self.span(&name))
+            }
+            Rule::if_directive => {
+                let condition = self.expr(inner.next().expect("if condition"));
+                let body = self.items(inner.next().expect("if body"));
+                let (rest, end_span) = self.branches(inner);
+                let mut branches = vec![Branch { condition: Some(condition), body }];
+                branches.extend(rest);
+                DirectiveKind::If { branches, end_span }
+            }
+            Rule::ifdef_directive | Rule::ifndef_directive => {
+                let target_pair = inner.next().expect("ifdef target");
+                let tspan = self.span(&target_pair);
+                let mut tinner = target_pair.into_inner();
+                let name = Rc::from(tinner.next().map(|p| p.as_str()).unwrap_or(""));
+                let indices = tinner
+                    .map(|p| self.full_expr(p.into_inner().next().expect("index")))
+                    .collect();
+                let target = Target { name, indices, span: tspan };
+                let then = self.items(inner.next().expect("ifdef body"));
+                let (rest, _) = self.branches(inner);
+                DirectiveKind::IfDefined { negate: rule == Rule::ifndef_directive, target, then, rest }
+            }
+            Rule::while_directive => {
+                let condition = self.expr(inner.next().expect("while condition"));
+                let body = self.items(inner.next().expect("while body"));
+                DirectiveKind::While { condition, body }
+            }
+            Rule::for_directive => {
+                let variable = inner.next().expect("for variable");
+                let variable_span = self.span(&variable);
+                let variable = Rc::from(variable.as_str());
+                let start = self.full_expr(inner.next().expect("for start"));
+                let end = self.full_expr(inner.next().expect("for end"));
+                let mut step = None;
+                let mut body = Rc::from(Vec::new());
+                for p in inner {
+                    match p.as_rule() {
+                        Rule::full_expr => step = Some(self.full_expr(p)),
+                        Rule::items => body = self.items(p),
+                        _ => {}
+                    }
+                }
+                DirectiveKind::For { variable, variable_span, start, end, step, body }
+            }
+            Rule::switch_directive => {
+                let value = self.expr(inner.next().expect("switch value"));
+                let mut clauses = Vec::new();
+                let mut otherwise = None;
+                for p in inner {
+                    match p.as_rule() {
+                        Rule::switch_clause => {
+                            let mut c = p.into_inner();
+                            let label_pair = c.next().expect("switch label");
+                            let label = if label_pair.as_rule() == Rule::case_label {
+                                let mut l = label_pair.into_inner().filter(|p| p.as_rule() == Rule::expr);
+                                SwitchLabel::Case(self.expr(l.next().expect("case value")))
+                            } else {
+                                let mut l = label_pair.into_inner().filter(|p| p.as_rule() == Rule::full_expr);
+                                let low = self.full_expr(l.next().expect("range low"));
+                                let high = self.full_expr(l.next().expect("range high"));
+                                SwitchLabel::Range(low, high)
+                            };
+                            let body = self.items(c.next().expect("clause body"));
+                            clauses.push(SwitchClause { label, body });
+                        }
+                        Rule::else_branch => {
+                            otherwise = Some(self.items(p.into_inner().next().expect("else body")))
+                        }
+                        _ => {}
+                    }
+                }
+                DirectiveKind::Switch { value, clauses, otherwise }
+            }
+            Rule::break_directive => DirectiveKind::Break,
+            Rule::macro_directive => {
+                let name = inner.next().expect("macro name");
+                let params = inner.next().expect("macro parameters");
+                let header_span = span.join(self.span(&params));
+                let parameters = self.parameters(params);
+                let body = inner.next().and_then(|p| match p.as_rule() {
+                    Rule::items => Some(self.items(p)),
+                    _ => None,
+                });
+                DirectiveKind::Macro(Rc::new(MacroDefinition {
+                    name: Rc::from(name.as_str()),
+                    parameters,
+                    body,
+                    header_span,
+                }))
+            }
+            Rule::include => DirectiveKind::Include(self.expr(inner.next().expect("include"))),
+            Rule::version => DirectiveKind::Version(self.expr(inner.next().expect("version"))),
+            Rule::default => DirectiveKind::Default(self.items(inner.next().expect("default"))),
+            Rule::debug | Rule::warning | Rule::error => {
+                let level = match rule {
+                    Rule::debug => MessageLevel::Debug,
+                    Rule::warning => MessageLevel::Warning,
+                    _ => MessageLevel::Error,
+                };
+                DirectiveKind::Message { level, text: self.expr(inner.next().expect("message")) }
+            }
+            Rule::fopen => {
+                let handle = Rc::from(inner.next().expect("handle").as_str());
+                let path = self.expr(inner.next().expect("path"));
+                let mode = Rc::from(inner.next().expect("mode").as_str());
+                DirectiveKind::FileOpen { handle, path, mode }
+            }
+            Rule::fclose => DirectiveKind::FileClose(Rc::from(inner.next().expect("handle").as_str())),
+            Rule::read => {
+                let handle = Rc::from(inner.next().expect("handle").as_str());
+                DirectiveKind::FileRead { handle, targets: inner.map(|p| self.target(p)).collect() }
+            }
+            _ => {
+                // write
+                let handle = Rc::from(inner.next().expect("handle").as_str());
+                let values = inner
+                    .filter(|p| p.as_rule() == Rule::full_expr)
+                    .map(|p| self.full_expr(p))
+                    .collect();
+                DirectiveKind::FileWrite { handle, values }
+            }
+        };
+        Directive { kind, span }
+    }
+}
+
+/// Directive words (`kw_*` rules) only mark where a directive starts.
+fn is_directive_word(rule: Rule) -> bool {
+    format!("{rule:?}").starts_with("kw_")
+}
+
+/// Resolves POV-Ray string escapes (`\n`, `\t`, `\\`, `\"`, ...).
+fn unescape(raw: &str) -> String {
+    let mut out = String::with_capacity(raw.len());
+    let mut chars = raw.chars();
+    while let Some(c) = chars.next() {
+        if c != '\\' {
+            out.push(c);
+            continue;
+        }
+        match chars.next() {
+            Some('n') => out.push('\n'),
+            Some('t') => out.push('\t'),
+            Some('r') => out.push('\r'),
+            Some('a') => out.push('\u{7}'),
+            Some('b') => out.push('\u{8}'),
+            Some('f') => out.push('\u{c}'),
+            Some('v') => out.push('\u{b}'),
+            Some('0') => out.push('\0'),
+            Some(other) => out.push(other),
+            None => out.push('\\'),
+        }
+    }
+    out
+}
