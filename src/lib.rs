@@ -5,6 +5,7 @@
 
 pub mod accel;
 pub mod diag;
+pub mod eval;
 pub mod geometry;
 pub mod render;
 pub mod scene;

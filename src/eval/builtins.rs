@@ -1,0 +1,321 @@
+//! Built-in functions callable from expressions: math, vectors and strings.
+
+use super::value::{Value, Vector};
+use super::{EvalResult, Evaluator};
+use crate::scene::Transform;
+use crate::syntax::ast::Call;
+use glam::DVec3;
+use std::rc::Rc;
+
+/// Names of every built-in function, for suggestions.
+pub(crate) const FUNCTIONS: &[&str] = &[
+    "abs", "acos", "acosh", "asc", "asin", "asinh", "atan", "atan2", "atanh", "bitwise_and",
+    "bitwise_or", "bitwise_xor", "ceil", "chr", "concat", "cos", "cosh", "defined", "degrees",
+    "dimension_size", "dimensions", "div", "exp", "file_exists", "floor", "int", "ln", "log",
+    "max", "min", "mod", "pow", "radians", "select", "sin", "sinh", "sqr", "sqrt", "str",
+    "strcmp", "strlen", "strlwr", "strupr", "substr", "tan", "tanh", "val", "vaxis_rotate",
+    "vcross", "vdot", "vlength", "vnormalize", "vrotate", "vstr",
+];
+
+pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value> {
+    let name = &*call.name;
+    let arity_error = |ev: &Evaluator, n: usize| -> Box<crate::diag::Diagnostic> {
+        let plural = if n == 1 { "" } else { "s" };
+        ev.error(call.span, format!("`{name}` takes {n} argument{plural}, found {}", call.arguments.len()))
+            .with_label("called here")
+            .into()
+    };
+    let arity = |ev: &Evaluator, n: usize| -> EvalResult<()> {
+        if call.arguments.len() != n {
+            return Err(arity_error(ev, n));
+        }
+        Ok(())
+    };
+    let unary = |f: fn(f64) -> f64| -> Option<fn(f64) -> f64> { Some(f) };
+    let one: Option<fn(f64) -> f64> = match name {
+        "abs" => unary(f64::abs),
+        "acos" => unary(f64::acos),
+        "acosh" => unary(f64::acosh),
+        "asin" => unary(f64::asin),
+        "asinh" => unary(f64::asinh),
+        "atan" => unary(f64::atan),
+        "atanh" => unary(f64::atanh),
+        "ceil" => unary(f64::ceil),
+        "cos" => unary(f64::cos),
+        "cosh" => unary(f64::cosh),
+        "degrees" => unary(f64::to_degrees),
+        "exp" => unary(f64::exp),
+        "floor" => unary(f64::floor),
+        "int" => unary(f64::trunc),
+        "ln" => unary(f64::ln),
+        "log" => unary(f64::log10),
+        "radians" => unary(f64::to_radians),
+        "sin" => unary(f64::sin),
+        "sinh" => unary(f64::sinh),
+        "sqr" => unary(|x| x * x),
+        "sqrt" => unary(f64::sqrt),
+        "tan" => unary(f64::tan),
+        "tanh" => unary(f64::tanh),
+        _ => None,
+    };
+    if let Some(f) = one {
+        arity(ev, 1)?;
+        let x = ev.argument_float(call, 0)?;
+        return Ok(Value::Float(f(x)));
+    }
+    let float2 = |ev: &mut Evaluator| -> EvalResult<(f64, f64)> {
+        arity(ev, 2)?;
+        Ok((ev.argument_float(call, 0)?, ev.argument_float(call, 1)?))
+    };
+    let vector = |ev: &mut Evaluator, i: usize| -> EvalResult<DVec3> {
+        let value = ev.argument(call, i)?;
+        ev.to_vector3(value, call.arguments[i].span())
+    };
+    let v3 = |v: DVec3| Value::Vector(Vector::from_dvec3(v));
+    Ok(match name {
+        "atan2" => {
+            let (a, b) = float2(ev)?;
+            Value::Float(a.atan2(b))
+        }
+        "pow" => {
+            let (a, b) = float2(ev)?;
+            Value::Float(a.powf(b))
+        }
+        "mod" => {
+            let (a, b) = float2(ev)?;
+            Value::Float(a % b)
+        }
+        "div" => {
+            let (a, b) = float2(ev)?;
+            Value::Float((a / b).trunc())
+        }
+        "min" | "max" => {
+            if call.arguments.is_empty() {
+                return Err(ev.error(call.span, format!("`{name}` needs at least one argument")).into());
+            }
+            let mut result = ev.argument_float(call, 0)?;
+            for i in 1..call.arguments.len() {
+                let x = ev.argument_float(call, i)?;
+                result = if name == "min" { result.min(x) } else { result.max(x) };
+            }
+            Value::Float(result)
+        }
+        "bitwise_and" | "bitwise_or" | "bitwise_xor" => {
+            let mut result = ev.argument_float(call, 0)? as i64;
+            for i in 1..call.arguments.len() {
+                let x = ev.argument_float(call, i)? as i64;
+                result = match name {
+                    "bitwise_and" => result & x,
+                    "bitwise_or" => result | x,
+                    _ => result ^ x,
+                };
+            }
+            Value::Float(result as f64)
+        }
+        "select" => {
+            if !(3..=4).contains(&call.arguments.len()) {
+                return Err(ev.error(call.span, "`select` takes 3 or 4 arguments").into());
+            }
+            let a = ev.argument_float(call, 0)?;
+            let index = if a < 0.0 {
+                1
+            } else if call.arguments.len() == 4 && a == 0.0 {
+                2
+            } else {
+                call.arguments.len() - 1
+            };
+            ev.argument(call, index)?
+        }
+        "vlength" => {
+            arity(ev, 1)?;
+            Value::Float(vector(ev, 0)?.length())
+        }
+        "vnormalize" => {
+            arity(ev, 1)?;
+            let v = vector(ev, 0)?;
+            let length = v.length();
+            v3(if length > 0.0 { v / length } else { DVec3::ZERO })
+        }
+        "vdot" => {
+            arity(ev, 2)?;
+            Value::Float(vector(ev, 0)?.dot(vector(ev, 1)?))
+        }
+        "vcross" => {
+            arity(ev, 2)?;
+            v3(vector(ev, 0)?.cross(vector(ev, 1)?))
+        }
+        "vrotate" => {
+            arity(ev, 2)?;
+            let v = vector(ev, 0)?;
+            let angles = vector(ev, 1)?;
+            v3(Transform::rotation_degrees(angles).point_to_outer(v))
+        }
+        "vaxis_rotate" => {
+            arity(ev, 3)?;
+            let v = vector(ev, 0)?;
+            let axis = vector(ev, 1)?.normalize_or_zero();
+            let angle = ev.argument_float(call, 2)?.to_radians();
+            let rotation = glam::DMat3::from_axis_angle(axis, angle);
+            v3(rotation * v)
+        }
+        "defined" => {
+            arity(ev, 1)?;
+            let defined = match &call.arguments[0] {
+                crate::syntax::ast::Argument::Expr(crate::syntax::ast::Expr::Ident(n, _)) => ev.lookup(n).is_some(),
+                _ => true,
+            };
+            Value::Float(f64::from(defined))
+        }
+        "dimensions" => {
+            arity(ev, 1)?;
+            match ev.argument(call, 0)? {
+                Value::Array(a) => Value::Float(a.sizes.len() as f64),
+                other => return Err(ev.error(call.span, format!("expected an array, found {}", other.type_name())).into()),
+            }
+        }
+        "dimension_size" => {
+            arity(ev, 2)?;
+            let array = ev.argument(call, 0)?;
+            let d = ev.argument_float(call, 1)?;
+            match array {
+                Value::Array(a) => {
+                    let i = d as usize;
+                    Value::Float(if i >= 1 && i <= a.sizes.len() { a.sizes[i - 1] as f64 } else { 0.0 })
+                }
+                other => return Err(ev.error(call.span, format!("expected an array, found {}", other.type_name())).into()),
+            }
+        }
+        "str" => {
+            arity(ev, 3)?;
+            let value = ev.argument_float(call, 0)?;
+            let width = ev.argument_float(call, 1)?;
+            let precision = ev.argument_float(call, 2)?;
+            ev.checked_string(format_float(value, width, precision), call.span)?
+        }
+        "vstr" => {
+            arity(ev, 5)?;
+            let count = ev.argument_float(call, 0)?.clamp(1.0, 5.0) as usize;
+            let components = match ev.argument(call, 1)? {
+                Value::Vector(v) => v.components,
+                Value::Colour(c) => c.to_array(),
+                Value::Float(f) => [f; 5],
+                other => return Err(ev.error(call.span, format!("expected a vector, found {}", other.type_name())).into()),
+            };
+            let separator = string_argument(ev, call, 2)?;
+            let width = ev.argument_float(call, 3)?;
+            let precision = ev.argument_float(call, 4)?;
+            let parts: Vec<String> = components[..count].iter().map(|c| format_float(*c, width, precision)).collect();
+            ev.checked_string(parts.join(&separator), call.span)?
+        }
+        "concat" => {
+            let mut out = String::new();
+            for i in 0..call.arguments.len() {
+                out.push_str(&string_argument(ev, call, i)?);
+            }
+            ev.checked_string(out, call.span)?
+        }
+        "chr" => {
+            arity(ev, 1)?;
+            let code = ev.argument_float(call, 0)? as u32;
+            Value::String(Rc::from(char::from_u32(code).unwrap_or('?').to_string()))
+        }
+        "asc" => {
+            arity(ev, 1)?;
+            let s = string_argument(ev, call, 0)?;
+            Value::Float(s.chars().next().map_or(0.0, |c| c as u32 as f64))
+        }
+        "strlen" => {
+            arity(ev, 1)?;
+            Value::Float(string_argument(ev, call, 0)?.chars().count() as f64)
+        }
+        "strupr" => {
+            arity(ev, 1)?;
+            Value::String(Rc::from(string_argument(ev, call, 0)?.to_uppercase()))
+        }
+        "strlwr" => {
+            arity(ev, 1)?;
+            Value::String(Rc::from(string_argument(ev, call, 0)?.to_lowercase()))
+        }
+        "strcmp" => {
+            arity(ev, 2)?;
+            let a = string_argument(ev, call, 0)?;
+            let b = string_argument(ev, call, 1)?;
+            Value::Float(match a.cmp(&b) {
+                std::cmp::Ordering::Less => -1.0,
+                std::cmp::Ordering::Equal => 0.0,
+                std::cmp::Ordering::Greater => 1.0,
+            })
+        }
+        "substr" => {
+            arity(ev, 3)?;
+            let s = string_argument(ev, call, 0)?;
+            let start = ev.argument_float(call, 1)? as i64;
+            let length = ev.argument_float(call, 2)? as i64;
+            let chars: Vec<char> = s.chars().collect();
+            if start < 1 || length < 0 || (start - 1 + length) as usize > chars.len() {
+                return Err(ev
+                    .error(call.span, format!("substr({start}, {length}) is outside a string of length {}", chars.len()))
+                    .into());
+            }
+            let part: String = chars[(start - 1) as usize..(start - 1 + length) as usize].iter().collect();
+            Value::String(Rc::from(part))
+        }
+        "val" => {
+            arity(ev, 1)?;
+            let s = string_argument(ev, call, 0)?;
+            Value::Float(leading_float(&s))
+        }
+        "file_exists" => {
+            arity(ev, 1)?;
+            let s = string_argument(ev, call, 0)?;
+            Value::Float(f64::from(ev.find_include(&s).is_ok()))
+        }
+        _ => {
+            let mut d = ev.undefined(name, call.name_span);
+            d.message = format!("unknown function or macro `{name}`");
+            if d.help.is_none() {
+                if let Some(s) = crate::diag::did_you_mean(name, FUNCTIONS.iter().copied()) {
+                    d.help = Some(format!("did you mean `{s}`?"));
+                }
+            }
+            return Err(d.into());
+        }
+    })
+}
+
+fn string_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<String> {
+    match ev.argument(call, index)? {
+        Value::String(s) => Ok(s.to_string()),
+        other => Err(ev
+            .error(call.arguments[index].span(), format!("expected a string, found {}", other.type_name()))
+            .into()),
+    }
+}
+
+/// `str(value, width, precision)` as POV-Ray formats it.
+fn format_float(value: f64, width: f64, precision: f64) -> String {
+    let precision = if precision < 0.0 { 6 } else { precision as usize };
+    let text = format!("{value:.precision$}");
+    // A negative width pads with zeros, a positive one with spaces.
+    let zero_padded = width < 0.0;
+    let width = width.abs() as usize;
+    match (width > text.len(), zero_padded) {
+        (true, true) if value < 0.0 => format!("-{:0>w$}", &text[1..], w = width - 1),
+        (true, true) => format!("{text:0>width$}"),
+        (true, false) => format!("{text:>width$}"),
+        _ => text,
+    }
+}
+
+/// The float at the start of a string (0 when there is none), like C's `atof`.
+fn leading_float(s: &str) -> f64 {
+    let s = s.trim_start();
+    let mut end = 0;
+    for i in (1..=s.len()).rev() {
+        if s.is_char_boundary(i) && s[..i].parse::<f64>().is_ok() {
+            end = i;
+            break;
+        }
+    }
+    s[..end].parse().unwrap_or(0.0)
+}

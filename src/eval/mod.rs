@@ -1,0 +1,365 @@
+//! Evaluation: the AST of a scene file to a [`Scene`].
+//!
+//! In: a scene file path and options. Out: the [`Scene`] plus warnings, or the diagnostic
+//! that stopped evaluation. Holds: each file is parsed once (includes are cached); macro
+//! bodies are evaluated from their AST at each call; every limit ends in a diagnostic.
+
+mod appearance;
+mod builtins;
+mod expr;
+mod objects;
+mod stream;
+mod value;
+mod view;
+
+pub use value::{Array, Value, Vector};
+
+use crate::diag::{did_you_mean, Diagnostic, FileId, SourceMap, Span, TraceEntry};
+use crate::scene::{Camera, Colour, GlobalSettings, LightSource, Object, Scene, Texture};
+use crate::syntax::ast::Item;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+use std::sync::Arc;
+use stream::Stream;
+
+/// Deepest nesting of macro calls, includes and blocks before evaluation stops.
+pub const NESTING_LIMIT: usize = 20_000;
+/// Most iterations one `#while` or `#for` loop may run.
+pub const LOOP_ITERATION_LIMIT: u64 = 100_000_000;
+/// Largest number of elements an array may have.
+pub const ARRAY_SIZE_LIMIT: usize = 100_000_000;
+/// Longest string a scene may build, in bytes.
+pub const STRING_SIZE_LIMIT: usize = 16 << 20;
+
+/// What the evaluator needs to know from outside the scene file.
+#[derive(Clone, Debug)]
+pub struct EvalOptions {
+    /// Folders searched by `#include` after the scene's own folder.
+    pub include_paths: Vec<PathBuf>,
+    /// Value of `image_width`.
+    pub image_width: u32,
+    /// Value of `image_height`.
+    pub image_height: u32,
+    /// Value of `clock`.
+    pub clock: f64,
+}
+
+impl Default for EvalOptions {
+    fn default() -> Self {
+        EvalOptions { include_paths: Vec::new(), image_width: 320, image_height: 240, clock: 0.0 }
+    }
+}
+
+/// The outcome of evaluating a scene file.
+#[derive(Debug)]
+pub struct Evaluated {
+    /// The scene, or `None` when an error stopped evaluation.
+    pub scene: Option<Scene>,
+    /// Errors and warnings, in the order found.
+    pub diagnostics: Vec<Diagnostic>,
+    /// The text of every file read, for showing diagnostics.
+    pub sources: SourceMap,
+}
+
+/// Error type used throughout evaluation.
+pub(crate) type EvalResult<T> = Result<T, Box<Diagnostic>>;
+
+/// Reads, parses and evaluates a scene file.
+pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
+    let mut evaluator = Evaluator::new(options.clone());
+    let result = evaluator.run_main(path);
+    let mut diagnostics = std::mem::take(&mut evaluator.warnings);
+    let scene = match result {
+        Ok(()) => Some(evaluator.finish_scene()),
+        Err(d) => {
+            diagnostics.push(*d);
+            None
+        }
+    };
+    Evaluated { scene, diagnostics, sources: evaluator.sources }
+}
+
+/// One symbol table: the global one, an include file's or a macro call's.
+pub(crate) type Scope = HashMap<Rc<str>, Value>;
+
+pub(crate) struct Evaluator {
+    pub(crate) options: EvalOptions,
+    pub(crate) sources: SourceMap,
+    pub(crate) scopes: Vec<Scope>,
+    parsed: HashMap<PathBuf, (FileId, Rc<[Item]>)>,
+    scene_folder: PathBuf,
+    pub(crate) trace: Vec<TraceEntry>,
+    pub(crate) warnings: Vec<Diagnostic>,
+    pub(crate) nesting: usize,
+    pub(crate) version: f64,
+    version_declared: bool,
+    pub(crate) default_texture: Texture,
+    default_texture_set: bool,
+    camera: Option<Camera>,
+    lights: Vec<LightSource>,
+    objects: Vec<Object>,
+    background: Colour,
+    pub(crate) settings: GlobalSettings,
+    warned_once: std::collections::HashSet<String>,
+}
+
+impl Evaluator {
+    fn new(options: EvalOptions) -> Evaluator {
+        Evaluator {
+            options,
+            sources: SourceMap::new(),
+            scopes: vec![Scope::new()],
+            parsed: HashMap::new(),
+            scene_folder: PathBuf::from("."),
+            trace: Vec::new(),
+            warnings: Vec::new(),
+            nesting: 0,
+            version: 3.7,
+            version_declared: false,
+            default_texture: Texture::default(),
+            default_texture_set: false,
+            camera: None,
+            lights: Vec::new(),
+            objects: Vec::new(),
+            background: Colour::BLACK,
+            settings: GlobalSettings::default(),
+            warned_once: Default::default(),
+        }
+    }
+
+    /// An error at `span` carrying the current macro/include trace.
+    pub(crate) fn error(&self, span: Span, message: impl Into<String>) -> Diagnostic {
+        let mut d = Diagnostic::error(span, message);
+        d.trace = self.trace.iter().rev().cloned().collect();
+        d
+    }
+
+    /// Records a warning (each distinct message once).
+    pub(crate) fn warn(&mut self, span: Span, message: impl Into<String>) {
+        let message = message.into();
+        if self.warned_once.insert(message.clone()) {
+            let mut d = Diagnostic::warning(span, message);
+            d.trace = self.trace.iter().rev().cloned().collect();
+            self.warnings.push(d);
+        }
+    }
+
+    fn run_main(&mut self, path: &Path) -> EvalResult<()> {
+        self.scene_folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        let items = self.load_file(path, None)?;
+        let mut stream = Stream::new(items);
+        while let Some(item) = self.next_item(&mut stream)? {
+            self.scene_item(item)?;
+        }
+        Ok(())
+    }
+
+    /// Reads and parses a file once; later loads reuse the AST.
+    fn load_file(&mut self, path: &Path, from: Option<Span>) -> EvalResult<Rc<[Item]>> {
+        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        if let Some((_, items)) = self.parsed.get(&key) {
+            return Ok(items.clone());
+        }
+        let bytes = std::fs::read(path).map_err(|e| {
+            let span = from.unwrap_or_default();
+            let mut d = self.error(span, format!("cannot read `{}`: {e}", path.display()));
+            if from.is_none() {
+                d.span = Span { file: u32::MAX, start: 0, end: 0 };
+            }
+            Box::new(d)
+        })?;
+        let text: Arc<str> = Arc::from(String::from_utf8_lossy(&bytes).into_owned());
+        let file = self.sources.add(path, text.clone());
+        let items = crate::syntax::parse(&text, file).map_err(|mut d| {
+            d.trace = self.trace.iter().rev().cloned().collect();
+            d
+        })?;
+        self.parsed.insert(key, (file, items.clone()));
+        Ok(items)
+    }
+
+    /// Finds an include file: the scene's folder, `-L` folders, `DURER_INCLUDE_PATH`,
+    /// then POV-Ray's installed include folder.
+    pub(crate) fn find_include(&self, name: &str) -> Result<PathBuf, Vec<PathBuf>> {
+        let direct = Path::new(name);
+        if direct.is_absolute() {
+            return if direct.is_file() { Ok(direct.to_path_buf()) } else { Err(vec![]) };
+        }
+        let mut folders = vec![self.scene_folder.clone()];
+        folders.extend(self.options.include_paths.iter().cloned());
+        if let Some(paths) = std::env::var_os("DURER_INCLUDE_PATH") {
+            folders.extend(std::env::split_paths(&paths));
+        }
+        for installed in ["/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"] {
+            folders.push(PathBuf::from(installed));
+        }
+        for folder in &folders {
+            let candidate = folder.join(name);
+            if candidate.is_file() {
+                return Ok(candidate);
+            }
+        }
+        Err(folders)
+    }
+
+    /// Runs `#include`: parses the file once and streams its items in a new local scope.
+    pub(crate) fn include(&mut self, name: &str, span: Span, stream: &mut Stream) -> EvalResult<()> {
+        let path = match self.find_include(name) {
+            Ok(path) => path,
+            Err(folders) => {
+                let searched: Vec<String> = folders.iter().map(|f| f.display().to_string()).collect();
+                return Err(self
+                    .error(span, format!("cannot find include file `{name}`"))
+                    .with_label("included here")
+                    .with_help(format!("searched: {}", searched.join(", ")))
+                .into());
+            }
+        };
+        self.enter_nesting(span)?;
+        self.trace.push(TraceEntry { what: format!("file `{name}`"), span });
+        let items = match self.load_file(&path, Some(span)) {
+            Ok(items) => items,
+            Err(e) => {
+                self.trace.pop();
+                self.nesting -= 1;
+                return Err(e);
+            }
+        };
+        self.scopes.push(Scope::new());
+        stream.push_include(items);
+        Ok(())
+    }
+
+    pub(crate) fn enter_nesting(&mut self, span: Span) -> EvalResult<()> {
+        if self.nesting >= NESTING_LIMIT {
+            return Err(self
+                .error(span, format!("nesting deeper than {NESTING_LIMIT} levels"))
+                .with_label("this call or include goes too deep")
+                .with_help("a recursive macro probably never reaches its base case")
+            .into());
+        }
+        self.nesting += 1;
+        Ok(())
+    }
+
+    /// Looks an identifier up, innermost scope first, following references.
+    pub(crate) fn lookup(&self, name: &str) -> Option<&Value> {
+        for scope in self.scopes.iter().rev() {
+            if let Some(value) = scope.get(name) {
+                return match value {
+                    Value::Reference { scope, name } => self.lookup_from(*scope, name),
+                    other => Some(other),
+                };
+            }
+        }
+        None
+    }
+
+    fn lookup_from(&self, top: usize, name: &str) -> Option<&Value> {
+        for index in (0..=top.min(self.scopes.len().saturating_sub(1))).rev() {
+            if let Some(value) = self.scopes[index].get(name) {
+                return match value {
+                    Value::Reference { scope, name } if *scope < index => self.lookup_from(*scope, name),
+                    Value::Reference { .. } => None,
+                    other => Some(other),
+                };
+            }
+        }
+        None
+    }
+
+    /// Where `#declare name` writes: the innermost existing version (following references),
+    /// or the global scope for a new name.
+    pub(crate) fn declare_slot(&self, name: &Rc<str>) -> (usize, Rc<str>) {
+        let mut top = self.scopes.len() - 1;
+        let mut name = name.clone();
+        loop {
+            let found = (0..=top).rev().find(|&i| self.scopes[i].contains_key(&name));
+            match found {
+                Some(i) => match &self.scopes[i][&name] {
+                    Value::Reference { scope, name: target } if *scope < i => {
+                        top = *scope;
+                        name = target.clone();
+                    }
+                    _ => return (i, name),
+                },
+                None => return (0, name),
+            }
+        }
+    }
+
+    /// An "undefined identifier" error with a did-you-mean over visible names and keywords.
+    pub(crate) fn undefined(&self, name: &str, span: Span) -> Diagnostic {
+        let mut d = self.error(span, format!("undefined identifier `{name}`")).with_label("not declared");
+        let visible = self.scopes.iter().flat_map(|s| s.keys().map(|k| &**k));
+        let keywords = crate::syntax::keywords::ALL.iter().copied();
+        if let Some(similar) = did_you_mean(name, visible.chain(keywords)) {
+            d = d.with_help(format!("did you mean `{similar}`?"));
+        }
+        d
+    }
+
+    /// Handles one item at the top level of the scene.
+    fn scene_item(&mut self, item: Item) -> EvalResult<()> {
+        let span = item.span();
+        let value = match &item {
+            Item::Block(block) => self.eval_block(block)?,
+            Item::Expr(expr) => self.eval_expr(expr)?,
+            Item::Keyword(word, span) => {
+                return Err(self.error(*span, format!("`{word}` cannot stand at the top level of a scene"))
+                    .with_label("expected an object, camera, light or directive")
+                .into())
+            }
+            Item::Comma(_) => return Ok(()),
+            Item::MapEntry(..) | Item::Directive(_) => {
+                return Err(self.error(span, "expected an object, camera, light or directive").into())
+            }
+        };
+        match value {
+            Value::Object(object) => {
+                let mut object = Rc::unwrap_or_clone(object);
+                if object.texture.is_none() && self.default_texture_set {
+                    object.texture = Some(Arc::new(self.default_texture.clone()));
+                }
+                self.objects.push(object);
+            }
+            Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),
+            Value::Light(light) => self.lights.push(Rc::unwrap_or_clone(light)),
+            Value::Colour(colour) if matches!(item, Item::Block(_)) => self.background = colour,
+            Value::Float(_) if matches!(item, Item::Block(_)) => {} // settings blocks
+            other => {
+                return Err(self
+                    .error(span, format!("expected an object, camera or light, found {}", other.type_name()))
+                    .with_label("this value does nothing here")
+                .into())
+            }
+        }
+        Ok(())
+    }
+
+    fn finish_scene(&mut self) -> Scene {
+        let mut settings = self.settings.clone();
+        settings.language_version = self.version;
+        settings.version_declared = self.version_declared;
+        Scene {
+            camera: self.camera.clone().unwrap_or_default(),
+            lights: std::mem::take(&mut self.lights),
+            objects: std::mem::take(&mut self.objects),
+            background: self.background,
+            settings,
+        }
+    }
+
+    pub(crate) fn set_version(&mut self, version: f64) {
+        if !self.version_declared {
+            self.version_declared = true;
+        }
+        self.version = version;
+    }
+
+    pub(crate) fn set_default_texture(&mut self, texture: Texture) {
+        self.default_texture = texture;
+        self.default_texture_set = true;
+    }
+}

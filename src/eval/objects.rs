@@ -1,0 +1,366 @@
+//! Objects: shapes, CSG, `object { Ident }`, and the modifiers and transformations that
+//! apply to them.
+
+use super::stream::Stream;
+use super::value::Value;
+use super::{EvalResult, Evaluator};
+use crate::diag::Span;
+use crate::scene::{CsgOperation, Interior, Object, Shape, Texture, Transform};
+use crate::syntax::ast::{Block, Item};
+use glam::{DAffine3, DMat3, DVec3};
+use std::rc::Rc;
+use std::sync::Arc;
+
+impl Evaluator {
+    /// Evaluates the body of an object block (`head` is its keyword).
+    pub(crate) fn eval_object(&mut self, head: &str, block: &Block, stream: &mut Stream) -> EvalResult<Object> {
+        let mut object = match head {
+            "object" => {
+                let (value, span) = self.expect_value(stream, "an object")?;
+                match value {
+                    Value::Object(o) => Rc::unwrap_or_clone(o),
+                    other => {
+                        return Err(self
+                            .error(span, format!("expected an object, found {}", other.type_name()))
+                            .with_label("`object` needs an object identifier")
+                            .into())
+                    }
+                }
+            }
+            "union" | "intersection" | "difference" | "merge" => {
+                let operation = match head {
+                    "union" => CsgOperation::Union,
+                    "intersection" => CsgOperation::Intersection,
+                    "difference" => CsgOperation::Difference,
+                    _ => CsgOperation::Merge,
+                };
+                let mut object = Object::new(Shape::Csg { operation, children: Vec::new() });
+                while let Some(item) = self.next_item(stream)? {
+                    let child = match &item {
+                        Item::Block(b) => match self.eval_block(b)? {
+                            Value::Object(o) => Some(o),
+                            other => {
+                                self.object_modifier_value(&mut object, other, item.span())?;
+                                None
+                            }
+                        },
+                        _ => {
+                            self.object_modifier(&mut object, item, stream, head)?;
+                            None
+                        }
+                    };
+                    if let Some(child) = child {
+                        if let Shape::Csg { children, .. } = &mut object.shape {
+                            children.push(Rc::unwrap_or_clone(child));
+                        }
+                    }
+                }
+                return Ok(object);
+            }
+            _ => Object::new(self.eval_shape(head, block, stream)?),
+        };
+        while let Some(item) = self.next_item(stream)? {
+            self.object_modifier(&mut object, item, stream, head)?;
+        }
+        Ok(object)
+    }
+
+    /// Reads a shape's required parameters.
+    fn eval_shape(&mut self, head: &str, block: &Block, stream: &mut Stream) -> EvalResult<Shape> {
+        let _ = block;
+        Ok(match head {
+            "sphere" => {
+                let centre = self.expect_vector(stream, "the centre")?;
+                let radius = self.expect_float(stream, "the radius")?;
+                Shape::Sphere { centre, radius }
+            }
+            "box" => {
+                let corner1 = self.expect_vector(stream, "a corner")?;
+                let corner2 = self.expect_vector(stream, "the opposite corner")?;
+                Shape::Box { corner1, corner2 }
+            }
+            "plane" => {
+                let normal = self.expect_vector(stream, "the normal")?;
+                let distance = self.expect_float(stream, "the distance")?;
+                Shape::Plane { normal, distance }
+            }
+            "cylinder" => {
+                let base = self.expect_vector(stream, "the base point")?;
+                let cap = self.expect_vector(stream, "the cap point")?;
+                let radius = self.expect_float(stream, "the radius")?;
+                Shape::Cylinder { base, cap, radius, open: false }
+            }
+            "cone" => {
+                let base = self.expect_vector(stream, "the base point")?;
+                let base_radius = self.expect_float(stream, "the base radius")?;
+                let cap = self.expect_vector(stream, "the cap point")?;
+                let cap_radius = self.expect_float(stream, "the cap radius")?;
+                Shape::Cone { base, base_radius, cap, cap_radius, open: false }
+            }
+            "torus" => {
+                let major = self.expect_float(stream, "the major radius")?;
+                let minor = self.expect_float(stream, "the minor radius")?;
+                Shape::Torus { major, minor }
+            }
+            "disc" => {
+                let centre = self.expect_vector(stream, "the centre")?;
+                let normal = self.expect_vector(stream, "the normal")?;
+                let radius = self.expect_float(stream, "the radius")?;
+                let mut hole_radius = 0.0;
+                match self.next_item(stream)? {
+                    Some(Item::Comma(_)) => hole_radius = self.expect_float(stream, "the hole radius")?,
+                    Some(other) => stream.push_back(other),
+                    None => {}
+                }
+                Shape::Disc { centre, normal, radius, hole_radius }
+            }
+            "quadric" => {
+                let a = self.expect_vector(stream, "<A, B, C>")?;
+                let b = self.expect_vector(stream, "<D, E, F>")?;
+                let c = self.expect_vector(stream, "<G, H, I>")?;
+                let j = self.expect_float(stream, "J")?;
+                Shape::Quadric { coefficients: [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, j] }
+            }
+            _ => {
+                let a = self.expect_vector(stream, "the first corner")?;
+                let b = self.expect_vector(stream, "the second corner")?;
+                let c = self.expect_vector(stream, "the third corner")?;
+                Shape::Triangle { corners: [a, b, c] }
+            }
+        })
+    }
+
+    /// Applies one modifier item to an object.
+    fn object_modifier(&mut self, object: &mut Object, item: Item, stream: &mut Stream, head: &str) -> EvalResult<()> {
+        match &item {
+            Item::Keyword(word, span) => match &**word {
+                "translate" | "rotate" | "scale" | "matrix" | "transform" => {
+                    let t = self.transform_keyword(word, *span, stream)?;
+                    apply_transform(object, &t);
+                }
+                "inverse" => object.inverse = !object.inverse,
+                "no_shadow" => object.no_shadow = true,
+                "hollow" => object.hollow = Some(self.optional_bool(stream)?),
+                "open" => match &mut object.shape {
+                    Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
+                    _ => return Err(self.unexpected_in(&item, head)),
+                },
+                "sturm" => {
+                    let _ = self.optional_bool(stream)?;
+                }
+                "double_illuminate" | "no_image" | "no_reflection" | "no_radiosity" => {
+                    self.warn(*span, format!("`{word}` is not supported yet; it is ignored"));
+                    let _ = self.optional_bool(stream)?;
+                }
+                _ => return Err(self.unexpected_in(&item, head)),
+            },
+            Item::Block(block) => {
+                if let crate::syntax::ast::BlockHead::Word(w) = &block.head {
+                    if matches!(&**w, "bounded_by" | "clipped_by" | "photons" | "radiosity") {
+                        self.warn(block.head_span, format!("`{w}` is not supported yet; it is ignored"));
+                        return Ok(());
+                    }
+                    if &**w == "material" {
+                        let mut body = Stream::new(block.body.clone());
+                        let (texture, interior) = self.eval_material(&mut body)?;
+                        self.attach_texture(object, texture);
+                        if let Some(interior) = interior {
+                            object.interior = Some(interior);
+                        }
+                        return Ok(());
+                    }
+                    if &**w == "finish" {
+                        let base = self.object_texture(object);
+                        let mut body = Stream::new(block.body.clone());
+                        let finish = self.eval_finish(&mut body, Some(base.finish.clone()))?;
+                        let mut texture = base;
+                        texture.finish = finish;
+                        object.texture = Some(Arc::new(texture));
+                        return Ok(());
+                    }
+                }
+                let value = self.eval_block(block)?;
+                self.object_modifier_value(object, value, block.span)?;
+            }
+            Item::Comma(_) => {}
+            Item::Expr(expr) => {
+                let value = self.eval_expr(expr)?;
+                if matches!(value, Value::Vector(_) | Value::String(_) | Value::Colour(_)) {
+                    return Err(self.unexpected_in(&item, head));
+                }
+                self.object_modifier_value(object, value, expr.span())?;
+            }
+            _ => return Err(self.unexpected_in(&item, head)),
+        }
+        Ok(())
+    }
+
+    /// Applies an evaluated modifier (texture, pigment, transform...) to an object.
+    fn object_modifier_value(&mut self, object: &mut Object, value: Value, span: Span) -> EvalResult<()> {
+        match value {
+            Value::Texture(texture) => self.attach_texture(object, (*texture).clone()),
+            Value::Pigment(pigment) => {
+                let mut texture = self.object_texture(object);
+                let mut pigment = Rc::unwrap_or_clone(pigment);
+                localise_pigment(&mut pigment, &object.transform);
+                texture.pigment = pigment;
+                object.texture = Some(Arc::new(texture));
+            }
+            Value::Finish(finish) => {
+                let mut texture = self.object_texture(object);
+                texture.finish = Rc::unwrap_or_clone(finish);
+                object.texture = Some(Arc::new(texture));
+            }
+            Value::Interior(interior) => object.interior = Some(Rc::unwrap_or_clone(interior)),
+            Value::Transform(t) => apply_transform(object, &t),
+            Value::Float(_) => {} // an ignored block such as `normal { .. }`
+            other => {
+                return Err(self
+                    .error(span, format!("{} cannot modify an object", other.type_name()))
+                    .with_label("not an object modifier")
+                    .into())
+            }
+        }
+        Ok(())
+    }
+
+    /// The object's texture (already in its local space) or a fresh default one.
+    fn object_texture(&self, object: &Object) -> Texture {
+        match &object.texture {
+            Some(t) => (**t).clone(),
+            None => self.default_texture.clone(),
+        }
+    }
+
+    /// Attaches a texture given in the object's outer space, re-expressing its patterns in
+    /// the object's local space so later transformations carry it along.
+    fn attach_texture(&mut self, object: &mut Object, mut texture: Texture) {
+        localise_pigment(&mut texture.pigment, &object.transform);
+        object.texture = Some(Arc::new(texture));
+    }
+
+    /// Reads the operand of `translate`, `rotate`, `scale`, `matrix` or `transform`.
+    pub(crate) fn transform_keyword(&mut self, word: &str, span: Span, stream: &mut Stream) -> EvalResult<Transform> {
+        Ok(match word {
+            "translate" => Transform::translation(self.expect_vector(stream, "a vector")?),
+            "rotate" => Transform::rotation_degrees(self.expect_vector(stream, "a vector")?),
+            "scale" => {
+                let mut factors = self.expect_vector(stream, "a vector")?;
+                // POV-Ray turns zero scale factors into 1 with a warning.
+                for c in [&mut factors.x, &mut factors.y, &mut factors.z] {
+                    if *c == 0.0 {
+                        *c = 1.0;
+                        self.warn(span, "scale factor of zero changed to 1");
+                    }
+                }
+                Transform::scaling(factors).unwrap_or(Transform::IDENTITY)
+            }
+            "matrix" => return self.eval_matrix(span, stream),
+            _ => {
+                let (value, vspan) = self.expect_value(stream, "a transform")?;
+                match value {
+                    Value::Transform(t) => t,
+                    other => {
+                        return Err(self.error(vspan, format!("expected a transform, found {}", other.type_name())).into())
+                    }
+                }
+            }
+        })
+    }
+
+    /// `matrix <m00, m01, m02, m10, .., m32>`: twelve numbers, rows applied to row vectors.
+    fn eval_matrix(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Transform> {
+        let item = self.next_item(stream)?;
+        let Some(Item::Expr(crate::syntax::ast::Expr::Vector(elements, vspan))) = item else {
+            return Err(self.error(span, "expected `matrix < 12 numbers >`").into());
+        };
+        if elements.len() != 12 {
+            return Err(self
+                .error(vspan, format!("a matrix has 12 numbers, found {}", elements.len()))
+                .into());
+        }
+        let mut values = [0.0; 12];
+        for (v, e) in values.iter_mut().zip(elements.iter()) {
+            *v = self.eval_float(e)?;
+        }
+        matrix_transform(&values)
+            .ok_or_else(|| self.error(vspan, "this matrix is singular").with_label("cannot be inverted").into())
+    }
+
+    /// `transform { .. }` block: a sequence of transformations (and `inverse`).
+    pub(crate) fn eval_transform_block(&mut self, stream: &mut Stream) -> EvalResult<Transform> {
+        let mut result = Transform::IDENTITY;
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, span) => match &**word {
+                    "translate" | "rotate" | "scale" | "matrix" | "transform" => {
+                        let t = self.transform_keyword(word, *span, stream)?;
+                        result = result.then(&t);
+                    }
+                    "inverse" => result = result.inverse(),
+                    _ => return Err(self.unexpected_in(&item, "transform")),
+                },
+                Item::Expr(expr) => match self.eval_expr(expr)? {
+                    Value::Transform(t) => result = result.then(&t),
+                    _ => return Err(self.unexpected_in(&item, "transform")),
+                },
+                Item::Block(block) => match self.eval_block(block)? {
+                    Value::Transform(t) => result = result.then(&t),
+                    _ => return Err(self.unexpected_in(&item, "transform")),
+                },
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "transform")),
+            }
+        }
+        Ok(result)
+    }
+
+    /// `material { texture { .. } interior { .. } }`.
+    pub(crate) fn eval_material(&mut self, stream: &mut Stream) -> EvalResult<(Texture, Option<Interior>)> {
+        let mut texture = self.default_texture.clone();
+        let mut interior = None;
+        while let Some(item) = self.next_item(stream)? {
+            let value = match &item {
+                Item::Block(b) => self.eval_block(b)?,
+                Item::Expr(e) => self.eval_expr(e)?,
+                Item::Comma(_) => continue,
+                _ => return Err(self.unexpected_in(&item, "material")),
+            };
+            match value {
+                Value::Texture(t) => texture = (*t).clone(),
+                Value::Interior(i) => interior = Some(Rc::unwrap_or_clone(i)),
+                _ => return Err(self.unexpected_in(&item, "material")),
+            }
+        }
+        Ok((texture, interior))
+    }
+}
+
+/// Re-expresses a pigment's pattern transform in the local space of an object whose
+/// local-to-outer map is `object_transform`.
+fn localise_pigment(pigment: &mut crate::scene::Pigment, object_transform: &Transform) {
+    if let crate::scene::Pigment::Pattern { transform, map, .. } = pigment {
+        *transform = transform.then(&object_transform.inverse());
+        if let crate::scene::PigmentMap::Blocks(blocks) = map {
+            for block in blocks {
+                localise_pigment(block, object_transform);
+            }
+        }
+    }
+}
+
+/// Applies a transformation to an object (its textures ride along in local space).
+pub(crate) fn apply_transform(object: &mut Object, t: &Transform) {
+    object.transform = object.transform.then(t);
+}
+
+/// A POV-Ray `matrix < .. 12 values .. >` as a transform.
+pub(crate) fn matrix_transform(values: &[f64; 12]) -> Option<Transform> {
+    let v = values;
+    let m = DMat3::from_cols(
+        DVec3::new(v[0], v[1], v[2]),
+        DVec3::new(v[3], v[4], v[5]),
+        DVec3::new(v[6], v[7], v[8]),
+    );
+    Transform::from_affine(DAffine3::from_mat3_translation(m, DVec3::new(v[9], v[10], v[11])))
+}

@@ -1,0 +1,512 @@
+//! Item streams: the items of a block body, with directives run and macro calls expanded
+//! as they are reached, the way POV-Ray reads its token stream.
+
+use super::value::Value;
+use super::{EvalResult, Evaluator, Scope, LOOP_ITERATION_LIMIT};
+use crate::diag::{Span, TraceEntry};
+use crate::syntax::ast::{
+    Call, Directive, DirectiveKind, Expr, Item, MessageLevel, SwitchLabel,
+};
+use std::rc::Rc;
+
+/// A stack of item lists being read; the top frame is read first.
+pub(crate) struct Stream {
+    frames: Vec<Frame>,
+    pushed_back: Option<Item>,
+}
+
+struct Frame {
+    items: Rc<[Item]>,
+    position: usize,
+    kind: FrameKind,
+}
+
+enum FrameKind {
+    /// A block body or a chosen `#if` branch.
+    Plain,
+    /// A macro body: its scope and trace entry are dropped when the frame ends.
+    Macro,
+    /// An included file: its scope and trace entry are dropped when the frame ends.
+    Include,
+    /// A `#while` loop body.
+    While { directive: Rc<Directive>, iterations: u64 },
+    /// A `#for` loop body.
+    For { directive: Rc<Directive>, value: f64, end: f64, step: f64, iterations: u64 },
+    /// A `#switch` clause body; `clause` is the index of the clause running.
+    Switch { directive: Rc<Directive>, clause: usize },
+}
+
+impl Stream {
+    /// A stream over `items`.
+    pub(crate) fn new(items: Rc<[Item]>) -> Stream {
+        Stream { frames: vec![Frame { items, position: 0, kind: FrameKind::Plain }], pushed_back: None }
+    }
+
+    /// Puts an item back to be returned by the next read.
+    pub(crate) fn push_back(&mut self, item: Item) {
+        self.pushed_back = Some(item);
+    }
+
+    fn push(&mut self, items: Rc<[Item]>, kind: FrameKind) {
+        self.frames.push(Frame { items, position: 0, kind });
+    }
+
+    pub(crate) fn push_include(&mut self, items: Rc<[Item]>) {
+        self.push(items, FrameKind::Include);
+    }
+}
+
+impl Evaluator {
+    /// The next item of the stream that is not a directive, expanding macro calls.
+    pub(crate) fn next_item(&mut self, stream: &mut Stream) -> EvalResult<Option<Item>> {
+        if let Some(item) = stream.pushed_back.take() {
+            return Ok(Some(item));
+        }
+        loop {
+            let Some(frame) = stream.frames.last_mut() else { return Ok(None) };
+            if frame.position >= frame.items.len() {
+                self.end_frame(stream)?;
+                continue;
+            }
+            let item = frame.items[frame.position].clone();
+            frame.position += 1;
+            match item {
+                Item::Directive(directive) => self.run_directive(&directive, stream)?,
+                Item::Expr(Expr::Call(ref call)) if self.is_macro(&call.name) => {
+                    self.enter_macro(call, stream)?
+                }
+                other => return Ok(Some(other)),
+            }
+        }
+    }
+
+    /// Like [`Self::next_item`] but consumes a following comma-free peek: returns the item and
+    /// leaves the stream positioned after it.
+    pub(crate) fn peek_item(&mut self, stream: &mut Stream) -> EvalResult<Option<Item>> {
+        let item = self.next_item(stream)?;
+        if let Some(item) = &item {
+            stream.push_back(item.clone());
+        }
+        Ok(item)
+    }
+
+    /// Skips one comma if it comes next.
+    pub(crate) fn skip_comma(&mut self, stream: &mut Stream) -> EvalResult<()> {
+        match self.next_item(stream)? {
+            Some(Item::Comma(_)) | None => {}
+            Some(other) => stream.push_back(other),
+        }
+        Ok(())
+    }
+
+    fn is_macro(&self, name: &str) -> bool {
+        matches!(self.lookup(name), Some(Value::Macro(_)))
+    }
+
+    /// Pops the top frame, or restarts it when it is a loop whose condition still holds.
+    fn end_frame(&mut self, stream: &mut Stream) -> EvalResult<()> {
+        let Some(frame) = stream.frames.last_mut() else { return Ok(()) };
+        match &mut frame.kind {
+            FrameKind::Plain => {}
+            FrameKind::Macro | FrameKind::Include => {
+                self.scopes.pop();
+                self.trace.pop();
+                self.nesting -= 1;
+            }
+            FrameKind::While { directive, iterations } => {
+                let directive = directive.clone();
+                let DirectiveKind::While { condition, .. } = &directive.kind else { unreachable!() };
+                *iterations += 1;
+                let count = *iterations;
+                if count >= LOOP_ITERATION_LIMIT {
+                    return Err(self.loop_limit(directive.span));
+                }
+                if self.eval_condition(condition)? {
+                    if let Some(frame) = stream.frames.last_mut() {
+                        frame.position = 0;
+                    }
+                    return Ok(());
+                }
+            }
+            FrameKind::For { directive, value, end, step, iterations } => {
+                let directive = directive.clone();
+                let DirectiveKind::For { variable, .. } = &directive.kind else { unreachable!() };
+                *iterations += 1;
+                // POV-Ray reads the loop variable back, so the body may change it.
+                let current = match self.lookup(variable) {
+                    Some(Value::Float(f)) => *f,
+                    _ => *value,
+                };
+                let next = current + *step;
+                let (end, step, count) = (*end, *step, *iterations);
+                if count >= LOOP_ITERATION_LIMIT {
+                    return Err(self.loop_limit(directive.span));
+                }
+                if for_continues(next, end, step) {
+                    if let Some(Frame { kind: FrameKind::For { value, .. }, position, .. }) =
+                        stream.frames.last_mut()
+                    {
+                        *value = next;
+                        *position = 0;
+                    }
+                    self.assign_declare(variable, Value::Float(next));
+                    return Ok(());
+                }
+            }
+            FrameKind::Switch { directive, clause } => {
+                // Fall through: run the next clause whose label holds (or the `#else`).
+                let directive = directive.clone();
+                let start = *clause + 1;
+                stream.frames.pop();
+                return self.run_switch_from(&directive, start, stream);
+            }
+        }
+        stream.frames.pop();
+        Ok(())
+    }
+
+    fn loop_limit(&self, span: Span) -> Box<crate::diag::Diagnostic> {
+        self.error(span, format!("loop ran {LOOP_ITERATION_LIMIT} times without ending"))
+            .with_label("this loop")
+            .with_help("check that the loop condition eventually becomes false")
+            .into()
+    }
+
+    /// `#declare`-style assignment of a plain name.
+    pub(crate) fn assign_declare(&mut self, name: &Rc<str>, value: Value) {
+        let (scope, name) = self.declare_slot(name);
+        self.scopes[scope].insert(name, value);
+    }
+
+    pub(crate) fn eval_condition(&mut self, condition: &Expr) -> EvalResult<bool> {
+        let value = self.eval_float(condition)?;
+        Ok(value != 0.0)
+    }
+
+    /// Runs one directive, possibly pushing frames onto the stream.
+    fn run_directive(&mut self, directive: &Rc<Directive>, stream: &mut Stream) -> EvalResult<()> {
+        let span = directive.span;
+        match &directive.kind {
+            DirectiveKind::Declare { local, target, value } => {
+                let value = self.item_value(value)?;
+                self.assign(*local, target, value)?;
+            }
+            DirectiveKind::Undef(name, _) => {
+                if let Some(scope) = self.scopes.iter_mut().rev().find(|s| s.contains_key(name)) {
+                    scope.remove(name);
+                }
+            }
+            DirectiveKind::If { branches, .. } => {
+                for branch in branches {
+                    let chosen = match &branch.condition {
+                        Some(condition) => self.eval_condition(condition)?,
+                        None => true,
+                    };
+                    if chosen {
+                        stream.push(branch.body.clone(), FrameKind::Plain);
+                        break;
+                    }
+                }
+            }
+            DirectiveKind::IfDefined { negate, target, then, rest } => {
+                let defined = self.is_defined(target)?;
+                if defined != *negate {
+                    stream.push(then.clone(), FrameKind::Plain);
+                } else {
+                    for branch in rest {
+                        let chosen = match &branch.condition {
+                            Some(condition) => self.eval_condition(condition)?,
+                            None => true,
+                        };
+                        if chosen {
+                            stream.push(branch.body.clone(), FrameKind::Plain);
+                            break;
+                        }
+                    }
+                }
+            }
+            DirectiveKind::While { condition, body } => {
+                if self.eval_condition(condition)? {
+                    stream.push(body.clone(), FrameKind::While { directive: directive.clone(), iterations: 0 });
+                }
+            }
+            DirectiveKind::For { variable, start, end, step, body, .. } => {
+                let start = self.eval_float(start)?;
+                let end = self.eval_float(end)?;
+                let step = match step {
+                    Some(step) => self.eval_float(step)?,
+                    None => 1.0,
+                };
+                if step == 0.0 {
+                    return Err(self.error(span, "`#for` step is zero").with_label("this loop would never end").into());
+                }
+                self.assign_declare(variable, Value::Float(start));
+                if for_continues(start, end, step) {
+                    let kind = FrameKind::For { directive: directive.clone(), value: start, end, step, iterations: 0 };
+                    stream.push(body.clone(), kind);
+                }
+            }
+            DirectiveKind::Switch { .. } => self.run_switch_from(directive, 0, stream)?,
+            DirectiveKind::Break => self.run_break(stream),
+            DirectiveKind::Macro(definition) => {
+                self.scopes[0].insert(definition.name.clone(), Value::Macro(definition.clone()));
+            }
+            DirectiveKind::Include(name) => {
+                let name = self.eval_string(name)?;
+                self.include(&name, span, stream)?;
+            }
+            DirectiveKind::Version(version) => {
+                let version = self.eval_float(version)?;
+                self.set_version(version);
+            }
+            DirectiveKind::Default(items) => self.run_default(items.clone())?,
+            DirectiveKind::Message { level, text } => {
+                let text = self.eval_string(text)?;
+                match level {
+                    MessageLevel::Debug => eprint!("{text}"),
+                    MessageLevel::Warning => {
+                        let mut d = crate::diag::Diagnostic::warning(span, text.trim_end().to_string());
+                        d.trace = self.trace.iter().rev().cloned().collect();
+                        self.warnings.push(d);
+                    }
+                    MessageLevel::Error => {
+                        return Err(self.error(span, text.trim_end().to_string()).with_label("`#error` reached").into())
+                    }
+                }
+            }
+            DirectiveKind::FileOpen { .. }
+            | DirectiveKind::FileClose(_)
+            | DirectiveKind::FileRead { .. }
+            | DirectiveKind::FileWrite { .. } => {
+                return Err(self
+                    .error(span, "file input and output directives are not supported yet")
+                    .with_label("not supported yet")
+                    .into())
+            }
+        }
+        Ok(())
+    }
+
+    /// Starts the first clause at or after `start` whose label holds.
+    fn run_switch_from(&mut self, directive: &Rc<Directive>, start: usize, stream: &mut Stream) -> EvalResult<()> {
+        let DirectiveKind::Switch { value, clauses, otherwise } = &directive.kind else { return Ok(()) };
+        let value = self.eval_float(value)?;
+        for (index, clause) in clauses.iter().enumerate().skip(start) {
+            let holds = match &clause.label {
+                SwitchLabel::Case(case) => (self.eval_float(case)? - value).abs() < 1e-10,
+                SwitchLabel::Range(low, high) => {
+                    let low = self.eval_float(low)?;
+                    let high = self.eval_float(high)?;
+                    low <= value && value <= high
+                }
+            };
+            if holds {
+                stream.push(clause.body.clone(), FrameKind::Switch { directive: directive.clone(), clause: index });
+                return Ok(());
+            }
+        }
+        if let Some(otherwise) = otherwise {
+            stream.push(otherwise.clone(), FrameKind::Plain);
+        }
+        Ok(())
+    }
+
+    /// `#break`: leaves the innermost switch, loop or macro.
+    fn run_break(&mut self, stream: &mut Stream) {
+        while let Some(frame) = stream.frames.pop() {
+            match frame.kind {
+                FrameKind::Plain => continue,
+                FrameKind::Include => {
+                    // A break never leaves a file: put it back and stop.
+                    stream.frames.push(frame);
+                    return;
+                }
+                FrameKind::Macro => {
+                    self.scopes.pop();
+                    self.trace.pop();
+                    self.nesting -= 1;
+                    return;
+                }
+                FrameKind::While { .. } | FrameKind::For { .. } | FrameKind::Switch { .. } => return,
+            }
+        }
+    }
+
+    /// Expands a macro call in place: binds the arguments in a new scope and streams the body.
+    pub(crate) fn enter_macro(&mut self, call: &Rc<Call>, stream: &mut Stream) -> EvalResult<()> {
+        let Some(Value::Macro(definition)) = self.lookup(&call.name).cloned() else {
+            return Err(self.undefined(&call.name, call.name_span).into());
+        };
+        let Some(body) = definition.body.clone() else {
+            return Err(self
+                .error(call.span, format!("cannot run macro `{}`", definition.name))
+                .with_label("called here")
+                .with_secondary(definition.header_span, "its body mixes directives and braces in a way durer cannot follow")
+                .into());
+        };
+        let required = definition.parameters.iter().filter(|p| !p.optional).count();
+        if call.arguments.len() < required || call.arguments.len() > definition.parameters.len() {
+            let names: Vec<&str> = definition.parameters.iter().map(|p| &*p.name).collect();
+            return Err(self
+                .error(
+                    call.span,
+                    format!(
+                        "macro `{}` takes {} argument{}, found {}",
+                        definition.name,
+                        definition.parameters.len(),
+                        if definition.parameters.len() == 1 { "" } else { "s" },
+                        call.arguments.len()
+                    ),
+                )
+                .with_label("called here")
+                .with_secondary(definition.header_span, format!("parameters: ({})", names.join(", ")))
+                .into());
+        }
+        // Evaluate arguments in the caller's scope; plain identifiers are passed by reference.
+        let mut scope = Scope::with_capacity(definition.parameters.len());
+        let caller_scope = self.scopes.len() - 1;
+        for (parameter, argument) in definition.parameters.iter().zip(&call.arguments) {
+            let value = match argument {
+                crate::syntax::ast::Argument::Expr(Expr::Ident(name, span)) => {
+                    match self.scopes.iter().rposition(|s| s.contains_key(name)) {
+                        Some(_) => Value::Reference { scope: caller_scope, name: name.clone() },
+                        None if self.is_builtin_name(name) => self.eval_expr(&Expr::Ident(name.clone(), *span))?,
+                        None => Value::Reference { scope: 0, name: name.clone() },
+                    }
+                }
+                crate::syntax::ast::Argument::Expr(expr) => self.eval_expr(expr)?,
+                crate::syntax::ast::Argument::Block(block) => self.eval_block(block)?,
+            };
+            scope.insert(parameter.name.clone(), value);
+        }
+        self.enter_nesting(call.span)?;
+        self.trace.push(TraceEntry { what: format!("macro `{}`", definition.name), span: call.span });
+        self.scopes.push(scope);
+        stream.push(body, FrameKind::Macro);
+        Ok(())
+    }
+
+    /// Evaluates a macro call used as a value: its body must yield exactly one value.
+    pub(crate) fn call_macro_value(&mut self, call: &Rc<Call>) -> EvalResult<Value> {
+        let mut stream = Stream { frames: Vec::new(), pushed_back: None };
+        self.enter_macro(call, &mut stream)?;
+        let depth = self.scopes.len();
+        let mut result: Option<Value> = None;
+        while let Some(item) = self.next_item(&mut stream)? {
+            if matches!(item, Item::Comma(_)) {
+                continue;
+            }
+            let span = item.span();
+            let value = self.item_value(&item)?;
+            if result.is_some() {
+                // Unwind what is left of the macro so scopes stay balanced.
+                while !stream.frames.is_empty() {
+                    self.unwind_frame(&mut stream);
+                }
+                return Err(self.error(span, format!("macro `{}` used as a value produced more than one value", call.name))
+                    .with_label("extra value")
+                    .into());
+            }
+            result = Some(value);
+            let _ = depth;
+        }
+        result.ok_or_else(|| {
+            self.error(call.span, format!("macro `{}` produced no value", call.name))
+                .with_label("used as a value here")
+                .into()
+        })
+    }
+
+    fn unwind_frame(&mut self, stream: &mut Stream) {
+        if let Some(frame) = stream.frames.pop() {
+            if matches!(frame.kind, FrameKind::Macro | FrameKind::Include) {
+                self.scopes.pop();
+                self.trace.pop();
+                self.nesting -= 1;
+            }
+        }
+    }
+
+    /// Whether `#ifdef` finds the target (an identifier or an assigned array element).
+    fn is_defined(&mut self, target: &crate::syntax::ast::Target) -> EvalResult<bool> {
+        let Some(value) = self.lookup(&target.name).cloned() else { return Ok(false) };
+        if target.indices.is_empty() {
+            return Ok(true);
+        }
+        let Value::Array(array) = value else { return Ok(false) };
+        let mut indices = Vec::new();
+        for index in &target.indices {
+            indices.push(self.eval_float(index)?);
+        }
+        Ok(array_offset(&array.sizes, &indices).and_then(|o| array.elements.get(o)).is_some_and(|e| e.is_some()))
+    }
+
+    /// Stores a value for `#declare`/`#local`, including array elements.
+    pub(crate) fn assign(&mut self, local: bool, target: &crate::syntax::ast::Target, value: Value) -> EvalResult<()> {
+        let value = match value {
+            Value::Reference { scope, name } => match self.lookup_from(scope, &name) {
+                Some(v) => v.clone(),
+                None => return Err(self.undefined(&name, target.span).into()),
+            },
+            v => v,
+        };
+        let (scope, name) = if local {
+            (self.scopes.len() - 1, target.name.clone())
+        } else {
+            self.declare_slot(&target.name)
+        };
+        if target.indices.is_empty() {
+            self.scopes[scope].insert(name, value);
+            return Ok(());
+        }
+        let mut indices = Vec::new();
+        for index in &target.indices {
+            indices.push(self.eval_float(index)?);
+        }
+        let (scope, name) = if local && !self.scopes[scope].contains_key(&name) {
+            self.declare_slot(&target.name)
+        } else {
+            (scope, name)
+        };
+        let Some(Value::Array(array)) = self.scopes[scope].get(&name).cloned() else {
+            return Err(self
+                .error(target.span, format!("`{}` is not an array", target.name))
+                .with_label("indexed here")
+                .into());
+        };
+        let Some(offset) = array_offset(&array.sizes, &indices) else {
+            return Err(self
+                .error(target.span, format!("array index {:?} out of range for size {:?}", indices, array.sizes))
+                .with_label("index out of range")
+                .into());
+        };
+        let mut array = array;
+        Rc::make_mut(&mut array).elements[offset] = Some(value);
+        self.scopes[scope].insert(name, Value::Array(array));
+        Ok(())
+    }
+}
+
+/// Row-major offset of an element, or `None` when an index is out of range.
+pub(crate) fn array_offset(sizes: &[usize], indices: &[f64]) -> Option<usize> {
+    if sizes.len() != indices.len() {
+        return None;
+    }
+    let mut offset = 0usize;
+    for (size, index) in sizes.iter().zip(indices) {
+        let i = index.trunc();
+        if i < 0.0 || i >= *size as f64 {
+            return None;
+        }
+        offset = offset * size + i as usize;
+    }
+    Some(offset)
+}
+
+fn for_continues(value: f64, end: f64, step: f64) -> bool {
+    if step > 0.0 {
+        value <= end + 1e-10
+    } else {
+        value >= end - 1e-10
+    }
+}

@@ -1,0 +1,111 @@
+//! Runtime values of the scene language.
+
+use crate::scene::{
+    Camera, Colour, Finish, Interior, LightSource, Object, Pigment, Texture, Transform,
+};
+use crate::syntax::ast::{FunctionLiteral, MacroDefinition};
+use std::rc::Rc;
+use std::sync::Arc;
+
+/// A value produced by evaluating an expression or a block.
+#[derive(Clone, Debug)]
+pub enum Value {
+    /// A float (also booleans: 0 false, anything else true).
+    Float(f64),
+    /// A vector of 2 to 5 components.
+    Vector(Vector),
+    /// A colour (red, green, blue, filter, transmit).
+    Colour(Colour),
+    /// A string.
+    String(Rc<str>),
+    /// An array (copied on write).
+    Array(Rc<Array>),
+    /// An object (shape or CSG).
+    Object(Rc<Object>),
+    /// A texture.
+    Texture(Arc<Texture>),
+    /// A pigment.
+    Pigment(Rc<Pigment>),
+    /// A finish.
+    Finish(Rc<Finish>),
+    /// An interior.
+    Interior(Rc<Interior>),
+    /// A colour map.
+    ColourMap(Rc<Vec<(f64, Colour)>>),
+    /// A transformation.
+    Transform(Transform),
+    /// A camera.
+    Camera(Rc<Camera>),
+    /// A light source.
+    Light(Rc<LightSource>),
+    /// A macro.
+    Macro(Rc<MacroDefinition>),
+    /// A user-defined function.
+    Function(Rc<FunctionLiteral>),
+    /// A parameter passed by reference: the caller's variable `name` in scope `scope`.
+    Reference { scope: usize, name: Rc<str> },
+}
+
+/// A vector with 2 to 5 components.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vector {
+    /// Components; those past `len` are zero.
+    pub components: [f64; 5],
+    /// Number of components in use.
+    pub len: u8,
+}
+
+impl Vector {
+    /// A vector from a slice of 1 to 5 components.
+    pub fn from_slice(values: &[f64]) -> Vector {
+        let mut components = [0.0; 5];
+        for (c, v) in components.iter_mut().zip(values) {
+            *c = *v;
+        }
+        Vector { components, len: values.len().clamp(1, 5) as u8 }
+    }
+
+    /// A 3-vector.
+    pub fn from_dvec3(v: glam::DVec3) -> Vector {
+        Vector::from_slice(&[v.x, v.y, v.z])
+    }
+
+    /// The first three components.
+    pub fn to_dvec3(self) -> glam::DVec3 {
+        glam::DVec3::new(self.components[0], self.components[1], self.components[2])
+    }
+}
+
+/// An array value: dimension sizes and elements in row-major order.
+#[derive(Clone, Debug)]
+pub struct Array {
+    /// Size of each dimension, outermost first.
+    pub sizes: Vec<usize>,
+    /// Elements; `None` until assigned.
+    pub elements: Vec<Option<Value>>,
+}
+
+impl Value {
+    /// The name of the value's type for messages ("a float", "an object"...).
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Value::Float(_) => "a float",
+            Value::Vector(_) => "a vector",
+            Value::Colour(_) => "a colour",
+            Value::String(_) => "a string",
+            Value::Array(_) => "an array",
+            Value::Object(_) => "an object",
+            Value::Texture(_) => "a texture",
+            Value::Pigment(_) => "a pigment",
+            Value::Finish(_) => "a finish",
+            Value::Interior(_) => "an interior",
+            Value::ColourMap(_) => "a colour map",
+            Value::Transform(_) => "a transform",
+            Value::Camera(_) => "a camera",
+            Value::Light(_) => "a light source",
+            Value::Macro(_) => "a macro",
+            Value::Function(_) => "a function",
+            Value::Reference { .. } => "a reference",
+        }
+    }
+}

@@ -1,0 +1,408 @@
+//! Blocks that set up the view: camera, light sources, background and global settings;
+//! and the dispatch of every block keyword to its evaluator.
+
+use super::stream::Stream;
+use super::value::Value;
+use super::{EvalResult, Evaluator};
+use crate::diag::did_you_mean;
+use crate::scene::{Camera, LightSource, Projection, Spotlight, Transform};
+use crate::syntax::ast::{Block, BlockHead, Item};
+use glam::DVec3;
+use std::rc::Rc;
+
+/// Block keywords durer evaluates.
+pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
+    "background", "box", "camera", "color_map", "colour_map", "cone", "cylinder", "difference",
+    "disc", "finish", "global_settings", "interior", "intersection", "light_source", "material",
+    "merge", "normal", "object", "pigment", "plane", "quadric", "sphere", "texture", "torus",
+    "transform", "triangle", "union",
+];
+
+/// Block keywords of POV-Ray that durer does not evaluate yet.
+const UNSUPPORTED_BLOCKS: &[&str] = &[
+    "bicubic_patch", "blob", "fog", "height_field", "isosurface", "julia_fractal", "lathe",
+    "media", "mesh", "mesh2", "parametric", "photons", "poly", "polygon", "prism", "rainbow",
+    "radiosity", "sky_sphere", "smooth_triangle", "sor", "sphere_sweep", "spline",
+    "superellipsoid", "text", "cubic", "quartic", "ovus", "lemon", "density", "pigment_map",
+    "normal_map", "texture_map", "slope_map", "interior_texture",
+];
+
+impl Evaluator {
+    /// Evaluates a block to its value.
+    pub(crate) fn eval_block(&mut self, block: &Block) -> EvalResult<Value> {
+        let head: Rc<str> = match &block.head {
+            BlockHead::Word(word) => word.clone(),
+            BlockHead::Conditional(branches) => {
+                let mut chosen = None;
+                for (condition, word) in branches {
+                    let holds = match condition {
+                        Some(c) => self.eval_condition(c)?,
+                        None => true,
+                    };
+                    if holds {
+                        chosen = Some(word.clone());
+                        break;
+                    }
+                }
+                match chosen {
+                    Some(word) => word,
+                    None => return Err(self.error(block.head_span, "no branch of this `#if` chose a block").into()),
+                }
+            }
+        };
+        self.enter_nesting(block.span)?;
+        let result = self.eval_block_as(&head, block);
+        self.nesting -= 1;
+        result
+    }
+
+    fn eval_block_as(&mut self, head: &str, block: &Block) -> EvalResult<Value> {
+        let mut stream = Stream::new(block.body.clone());
+        let stream = &mut stream;
+        match head {
+            "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
+            | "triangle" | "object" | "union" | "intersection" | "difference" | "merge" => {
+                Ok(Value::Object(Rc::new(self.eval_object(head, block, stream)?)))
+            }
+            "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
+            "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
+            "background" => {
+                let (value, span) = self.expect_value(stream, "a colour")?;
+                let colour = self.to_colour(value, span)?;
+                self.expect_end(stream, "background")?;
+                Ok(Value::Colour(colour))
+            }
+            "global_settings" => {
+                self.eval_global_settings(stream)?;
+                Ok(Value::Float(0.0))
+            }
+            "texture" => Ok(Value::Texture(std::sync::Arc::new(self.eval_texture(stream)?))),
+            "pigment" => Ok(Value::Pigment(Rc::new(self.eval_pigment(stream)?))),
+            "finish" => Ok(Value::Finish(Rc::new(self.eval_finish(stream, None)?))),
+            "interior" => Ok(Value::Interior(Rc::new(self.eval_interior(stream)?))),
+            "color_map" | "colour_map" => Ok(Value::ColourMap(Rc::new(self.eval_colour_map(stream)?))),
+            "transform" => Ok(Value::Transform(self.eval_transform_block(stream)?)),
+            "material" => Ok(Value::Texture(std::sync::Arc::new(self.eval_material(stream)?.0))),
+            "normal" => {
+                self.warn(block.head_span, "`normal` perturbation is not supported yet; it is ignored");
+                Ok(Value::Float(0.0))
+            }
+            _ if UNSUPPORTED_BLOCKS.contains(&head) => Err(self
+                .error(block.head_span, format!("`{head}` is not supported yet"))
+                .with_label("not supported yet")
+                .into()),
+            _ => {
+                let mut d = self.error(block.head_span, format!("unknown block keyword `{head}`")).with_label("not a POV-Ray block");
+                let candidates = BLOCK_KEYWORDS.iter().chain(UNSUPPORTED_BLOCKS).copied();
+                if let Some(s) = did_you_mean(head, candidates) {
+                    d = d.with_help(format!("did you mean `{s}`?"));
+                }
+                Err(d.into())
+            }
+        }
+    }
+
+    /// Reads the next item as a value (skipping one leading comma).
+    pub(crate) fn expect_value(&mut self, stream: &mut Stream, what: &str) -> EvalResult<(Value, crate::diag::Span)> {
+        let mut item = self.next_item(stream)?;
+        if let Some(Item::Comma(_)) = item {
+            item = self.next_item(stream)?;
+        }
+        match item {
+            Some(item @ (Item::Expr(_) | Item::Block(_))) => {
+                let span = item.span();
+                Ok((self.item_value(&item)?, span))
+            }
+            Some(other) => Err(self
+                .error(other.span(), format!("expected {what}, found {}", describe_item(&other)))
+                .with_label(format!("expected {what}"))
+                .into()),
+            None => Err(self.error(self.stream_end_span(), format!("expected {what}, found the end of the block")).into()),
+        }
+    }
+
+    pub(crate) fn expect_float(&mut self, stream: &mut Stream, what: &str) -> EvalResult<f64> {
+        let (value, span) = self.expect_value(stream, what)?;
+        self.to_float(value, span)
+    }
+
+    pub(crate) fn expect_vector(&mut self, stream: &mut Stream, what: &str) -> EvalResult<DVec3> {
+        let (value, span) = self.expect_value(stream, what)?;
+        self.to_vector3(value, span)
+    }
+
+    /// Reads an optional float argument (e.g. `hollow` or `hollow off`).
+    pub(crate) fn optional_bool(&mut self, stream: &mut Stream) -> EvalResult<bool> {
+        match self.next_item(stream)? {
+            Some(Item::Expr(expr)) => {
+                let value = self.eval_expr(&expr)?;
+                match value {
+                    Value::Float(f) => Ok(f != 0.0),
+                    other => {
+                        stream.push_back(Item::Expr(expr));
+                        let _ = other;
+                        Ok(true)
+                    }
+                }
+            }
+            Some(other) => {
+                stream.push_back(other);
+                Ok(true)
+            }
+            None => Ok(true),
+        }
+    }
+
+    fn stream_end_span(&self) -> crate::diag::Span {
+        self.trace.last().map(|t| t.span).unwrap_or_default()
+    }
+
+    /// Errors if anything but commas is left in the block.
+    pub(crate) fn expect_end(&mut self, stream: &mut Stream, block: &str) -> EvalResult<()> {
+        while let Some(item) = self.next_item(stream)? {
+            if !matches!(item, Item::Comma(_)) {
+                return Err(self.unexpected_in(&item, block));
+            }
+        }
+        Ok(())
+    }
+
+    /// "`x` is not allowed inside `block`" with a did-you-mean for misspelt keywords.
+    pub(crate) fn unexpected_in(&self, item: &Item, block: &str) -> Box<crate::diag::Diagnostic> {
+        let mut d = self
+            .error(item.span(), format!("{} is not allowed inside `{block}`", describe_item(item)))
+            .with_label("unexpected here");
+        if let Item::Expr(crate::syntax::ast::Expr::Ident(name, _)) = item {
+            if self.lookup(name).is_none() {
+                d.message = format!("unknown keyword or identifier `{name}` inside `{block}`");
+                if let Some(s) = did_you_mean(name, crate::syntax::keywords::ALL.iter().copied()) {
+                    d = d.with_help(format!("did you mean `{s}`?"));
+                }
+            }
+        }
+        d.into()
+    }
+
+    fn eval_camera(&mut self, stream: &mut Stream) -> EvalResult<Camera> {
+        let mut camera = Camera::default();
+        let mut sky = DVec3::Y;
+        let mut look_at: Option<DVec3> = None;
+        let mut angle: Option<f64> = None;
+        let mut transforms: Vec<Transform> = Vec::new();
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, span) => match &**word {
+                    "perspective" => camera.projection = Projection::Perspective,
+                    "orthographic" => camera.projection = Projection::Orthographic,
+                    "location" => camera.location = self.expect_vector(stream, "a vector")?,
+                    "direction" => camera.direction = self.expect_vector(stream, "a vector")?,
+                    "right" => camera.right = self.expect_vector(stream, "a vector")?,
+                    "up" => camera.up = self.expect_vector(stream, "a vector")?,
+                    "sky" => sky = self.expect_vector(stream, "a vector")?,
+                    "look_at" => look_at = Some(self.expect_vector(stream, "a vector")?),
+                    "angle" => {
+                        // `angle` may stand alone for orthographic cameras.
+                        match self.peek_item(stream)? {
+                            Some(Item::Expr(_)) => angle = Some(self.expect_float(stream, "an angle")?),
+                            _ => angle = Some(f64::NAN),
+                        }
+                    }
+                    "translate" | "rotate" | "scale" | "matrix" | "transform" => {
+                        transforms.push(self.transform_keyword(word, *span, stream)?)
+                    }
+                    "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "cylinder" | "spherical"
+                    | "mesh_camera" => {
+                        return Err(self.error(*span, format!("`{word}` cameras are not supported yet")).into())
+                    }
+                    "focal_point" | "aperture" | "blur_samples" | "confidence" | "variance" => {
+                        self.warn(*span, format!("camera `{word}` (focal blur) is not supported yet; it is ignored"));
+                        let _ = self.expect_value(stream, "a value")?;
+                    }
+                    _ => return Err(self.unexpected_in(&item, "camera")),
+                },
+                Item::Block(block) => match self.eval_block(block)? {
+                    Value::Transform(t) => transforms.push(t),
+                    Value::Camera(c) => camera = Rc::unwrap_or_clone(c),
+                    _ if matches!(&block.head, BlockHead::Word(w) if &**w == "normal") => {}
+                    _ => return Err(self.unexpected_in(&item, "camera")),
+                },
+                Item::Expr(expr) => match self.eval_expr(expr)? {
+                    Value::Camera(c) => camera = Rc::unwrap_or_clone(c),
+                    _ => return Err(self.unexpected_in(&item, "camera")),
+                },
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "camera")),
+            }
+        }
+        // Angle sets the direction's length so the horizontal field of view is `angle`.
+        if let Some(angle) = angle.filter(|a| a.is_finite()) {
+            if camera.projection == Projection::Perspective && angle > 0.0 && angle < 180.0 {
+                let length = 0.5 * camera.right.length() / (angle.to_radians() / 2.0).tan();
+                camera.direction = camera.direction.normalize_or(DVec3::Z) * length;
+            }
+        }
+        if let Some(target) = look_at {
+            let handedness = camera.up.cross(camera.direction).dot(camera.right);
+            let direction_length = camera.direction.length();
+            let right_length = camera.right.length();
+            let up_length = camera.up.length();
+            let direction = (target - camera.location).normalize_or(DVec3::Z);
+            let mut right = sky.cross(direction).normalize_or(DVec3::X);
+            let up = direction.cross(right).normalize_or(DVec3::Y);
+            if handedness < 0.0 {
+                right = -right;
+            }
+            camera.direction = direction * direction_length;
+            camera.right = right * right_length;
+            camera.up = up * up_length;
+        }
+        if camera.projection == Projection::Orthographic {
+            if let (Some(angle), Some(target)) = (angle, look_at) {
+                // Same view as a perspective camera at the look_at distance.
+                let angle = if angle.is_finite() { angle } else { 2.0 * (0.5 * camera.right.length() / camera.direction.length()).atan().to_degrees() };
+                let distance = (target - camera.location).length();
+                let width = 2.0 * distance * (angle.to_radians() / 2.0).tan();
+                let aspect = camera.up.length() / camera.right.length();
+                camera.right = camera.right.normalize_or(DVec3::X) * width;
+                camera.up = camera.up.normalize_or(DVec3::Y) * width * aspect;
+            }
+        }
+        for t in &transforms {
+            camera.location = t.point_to_outer(camera.location);
+            camera.direction = t.vector_to_outer(camera.direction);
+            camera.right = t.vector_to_outer(camera.right);
+            camera.up = t.vector_to_outer(camera.up);
+        }
+        Ok(camera)
+    }
+
+    fn eval_light(&mut self, stream: &mut Stream) -> EvalResult<LightSource> {
+        let mut light = match self.peek_item(stream)? {
+            Some(Item::Expr(_)) => {
+                let (value, span) = self.expect_value(stream, "a position")?;
+                match value {
+                    Value::Light(l) => Rc::unwrap_or_clone(l),
+                    other => {
+                        let position = self.to_vector3(other, span)?;
+                        let (value, span) = self.expect_value(stream, "a colour")?;
+                        let colour = self.to_colour(value, span)?;
+                        LightSource {
+                            position,
+                            colour: colour.rgb_vec(),
+                            shadowless: false,
+                            spotlight: None,
+                            fade_distance: 0.0,
+                            fade_power: 0.0,
+                        }
+                    }
+                }
+            }
+            _ => return Err(self.error(self.stream_end_span(), "expected the light's position").into()),
+        };
+        let mut spot = Spotlight { point_at: DVec3::Z, radius: 30.0, falloff: 45.0, tightness: 0.0 };
+        let mut is_spot = light.spotlight.is_some();
+        if let Some(s) = light.spotlight {
+            spot = s;
+        }
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, span) => match &**word {
+                    "spotlight" => is_spot = true,
+                    "point_at" => spot.point_at = self.expect_vector(stream, "a vector")?,
+                    "radius" => spot.radius = self.expect_float(stream, "an angle")?,
+                    "falloff" => spot.falloff = self.expect_float(stream, "an angle")?,
+                    "tightness" => spot.tightness = self.expect_float(stream, "a float")?,
+                    "shadowless" => light.shadowless = true,
+                    "fade_distance" => light.fade_distance = self.expect_float(stream, "a float")?,
+                    "fade_power" => light.fade_power = self.expect_float(stream, "a float")?,
+                    "color" | "colour" => {
+                        let (value, span) = self.expect_value(stream, "a colour")?;
+                        light.colour = self.to_colour(value, span)?.rgb_vec();
+                    }
+                    "translate" | "rotate" | "scale" | "matrix" | "transform" => {
+                        let t = self.transform_keyword(word, *span, stream)?;
+                        light.position = t.point_to_outer(light.position);
+                        spot.point_at = t.point_to_outer(spot.point_at);
+                    }
+                    "media_interaction" | "media_attenuation" => {
+                        let _ = self.optional_bool(stream)?;
+                    }
+                    "area_light" | "parallel" | "cylinder" | "looks_like" | "projected_through"
+                    | "jitter" | "adaptive" | "circular" | "orient" | "area_illumination" => {
+                        return Err(self
+                            .error(*span, format!("light source `{word}` is not supported yet"))
+                            .with_label("not supported yet")
+                            .into())
+                    }
+                    _ => return Err(self.unexpected_in(&item, "light_source")),
+                },
+                Item::Block(block) => match self.eval_block(block)? {
+                    Value::Transform(t) => {
+                        light.position = t.point_to_outer(light.position);
+                        spot.point_at = t.point_to_outer(spot.point_at);
+                    }
+                    _ => return Err(self.unexpected_in(&item, "light_source")),
+                },
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "light_source")),
+            }
+        }
+        light.spotlight = is_spot.then_some(spot);
+        Ok(light)
+    }
+
+    fn eval_global_settings(&mut self, stream: &mut Stream) -> EvalResult<()> {
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, span) => match &**word {
+                    "assumed_gamma" => self.settings.assumed_gamma = Some(self.expect_float(stream, "a float")?),
+                    "max_trace_level" => {
+                        let level = self.expect_float(stream, "a float")?;
+                        self.settings.max_trace_level = level.clamp(1.0, 256.0) as u32;
+                    }
+                    "adc_bailout" => self.settings.adc_bailout = self.expect_float(stream, "a float")?,
+                    "ambient_light" => {
+                        let (value, span) = self.expect_value(stream, "a colour")?;
+                        self.settings.ambient_light = self.to_colour(value, span)?.rgb_vec();
+                    }
+                    "charset" | "max_intersections" | "number_of_waves" | "noise_generator"
+                    | "hf_gray_16" | "irid_wavelength" | "mm_per_unit" | "subsurface" => {
+                        self.warn(*span, format!("global setting `{word}` is not supported yet; it is ignored"));
+                        let _ = self.next_item(stream)?;
+                    }
+                    _ => return Err(self.unexpected_in(&item, "global_settings")),
+                },
+                Item::Block(block) => {
+                    let name = match &block.head {
+                        BlockHead::Word(w) => w.to_string(),
+                        _ => String::new(),
+                    };
+                    if matches!(name.as_str(), "radiosity" | "photons") {
+                        self.warn(block.head_span, format!("`{name}` is not supported yet; it is ignored"));
+                    } else {
+                        return Err(self.unexpected_in(&item, "global_settings"));
+                    }
+                }
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "global_settings")),
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A short description of an item for messages.
+pub(crate) fn describe_item(item: &Item) -> String {
+    match item {
+        Item::Keyword(word, _) => format!("`{word}`"),
+        Item::Block(block) => match &block.head {
+            BlockHead::Word(w) => format!("`{w} {{ .. }}`"),
+            BlockHead::Conditional(_) => "a block".to_string(),
+        },
+        Item::Expr(crate::syntax::ast::Expr::Ident(name, _)) => format!("`{name}`"),
+        Item::Expr(_) => "a value".to_string(),
+        Item::Comma(_) => "`,`".to_string(),
+        Item::MapEntry(..) => "a map entry `[ .. ]`".to_string(),
+        Item::Directive(_) => "a directive".to_string(),
+    }
+}
