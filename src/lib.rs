@@ -8,5 +8,6 @@ pub mod diag;
 pub mod eval;
 pub mod geometry;
 pub mod render;
+pub mod report;
 pub mod scene;
 pub mod syntax;

@@ -249,6 +249,13 @@ impl Evaluator {
             };
             return Ok(Value::Float(f64::from(result)));
         }
+        let numeric = |v: &Value| matches!(v, Value::Float(_) | Value::Vector(_) | Value::Colour(_));
+        if !numeric(&a) || !numeric(&b) {
+            return Err(self
+                .error(span, format!("operator `{}` cannot combine {} and {}", op.symbol(), a.type_name(), b.type_name()))
+                .with_label(format!("{} met {}", a.type_name(), b.type_name()))
+                .into());
+        }
         let apply = |x: f64, y: f64| match op {
             Add => x + y,
             Subtract => x - y,

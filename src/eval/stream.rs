@@ -154,11 +154,20 @@ impl Evaluator {
                 }
             }
             FrameKind::Switch { directive, clause } => {
-                // Fall through: run the next clause whose label holds (or the `#else`).
+                // Without `#break`, POV-Ray falls through into the following clauses' bodies
+                // (their labels are not tested) and then the `#else`.
                 let directive = directive.clone();
-                let start = *clause + 1;
+                let next = *clause + 1;
                 stream.frames.pop();
-                return self.run_switch_from(&directive, start, stream);
+                if let DirectiveKind::Switch { clauses, otherwise, .. } = &directive.kind {
+                    if let Some(clause) = clauses.get(next) {
+                        let kind = FrameKind::Switch { directive: directive.clone(), clause: next };
+                        stream.push(clause.body.clone(), kind);
+                    } else if let Some(otherwise) = otherwise {
+                        stream.push(otherwise.clone(), FrameKind::Plain);
+                    }
+                }
+                return Ok(());
             }
         }
         stream.frames.pop();
@@ -246,7 +255,7 @@ impl Evaluator {
                     stream.push(body.clone(), kind);
                 }
             }
-            DirectiveKind::Switch { .. } => self.run_switch_from(directive, 0, stream)?,
+            DirectiveKind::Switch { .. } => self.run_switch(directive, stream)?,
             DirectiveKind::Break => self.run_break(stream),
             DirectiveKind::Macro(definition) => {
                 self.scopes[0].insert(definition.name.clone(), Value::Macro(definition.clone()));
@@ -287,11 +296,11 @@ impl Evaluator {
         Ok(())
     }
 
-    /// Starts the first clause at or after `start` whose label holds.
-    fn run_switch_from(&mut self, directive: &Rc<Directive>, start: usize, stream: &mut Stream) -> EvalResult<()> {
+    /// Starts the first clause whose label holds, or the `#else`.
+    fn run_switch(&mut self, directive: &Rc<Directive>, stream: &mut Stream) -> EvalResult<()> {
         let DirectiveKind::Switch { value, clauses, otherwise } = &directive.kind else { return Ok(()) };
         let value = self.eval_float(value)?;
-        for (index, clause) in clauses.iter().enumerate().skip(start) {
+        for (index, clause) in clauses.iter().enumerate() {
             let holds = match &clause.label {
                 SwitchLabel::Case(case) => (self.eval_float(case)? - value).abs() < 1e-10,
                 SwitchLabel::Range(low, high) => {

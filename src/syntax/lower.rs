@@ -3,7 +3,7 @@
 use super::ast::*;
 use super::grammar::Rule;
 use crate::diag::{FileId, Span};
-use pest::iterators::{Pair, Pairs};
+use pest::iterators::Pair;
 use pest::pratt_parser::{Assoc, Op, PrattParser};
 use std::rc::Rc;
 use std::sync::OnceLock;
@@ -43,17 +43,16 @@ impl Lowerer {
         let span = self.span(&pair);
         Some(match pair.as_rule() {
             Rule::block => Item::Block(Rc::new(self.block(pair))),
-            Rule::map_entry => Item::MapEntry(self.items_of(pair.into_inner()), span),
+            Rule::map_entry => {
+                let inner = pair.into_inner().next();
+                Item::MapEntry(inner.map(|p| self.items(p)).unwrap_or_else(|| Rc::from(Vec::new())), span)
+            }
             Rule::comma => Item::Comma(span),
             Rule::keyword => Item::Keyword(Rc::from(pair.as_str()), span),
             Rule::expr => Item::Expr(self.expr(pair)),
             Rule::EOI => return None,
             _ => Item::Directive(Rc::new(self.directive(pair))),
         })
-    }
-
-    fn items_of(&self, pairs: Pairs<Rule>) -> Rc<[Item]> {
-        pairs.filter_map(|p| self.item(p)).collect()
     }
 
     fn block(&self, pair: Pair<Rule>) -> Block {
@@ -325,13 +324,13 @@ impl Lowerer {
         for p in pairs {
             match p.as_rule() {
                 Rule::elseif_branch => {
-                    let mut inner = p.into_inner();
+                    let mut inner = p.into_inner().filter(|p| !is_directive_word(p.as_rule()));
                     let condition = self.expr(inner.next().expect("elseif condition"));
                     let body = self.items(inner.next().expect("elseif body"));
                     branches.push(Branch { condition: Some(condition), body });
                 }
                 Rule::else_branch => {
-                    let body = self.items(p.into_inner().next().expect("else body"));
+                    let body = self.items(significant(p).next().expect("else body"));
                     branches.push(Branch { condition: None, body });
                 }
                 Rule::end => end_span = self.span(&p),
@@ -428,7 +427,7 @@ impl Lowerer {
                             clauses.push(SwitchClause { label, body });
                         }
                         Rule::else_branch => {
-                            otherwise = Some(self.items(p.into_inner().next().expect("else body")))
+                            otherwise = Some(self.items(significant(p).next().expect("else body")))
                         }
                         _ => {}
                     }
@@ -474,8 +473,7 @@ impl Lowerer {
                 let handle = Rc::from(inner.next().expect("handle").as_str());
                 DirectiveKind::FileRead { handle, targets: inner.map(|p| self.target(p)).collect() }
             }
-            _ => {
-                // write
+            Rule::write => {
                 let handle = Rc::from(inner.next().expect("handle").as_str());
                 let values = inner
                     .filter(|p| p.as_rule() == Rule::full_expr)
@@ -483,9 +481,15 @@ impl Lowerer {
                     .collect();
                 DirectiveKind::FileWrite { handle, values }
             }
+            other => unreachable!("grammar rule {other:?} is not a directive"),
         };
         Directive { kind, span }
     }
+}
+
+/// The inner pairs of `pair` without its directive words.
+fn significant(pair: Pair<Rule>) -> impl Iterator<Item = Pair<Rule>> {
+    pair.into_inner().filter(|p| !is_directive_word(p.as_rule()))
 }
 
 /// Directive words (`kw_*` rules) only mark where a directive starts.

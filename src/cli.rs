@@ -1,0 +1,192 @@
+//! Command-line interface: `durer render` and `durer check`.
+//!
+//! Exit codes: 0 success, 1 scene error, 2 usage error (clap's own code for bad flags).
+
+use clap::{Args, Parser, Subcommand};
+use durer::diag::Severity;
+use durer::eval::{evaluate_file, EvalOptions, Evaluated};
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Stack size of the thread that evaluates scenes: deep macro recursion needs room.
+const EVALUATION_STACK_BYTES: usize = 1 << 30;
+
+#[derive(Parser)]
+#[command(name = "durer", version, about = "Render POV-Ray 3.7 scenes with a recursive ray tracer")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a scene to a PNG image.
+    Render(RenderArgs),
+    /// Parse and evaluate a scene without rendering; print diagnostics and a summary.
+    Check(SceneArgs),
+}
+
+#[derive(Args)]
+struct SceneArgs {
+    /// The scene file (.pov).
+    scene: PathBuf,
+    /// Add a folder to the #include search path (repeatable).
+    #[arg(short = 'L', long = "library", value_name = "DIR")]
+    include_paths: Vec<PathBuf>,
+    /// Image width seen by the scene as `image_width`.
+    #[arg(long, default_value_t = 320)]
+    width: u32,
+    /// Image height seen by the scene as `image_height`.
+    #[arg(long, default_value_t = 240)]
+    height: u32,
+}
+
+#[derive(Args)]
+struct RenderArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Output PNG (default: the scene's path with `.png`).
+    #[arg(short, long, value_name = "FILE")]
+    output: Option<PathBuf>,
+    /// Number of render threads (default: all cores).
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Print nothing but errors.
+    #[arg(short, long)]
+    quiet: bool,
+}
+
+/// Runs the command line and returns the process exit code.
+pub fn run() -> i32 {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(error) => {
+            let _ = error.print();
+            return if error.use_stderr() { 2 } else { 0 };
+        }
+    };
+    match cli.command {
+        Command::Render(args) => render(args),
+        Command::Check(args) => check(args),
+    }
+}
+
+fn eval_options(args: &SceneArgs) -> EvalOptions {
+    EvalOptions {
+        include_paths: args.include_paths.clone(),
+        image_width: args.width,
+        image_height: args.height,
+        clock: 0.0,
+    }
+}
+
+/// Evaluates on a thread with a large stack, so deep recursion cannot overflow.
+fn evaluate(path: &Path, options: EvalOptions) -> Evaluated {
+    let path = path.to_path_buf();
+    let worker = std::thread::Builder::new()
+        .stack_size(EVALUATION_STACK_BYTES)
+        .spawn(move || evaluate_file(&path, &options));
+    match worker.map(|handle| handle.join()) {
+        Ok(Ok(evaluated)) => evaluated,
+        _ => {
+            eprintln!("durer: internal error while evaluating the scene");
+            std::process::exit(1);
+        }
+    }
+}
+
+fn print_diagnostics(evaluated: &Evaluated, quiet: bool) -> bool {
+    let mut failed = false;
+    let colour = std::io::stderr().is_terminal();
+    for diagnostic in &evaluated.diagnostics {
+        if diagnostic.severity == Severity::Error {
+            failed = true;
+        } else if quiet {
+            continue;
+        }
+        let report = durer::report::to_report(diagnostic, &evaluated.sources);
+        if colour {
+            eprintln!("{:?}", miette::Report::new(report));
+        } else {
+            eprint!("{}", durer::report::render_plain(diagnostic, &evaluated.sources));
+        }
+    }
+    failed
+}
+
+fn check(args: SceneArgs) -> i32 {
+    let start = Instant::now();
+    let evaluated = evaluate(&args.scene, eval_options(&args));
+    let failed = print_diagnostics(&evaluated, false);
+    let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else { return 1 };
+    let world = durer::geometry::World::build(scene);
+    println!(
+        "{}: ok, {} objects ({} primitives), {} lights, {:.3} s",
+        args.scene.display(),
+        scene.objects.len(),
+        world.object_count(),
+        scene.lights.len(),
+        start.elapsed().as_secs_f64()
+    );
+    0
+}
+
+fn render(args: RenderArgs) -> i32 {
+    let start = Instant::now();
+    let evaluated = evaluate(&args.scene.scene, eval_options(&args.scene));
+    let failed = print_diagnostics(&evaluated, args.quiet);
+    let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else { return 1 };
+    let parse_time = start.elapsed();
+
+    let mut pool = rayon::ThreadPoolBuilder::new();
+    if let Some(threads) = args.threads {
+        pool = pool.num_threads(threads.max(1));
+    }
+    let pool = match pool.build() {
+        Ok(pool) => pool,
+        Err(error) => {
+            eprintln!("durer: cannot start render threads: {error}");
+            return 1;
+        }
+    };
+    let render_start = Instant::now();
+    let options = durer::render::RenderOptions { width: args.scene.width.max(1), height: args.scene.height.max(1) };
+    let show_progress = !args.quiet && std::io::stderr().is_terminal();
+    let bar = show_progress.then(|| {
+        let bar = indicatif::ProgressBar::new(u64::from(options.height));
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} rendering [{bar:40}] {pos}/{len} rows {eta}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let image = pool.install(|| {
+        let world = durer::geometry::World::build(scene);
+        durer::render::render(scene, &world, &options, &|rows| {
+            if let Some(bar) = &bar {
+                bar.inc(u64::from(rows));
+            }
+        })
+    });
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    let output = args.output.unwrap_or_else(|| args.scene.scene.with_extension("png"));
+    if let Err(error) = durer::render::write_png_atomic(&output, &image) {
+        eprintln!("durer: cannot write {}: {error}", output.display());
+        return 1;
+    }
+    if !args.quiet {
+        eprintln!(
+            "{}: {}x{} in {:.3} s (parse {:.3} s, render {:.3} s)",
+            output.display(),
+            options.width,
+            options.height,
+            start.elapsed().as_secs_f64(),
+            parse_time.as_secs_f64(),
+            render_start.elapsed().as_secs_f64()
+        );
+    }
+    0
+}

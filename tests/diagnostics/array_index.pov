@@ -1,0 +1,2 @@
+#declare A = array[3];
+#declare B = A[5];

@@ -1,0 +1,2 @@
+#macro Add(A, B) A + B #end
+#declare X = Add(1);

@@ -1,0 +1,3 @@
+sphere { 0, 1
+  pigmnet { rgb 1 }
+}

@@ -1,0 +1,4 @@
+#macro Deep(N)
+  Deep(N + 1)
+#end
+#declare X = Deep(0);

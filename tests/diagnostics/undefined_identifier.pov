@@ -1,0 +1,2 @@
+#declare Radius = 1;
+sphere { 0, Raduis }

@@ -1,0 +1,2 @@
+#while (1)
+  #declare A = 1;

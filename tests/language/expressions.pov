@@ -1,0 +1,38 @@
+// Arithmetic, precedence, promotion and member access, as POV-Ray 3.7 evaluates them.
+#macro Check(Condition, Message)
+  #if (!(Condition)) #error concat("failed: ", Message) #end
+#end
+#declare Eps = 1e-9;
+Check(2*3-4/2+1 = 5, "precedence of * / over + -")
+Check(-2*-3 = 6, "unary minus binds tighter than *")
+Check(2 - -3*2 = 8, "unary minus inside a product")
+Check(!0 + 1 = 2, "logical not binds tighter than +")
+Check(-<1,2,3>.x = -1, "member access binds tighter than unary minus")
+Check((1 + 2 > 2 ? 5 : 6) = 5, "conditional inside parentheses")
+Check((1 = 1 & 0 | 1) = 1, "& and | left to right after relations")
+#declare V = <1,2,3>*2 + 1;
+Check(V.x = 3 & V.y = 5 & V.z = 7, "float promotes to vector")
+Check(vlength(<3,4,0>) = 5, "vlength")
+Check(vdot(x, y) = 0, "vdot")
+#declare C = vcross(x, y);
+Check(C.z = 1, "vcross x y = z (left-handed)")
+Check(abs(sin(pi/2) - 1) < Eps, "sin and pi")
+Check(mod(7, 3) = 1 & div(7, 2) = 3 & int(-2.5) = -2 & floor(-2.5) = -3, "integer functions")
+Check(min(3, 1, 2) = 1 & max(3, 1, 2) = 3, "min and max take several arguments")
+Check(abs(degrees(radians(90)) - 90) < Eps, "degrees and radians")
+Check(abs(pow(2, 10) - 1024) < Eps & abs(sqrt(16) - 4) < Eps, "pow and sqrt")
+Check(abs(atan2(1, 1) - pi/4) < Eps, "atan2")
+#declare R = vrotate(x, <0, 90, 0>);
+Check(abs(R.z + 1) < Eps, "rotate x by 90 about y gives -z")
+#declare Col = rgb <0.1, 0.2, 0.3>;
+Check(abs(Col.green - 0.2) < Eps & Col.filter = 0, "rgb colour components")
+#declare Col2 = color red 1 green 0.5 filter 0.25;
+Check(Col2.red = 1 & Col2.green = 0.5 & Col2.blue = 0 & Col2.filter = 0.25, "colour component keywords")
+#declare Col3 = rgbft <1, 1, 1, 0.5, 0.25> * 0.5;
+Check(Col3.transmit = 0.125, "colour times float scales all five components")
+Check(true & yes & on & !false & !no & !off, "boolean constants")
+Check(t.t = 1 & u.u = 1 & v.v = 1, "t u v constants")
+#declare W = < -1 0 2 >;
+Check(W.x = -1 & W.z = 2, "vector without commas")
+Check(select(-1, 1, 2) = 1 & select(1, 1, 2) = 2 & select(0, 1, 2, 3) = 2, "select")
+Check(bitwise_and(6, 3) = 2 & bitwise_or(4, 1) = 5 & bitwise_xor(3, 1) = 2, "bitwise functions")
