@@ -1,1 +1,75 @@
 //! Render-time geometry: shapes prepared for ray intersection, CSG, and the World of objects.
+//!
+//! In: a [`Scene`](crate::scene::Scene)'s object tree. Out: a [`World`] answering "what does
+//! this ray hit first" with a world-space [`SurfaceHit`] (distance, point, outward unit normal,
+//! material index), plus the table of [`Material`]s the hits refer to.
+//! Holds: the world is immutable after [`World::build`] and can be shared between threads;
+//! normals are the surface's outward normals (flipped for inverted objects and subtracted
+//! surfaces) and are never turned towards the ray; pattern transforms inside materials map
+//! pattern space to world space.
+
+mod build;
+mod csg;
+mod flat;
+mod leaf;
+mod quadric;
+mod roots;
+mod round;
+mod torus;
+mod world;
+
+#[cfg(test)]
+mod tests;
+
+pub use world::World;
+
+use crate::scene::{Interior, Texture};
+use glam::DVec3;
+use std::sync::Arc;
+
+/// A ray: a start point and a (unit length) direction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ray {
+    /// Where the ray starts.
+    pub origin: DVec3,
+    /// Which way it goes; unit length, so distances along it are world units.
+    pub direction: DVec3,
+}
+
+impl Ray {
+    /// A ray from `origin` along `direction` (the caller normalises `direction`).
+    pub fn new(origin: DVec3, direction: DVec3) -> Ray {
+        Ray { origin, direction }
+    }
+
+    /// The point at ray parameter `distance`.
+    #[inline]
+    pub fn at(&self, distance: f64) -> DVec3 {
+        self.origin + self.direction * distance
+    }
+}
+
+/// Where a ray meets a surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceHit {
+    /// Distance along the ray (world units, since the direction is unit length).
+    pub distance: f64,
+    /// The hit point in world space.
+    pub point: DVec3,
+    /// The surface's outward unit normal in world space: for an inverted object or a surface
+    /// of a subtracted child it points out of the resulting solid. Not turned towards the ray.
+    pub normal: DVec3,
+    /// Index into [`World::materials`].
+    pub material: u32,
+}
+
+/// The appearance and interior shared by the leaves that inherit them from one object.
+#[derive(Clone, Debug)]
+pub struct Material {
+    /// The texture, with every pattern transform mapping pattern space to world space.
+    pub texture: Arc<Texture>,
+    /// What is inside the object.
+    pub interior: Interior,
+    /// The object casts no shadow.
+    pub no_shadow: bool,
+}

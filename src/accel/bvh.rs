@@ -1,0 +1,379 @@
+//! A bounding volume hierarchy built with the binned surface area heuristic.
+//!
+//! In: one finite, non-empty [`Aabb`] per primitive. Out: a [`Bvh`] (flat node array with
+//! index links) plus the order in which the caller must store its primitives, and a
+//! nearest-hit traversal calling back into the caller's primitive test.
+//! Holds: every primitive appears in exactly one leaf; a leaf covers the contiguous range
+//! `first .. first + count` of the reordered primitives; an interior node's left child directly
+//! follows it in the array; the tree is at most [`MAX_DEPTH`] levels deep.
+
+use super::aabb::Aabb;
+use glam::DVec3;
+
+/// The deepest level the builder creates; deeper ranges become (large) leaves.
+pub const MAX_DEPTH: usize = 100;
+
+/// Room on the traversal stack; larger than [`MAX_DEPTH`] so it can never overflow.
+const STACK_SIZE: usize = MAX_DEPTH + 8;
+
+/// Number of centroid bins the builder evaluates per split.
+const BIN_COUNT: usize = 16;
+
+/// Ranges this small always become leaves.
+const SMALL_LEAF: usize = 2;
+
+/// Ranges larger than this are always split (when their centroids allow it).
+const LARGE_LEAF: usize = 8;
+
+/// Cost of visiting a node relative to testing one primitive.
+const TRAVERSAL_COST: f64 = 1.0;
+
+/// One node of the hierarchy.
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    /// Bounds of everything below the node.
+    bounds: Aabb,
+    /// A leaf's first primitive, or an interior node's right child.
+    first: u32,
+    /// A leaf's number of primitives; zero for an interior node.
+    count: u32,
+}
+
+/// A bounding volume hierarchy over primitives known only by their bounds.
+#[derive(Clone, Debug, Default)]
+pub struct Bvh {
+    nodes: Vec<Node>,
+}
+
+impl Bvh {
+    /// Builds the hierarchy over `bounds` (one box per primitive).
+    ///
+    /// Returns the tree and the primitive order: the caller must store primitive `order[i]`
+    /// at position `i`, since the traversal reports positions in that order.
+    pub fn build(bounds: &[Aabb]) -> (Bvh, Vec<u32>) {
+        let mut builder = Builder {
+            bounds,
+            centroids: bounds.iter().map(Aabb::centre).collect(),
+            order: (0..bounds.len() as u32).collect(),
+            nodes: Vec::with_capacity(bounds.len().max(1) * 2),
+        };
+        if !bounds.is_empty() {
+            builder.build_node(0, bounds.len(), 0);
+        }
+        (
+            Bvh {
+                nodes: builder.nodes,
+            },
+            builder.order,
+        )
+    }
+
+    /// Number of nodes (interior and leaf) in the tree.
+    pub fn node_count(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Bounds of the whole tree, or `None` when it holds nothing.
+    pub fn bounds(&self) -> Option<Aabb> {
+        self.nodes.first().map(|node| node.bounds)
+    }
+
+    /// Finds the nearest hit of a ray among the primitives.
+    ///
+    /// `test(position, closest)` must return the primitive's nearest hit with a distance in
+    /// `(min_distance, closest)`, plus any payload. Nodes are visited near to far and skipped
+    /// once they lie beyond the closest hit so far.
+    #[inline]
+    pub fn nearest_hit<Payload>(
+        &self,
+        origin: DVec3,
+        inverse_direction: DVec3,
+        min_distance: f64,
+        max_distance: f64,
+        mut test: impl FnMut(usize, f64) -> Option<(f64, Payload)>,
+    ) -> Option<(f64, Payload)> {
+        let root = self.nodes.first()?;
+        let mut closest = max_distance;
+        let mut best = None;
+        root.bounds
+            .ray_entry(origin, inverse_direction, min_distance, closest)?;
+        let mut stack = [(0u32, 0.0f64); STACK_SIZE];
+        let mut stack_len = 0;
+        let mut current = 0usize;
+        loop {
+            let node = &self.nodes[current];
+            let mut next = None;
+            if node.count > 0 {
+                let first = node.first as usize;
+                for position in first..first + node.count as usize {
+                    if let Some((distance, payload)) = test(position, closest) {
+                        if distance < closest && distance > min_distance {
+                            closest = distance;
+                            best = Some((distance, payload));
+                        }
+                    }
+                }
+            } else {
+                let left = current + 1;
+                let right = node.first as usize;
+                let entry = |index: usize| {
+                    self.nodes[index].bounds.ray_entry(
+                        origin,
+                        inverse_direction,
+                        min_distance,
+                        closest,
+                    )
+                };
+                match (entry(left), entry(right)) {
+                    (Some(left_entry), Some(right_entry)) => {
+                        let (near, far, far_entry) = if left_entry <= right_entry {
+                            (left, right, right_entry)
+                        } else {
+                            (right, left, left_entry)
+                        };
+                        if stack_len < STACK_SIZE {
+                            stack[stack_len] = (far as u32, far_entry);
+                            stack_len += 1;
+                        }
+                        next = Some(near);
+                    }
+                    (Some(_), None) => next = Some(left),
+                    (None, Some(_)) => next = Some(right),
+                    (None, None) => {}
+                }
+            }
+            current = match next {
+                Some(index) => index,
+                None => loop {
+                    if stack_len == 0 {
+                        return best;
+                    }
+                    stack_len -= 1;
+                    let (index, entry) = stack[stack_len];
+                    if entry < closest {
+                        break index as usize;
+                    }
+                },
+            };
+        }
+    }
+}
+
+/// Working state of one build.
+struct Builder<'a> {
+    bounds: &'a [Aabb],
+    centroids: Vec<DVec3>,
+    order: Vec<u32>,
+    nodes: Vec<Node>,
+}
+
+/// One bin of the SAH sweep.
+#[derive(Clone, Copy)]
+struct Bin {
+    bounds: Aabb,
+    count: usize,
+}
+
+impl Builder<'_> {
+    /// Builds the subtree over `order[start..end]` and returns its node index.
+    fn build_node(&mut self, start: usize, end: usize, depth: usize) -> usize {
+        let node_index = self.nodes.len();
+        let mut bounds = Aabb::EMPTY;
+        let mut centroid_bounds = Aabb::EMPTY;
+        for &primitive in &self.order[start..end] {
+            bounds = bounds.union(&self.bounds[primitive as usize]);
+            centroid_bounds = centroid_bounds.grown_to(self.centroids[primitive as usize]);
+        }
+        let count = end - start;
+        self.nodes.push(Node {
+            bounds,
+            first: start as u32,
+            count: count as u32,
+        });
+        if count <= SMALL_LEAF || depth >= MAX_DEPTH {
+            return node_index;
+        }
+        let Some(middle) = self.choose_split(start, end, &bounds, &centroid_bounds) else {
+            return node_index;
+        };
+        self.build_node(start, middle, depth + 1);
+        let right = self.build_node(middle, end, depth + 1);
+        self.nodes[node_index].first = right as u32;
+        self.nodes[node_index].count = 0;
+        node_index
+    }
+
+    /// Reorders `order[start..end]` for the best split and returns the split position, or
+    /// `None` when a leaf is better.
+    fn choose_split(
+        &mut self,
+        start: usize,
+        end: usize,
+        bounds: &Aabb,
+        centroid_bounds: &Aabb,
+    ) -> Option<usize> {
+        let count = end - start;
+        let extent = centroid_bounds.extent();
+        let axis = if extent.x >= extent.y && extent.x >= extent.z {
+            0
+        } else if extent.y >= extent.z {
+            1
+        } else {
+            2
+        };
+        let axis_min = centroid_bounds.min[axis];
+        let axis_extent = extent[axis];
+        if !(axis_extent > 0.0 && axis_extent.is_finite()) {
+            // Every centroid coincides: bins cannot separate them, so halve large ranges.
+            return (count > LARGE_LEAF).then_some(start + count / 2);
+        }
+        let scale = BIN_COUNT as f64 / axis_extent;
+        let bin_of = |centroid: DVec3| -> usize {
+            // NaN converts to 0 and overflow saturates, so the index always stays in range.
+            (((centroid[axis] - axis_min) * scale) as usize).min(BIN_COUNT - 1)
+        };
+        let mut bins = [Bin {
+            bounds: Aabb::EMPTY,
+            count: 0,
+        }; BIN_COUNT];
+        for &primitive in &self.order[start..end] {
+            let bin = &mut bins[bin_of(self.centroids[primitive as usize])];
+            bin.bounds = bin.bounds.union(&self.bounds[primitive as usize]);
+            bin.count += 1;
+        }
+        // Sweep from the right to get the cost of every right-hand side.
+        let mut right_area = [0.0; BIN_COUNT];
+        let mut right_count = [0usize; BIN_COUNT];
+        let mut accumulated = Aabb::EMPTY;
+        let mut accumulated_count = 0;
+        for split in (1..BIN_COUNT).rev() {
+            accumulated = accumulated.union(&bins[split].bounds);
+            accumulated_count += bins[split].count;
+            right_area[split] = accumulated.surface_area();
+            right_count[split] = accumulated_count;
+        }
+        let mut best_split = 0;
+        let mut best_cost = f64::INFINITY;
+        let mut left = Aabb::EMPTY;
+        let mut left_count = 0;
+        for split in 1..BIN_COUNT {
+            left = left.union(&bins[split - 1].bounds);
+            left_count += bins[split - 1].count;
+            if left_count == 0 || right_count[split] == 0 {
+                continue;
+            }
+            let cost = left.surface_area() * left_count as f64
+                + right_area[split] * right_count[split] as f64;
+            if cost < best_cost {
+                best_cost = cost;
+                best_split = split;
+            }
+        }
+        let area = bounds.surface_area();
+        let leaf_cost = area * count as f64;
+        let split_cost = TRAVERSAL_COST * area + best_cost;
+        if best_split == 0 || (count <= LARGE_LEAF && leaf_cost <= split_cost) {
+            return (count > LARGE_LEAF).then_some(start + count / 2);
+        }
+        let centroids = &self.centroids;
+        let range = &mut self.order[start..end];
+        let mut boundary = 0;
+        for index in 0..range.len() {
+            if bin_of(centroids[range[index] as usize]) < best_split {
+                range.swap(index, boundary);
+                boundary += 1;
+            }
+        }
+        if boundary == 0 || boundary == count {
+            return Some(start + count / 2);
+        }
+        Some(start + boundary)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A tiny deterministic random number generator for tests.
+    struct Random(u64);
+
+    impl Random {
+        fn next(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn vector(&mut self, scale: f64) -> DVec3 {
+            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * 2.0 * scale
+        }
+    }
+
+    #[test]
+    fn every_primitive_in_exactly_one_leaf() {
+        let mut random = Random(0x1234_5678_9abc_def1);
+        let boxes: Vec<Aabb> = (0..5000)
+            .map(|_| {
+                let centre = random.vector(100.0);
+                Aabb::from_corners(centre, centre + random.vector(2.0))
+            })
+            .collect();
+        let (bvh, order) = Bvh::build(&boxes);
+        let mut seen = vec![0; boxes.len()];
+        for node in &bvh.nodes {
+            if node.count > 0 {
+                for position in node.first..node.first + node.count {
+                    seen[order[position as usize] as usize] += 1;
+                    assert!(node
+                        .bounds
+                        .contains(boxes[order[position as usize] as usize].min));
+                }
+            }
+        }
+        assert!(seen.iter().all(|&times| times == 1));
+    }
+
+    #[test]
+    fn nearest_box_matches_brute_force() {
+        let mut random = Random(0x9e37_79b9_7f4a_7c15);
+        let boxes: Vec<Aabb> = (0..2000)
+            .map(|_| {
+                let centre = random.vector(50.0);
+                Aabb::from_corners(centre, centre + random.vector(3.0))
+            })
+            .collect();
+        let (bvh, order) = Bvh::build(&boxes);
+        for _ in 0..2000 {
+            let origin = random.vector(80.0);
+            let direction = random.vector(1.0).normalize();
+            let inverse = DVec3::ONE / direction;
+            let brute = boxes
+                .iter()
+                .filter_map(|b| b.ray_entry(origin, inverse, 0.0, f64::INFINITY))
+                .filter(|&distance| distance > 0.0)
+                .fold(f64::INFINITY, f64::min);
+            let found = bvh.nearest_hit(origin, inverse, 0.0, f64::INFINITY, |position, _| {
+                let b = boxes[order[position] as usize];
+                b.ray_entry(origin, inverse, 0.0, f64::INFINITY)
+                    .filter(|&distance| distance > 0.0)
+                    .map(|distance| (distance, position))
+            });
+            assert_eq!(
+                found.map(|(distance, _)| distance).unwrap_or(f64::INFINITY),
+                brute
+            );
+        }
+    }
+
+    #[test]
+    fn coincident_and_empty_inputs() {
+        let (bvh, order) = Bvh::build(&[]);
+        assert_eq!(bvh.node_count(), 0);
+        assert!(order.is_empty());
+        let same = vec![Aabb::from_corners(DVec3::ZERO, DVec3::ONE); 1000];
+        let (bvh, order) = Bvh::build(&same);
+        assert_eq!(order.len(), 1000);
+        assert!(bvh.node_count() > 1);
+    }
+}

@@ -1,0 +1,312 @@
+//! Turning the scene's object tree into flat primitives and shared materials.
+//!
+//! In: the top-level [`Object`]s of a scene. Out: [`Primitive`]s (leaves and CSG trees) with
+//! their world bounds, the [`Material`] table, and the number of leaf shapes.
+//! Holds: transforms compose down the tree (a child's transform maps into its parent's local
+//! space); texture, interior and `no_shadow` are inherited from the nearest ancestor that sets
+//! them; each owning object's texture is converted to world space once and shared by every leaf
+//! that inherits it; top-level unions are flattened into their children (an inverted union
+//! passes the inversion down), other CSG nodes become trees.
+
+use super::csg::{Combination, CsgNode, CsgTree, NodeBounds};
+use super::leaf::Leaf;
+use super::Material;
+use crate::accel::Aabb;
+use crate::scene::{
+    CsgOperation, Interior, Object, Pigment, PigmentMap, Shape, Texture, Transform,
+};
+use std::collections::HashMap;
+use std::sync::Arc;
+
+/// Relative padding added to every primitive's bounds, so that rounding in the box tests can
+/// never reject a hit the exact shape test finds.
+const BOUNDS_RELATIVE_PADDING: f64 = 1e-9;
+
+/// Absolute padding added to every primitive's bounds.
+const BOUNDS_ABSOLUTE_PADDING: f64 = 1e-12;
+
+/// A top-level renderable: one shape or a whole CSG object.
+#[derive(Clone, Debug)]
+pub enum Primitive {
+    /// A single shape.
+    Leaf(Leaf),
+    /// A CSG object evaluated as a whole.
+    Csg(Box<CsgTree>),
+}
+
+/// What the builder produces.
+pub struct BuiltScene {
+    /// Every primitive with its surface bounds (`None` when unbounded).
+    pub primitives: Vec<(Primitive, Option<Aabb>)>,
+    /// The material table.
+    pub materials: Vec<Material>,
+    /// Number of leaf shapes, CSG children included.
+    pub leaf_count: usize,
+}
+
+/// Identifies a texture for sharing materials.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum TextureKey {
+    /// No object set a texture: the default one.
+    Default,
+    /// A texture used as is (no pattern or no transform to apply), by its address.
+    Shared(usize),
+    /// A texture converted for one owning object, by the owner's number.
+    Owned(usize),
+}
+
+/// Identifies an interior for sharing materials.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum InteriorKey {
+    /// No object set an interior.
+    Default,
+    /// The interior set by one object, by the owner's number.
+    Owned(usize),
+}
+
+/// The appearance an object passes down to its children.
+#[derive(Clone, Debug)]
+struct Appearance {
+    texture: Arc<Texture>,
+    texture_key: TextureKey,
+    interior: Interior,
+    interior_key: InteriorKey,
+    no_shadow: bool,
+}
+
+/// Working state of one build.
+struct Builder {
+    materials: Vec<Material>,
+    material_of: HashMap<(TextureKey, InteriorKey, bool), u32>,
+    next_owner: usize,
+    leaf_count: usize,
+}
+
+/// Builds primitives and materials from the scene's top-level objects.
+pub fn build_scene(objects: &[Object]) -> BuiltScene {
+    let mut builder = Builder {
+        materials: Vec::new(),
+        material_of: HashMap::new(),
+        next_owner: 0,
+        leaf_count: 0,
+    };
+    let appearance = Appearance {
+        texture: Arc::new(Texture::default()),
+        texture_key: TextureKey::Default,
+        interior: Interior::default(),
+        interior_key: InteriorKey::Default,
+        no_shadow: false,
+    };
+    let mut primitives = Vec::new();
+    for object in objects {
+        builder.add_top_level(
+            object,
+            &Transform::IDENTITY,
+            &appearance,
+            false,
+            &mut primitives,
+        );
+    }
+    BuiltScene {
+        primitives,
+        materials: builder.materials,
+        leaf_count: builder.leaf_count,
+    }
+}
+
+/// True when the pigment (or any pigment in its block map) uses a pattern.
+fn has_pattern(pigment: &Pigment) -> bool {
+    matches!(pigment, Pigment::Pattern { .. })
+}
+
+/// The pigment with every pattern transform re-expressed from owner-local to world space.
+fn pigment_to_world(pigment: &Pigment, world_from_owner: &Transform) -> Pigment {
+    if let Pigment::Pattern {
+        pattern,
+        map,
+        transform,
+    } = pigment
+    {
+        let map = match map {
+            PigmentMap::Blocks(blocks) => PigmentMap::Blocks(
+                blocks
+                    .iter()
+                    .map(|block| pigment_to_world(block, world_from_owner))
+                    .collect(),
+            ),
+            other => other.clone(),
+        };
+        Pigment::Pattern {
+            pattern: pattern.clone(),
+            map,
+            transform: transform.then(world_from_owner),
+        }
+    } else {
+        pigment.clone()
+    }
+}
+
+/// Pads bounds so box tests are conservative; non-finite bounds become unbounded.
+fn padded(bounds: Option<Aabb>) -> Option<Aabb> {
+    let bounds = bounds?;
+    if bounds.is_empty() {
+        return Some(Aabb::EMPTY);
+    }
+    let bounds = bounds.padded(BOUNDS_RELATIVE_PADDING, BOUNDS_ABSOLUTE_PADDING);
+    bounds.is_finite().then_some(bounds)
+}
+
+impl Builder {
+    /// A fresh number for an object that owns a texture or interior.
+    fn new_owner(&mut self) -> usize {
+        self.next_owner += 1;
+        self.next_owner
+    }
+
+    /// The appearance `object` passes on, given what it inherits.
+    fn appearance(
+        &mut self,
+        object: &Object,
+        world_from_local: &Transform,
+        inherited: &Appearance,
+    ) -> Appearance {
+        let mut appearance = inherited.clone();
+        if let Some(texture) = &object.texture {
+            if has_pattern(&texture.pigment) && *world_from_local != Transform::IDENTITY {
+                let mut converted = Texture::clone(texture);
+                converted.pigment = pigment_to_world(&texture.pigment, world_from_local);
+                appearance.texture = Arc::new(converted);
+                appearance.texture_key = TextureKey::Owned(self.new_owner());
+            } else {
+                appearance.texture = Arc::clone(texture);
+                appearance.texture_key = TextureKey::Shared(Arc::as_ptr(texture) as usize);
+            }
+        }
+        if let Some(interior) = &object.interior {
+            appearance.interior = interior.clone();
+            appearance.interior_key = InteriorKey::Owned(self.new_owner());
+        }
+        appearance.no_shadow |= object.no_shadow;
+        appearance
+    }
+
+    /// The material index for an appearance, creating the material on first use.
+    fn material(&mut self, appearance: &Appearance) -> u32 {
+        let key = (
+            appearance.texture_key,
+            appearance.interior_key,
+            appearance.no_shadow,
+        );
+        if let Some(&index) = self.material_of.get(&key) {
+            return index;
+        }
+        let index = self.materials.len() as u32;
+        self.materials.push(Material {
+            texture: Arc::clone(&appearance.texture),
+            interior: appearance.interior.clone(),
+            no_shadow: appearance.no_shadow,
+        });
+        self.material_of.insert(key, index);
+        index
+    }
+
+    /// Adds a top-level object (or a child of a flattened top-level union).
+    fn add_top_level(
+        &mut self,
+        object: &Object,
+        world_from_parent: &Transform,
+        inherited: &Appearance,
+        extra_inverse: bool,
+        out: &mut Vec<(Primitive, Option<Aabb>)>,
+    ) {
+        let world_from_local = object.transform.then(world_from_parent);
+        let inverse = object.inverse != extra_inverse;
+        match &object.shape {
+            Shape::Csg {
+                operation: CsgOperation::Union,
+                children,
+            } => {
+                let appearance = self.appearance(object, &world_from_local, inherited);
+                for child in children {
+                    self.add_top_level(child, &world_from_local, &appearance, inverse, out);
+                }
+            }
+            Shape::Csg { .. } => {
+                let mut leaves = Vec::new();
+                let root = self.csg_node(
+                    object,
+                    world_from_parent,
+                    inherited,
+                    extra_inverse,
+                    &mut leaves,
+                );
+                let surface = root.bounds().surface;
+                if surface.is_some_and(|bounds| bounds.is_empty()) {
+                    return;
+                }
+                out.push((Primitive::Csg(Box::new(CsgTree { leaves, root })), surface));
+            }
+            shape => {
+                let appearance = self.appearance(object, &world_from_local, inherited);
+                let material = self.material(&appearance);
+                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inverse);
+                let surface = padded(bounds.surface);
+                if leaf.is_empty() || surface.is_some_and(|bounds| bounds.is_empty()) {
+                    return;
+                }
+                self.leaf_count += 1;
+                out.push((Primitive::Leaf(leaf), surface));
+            }
+        }
+    }
+
+    /// Builds the CSG subtree for `object`, appending its leaves to `leaves`.
+    fn csg_node(
+        &mut self,
+        object: &Object,
+        world_from_parent: &Transform,
+        inherited: &Appearance,
+        extra_inverse: bool,
+        leaves: &mut Vec<Leaf>,
+    ) -> CsgNode {
+        let world_from_local = object.transform.then(world_from_parent);
+        let appearance = self.appearance(object, &world_from_local, inherited);
+        let inverse = object.inverse != extra_inverse;
+        match &object.shape {
+            Shape::Csg {
+                operation,
+                children,
+            } => {
+                let combination = match operation {
+                    CsgOperation::Union => Combination::Union,
+                    CsgOperation::Merge => Combination::Merge,
+                    CsgOperation::Intersection | CsgOperation::Difference => {
+                        Combination::Intersection
+                    }
+                };
+                let subtract = *operation == CsgOperation::Difference;
+                let nodes = children
+                    .iter()
+                    .enumerate()
+                    .map(|(position, child)| {
+                        let invert_child = subtract && position > 0;
+                        self.csg_node(child, &world_from_local, &appearance, invert_child, leaves)
+                    })
+                    .collect();
+                CsgNode::combine(combination, inverse, nodes)
+            }
+            shape => {
+                let material = self.material(&appearance);
+                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inverse);
+                let index = leaves.len() as u32;
+                leaves.push(leaf);
+                self.leaf_count += 1;
+                let bounds = NodeBounds {
+                    surface: padded(bounds.surface),
+                    inside: padded(bounds.inside),
+                };
+                CsgNode::Leaf { index, bounds }
+            }
+        }
+    }
+}

@@ -1,0 +1,344 @@
+//! Flat shapes and the box: plane, disc, triangle, axis-aligned box, in local space.
+//!
+//! In: shape parameters as written in the scene; rays as local origin plus (not necessarily
+//! unit) direction. Out: intersections tagged with a surface part, inside tests, outward
+//! normals, bounds. Holds: constructors return `None` for degenerate input (zero normal,
+//! collinear triangle corners, non-finite numbers), which the caller turns into an empty shape.
+
+use super::roots::Roots;
+use crate::accel::Aabb;
+use glam::{DAffine3, DVec3};
+
+/// The plane `dot(point, normal) = distance` (unit normal); inside is the side opposite the
+/// normal.
+#[derive(Clone, Copy, Debug)]
+pub struct Plane {
+    normal: DVec3,
+    distance: f64,
+}
+
+impl Plane {
+    /// The plane as POV-Ray reads `plane { normal, distance }`: the normal is normalised and
+    /// the plane lies `distance` along it; `None` for a zero or non-finite normal.
+    pub fn new(normal: DVec3, distance: f64) -> Option<Plane> {
+        let unit = normal.try_normalize()?;
+        distance.is_finite().then_some(Plane {
+            normal: unit,
+            distance,
+        })
+    }
+
+    /// The same plane after mapping space through an invertible affine `map`.
+    pub fn transformed(&self, map: &DAffine3) -> Option<Plane> {
+        let on_plane = map.transform_point3(self.normal * self.distance);
+        let normal = (map.matrix3.inverse().transpose() * self.normal).try_normalize()?;
+        Plane::new(normal, normal.dot(on_plane))
+    }
+
+    /// Pushes the crossing of the line with the plane.
+    #[inline]
+    pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
+        let rate = self.normal.dot(direction);
+        if rate != 0.0 {
+            roots.push((self.distance - self.normal.dot(origin)) / rate, 0);
+        }
+    }
+
+    /// True when `point` is strictly on the inner side.
+    pub fn inside(&self, point: DVec3) -> bool {
+        self.normal.dot(point) < self.distance
+    }
+
+    /// The outward unit normal.
+    pub fn normal(&self) -> DVec3 {
+        self.normal
+    }
+}
+
+/// A flat ring: points of a plane between the hole radius and the outer radius of a centre.
+#[derive(Clone, Copy, Debug)]
+pub struct Disc {
+    centre: DVec3,
+    normal: DVec3,
+    radius_squared: f64,
+    hole_radius_squared: f64,
+}
+
+impl Disc {
+    /// A disc; `None` for a zero normal, zero radius or non-finite input.
+    pub fn new(centre: DVec3, normal: DVec3, radius: f64, hole_radius: f64) -> Option<Disc> {
+        let normal = normal.try_normalize()?;
+        let radius_squared = radius * radius;
+        let hole_radius_squared = hole_radius * hole_radius;
+        (centre.is_finite()
+            && radius_squared > 0.0
+            && radius_squared.is_finite()
+            && hole_radius_squared.is_finite()
+            && hole_radius_squared < radius_squared)
+            .then_some(Disc {
+                centre,
+                normal,
+                radius_squared,
+                hole_radius_squared,
+            })
+    }
+
+    /// Pushes the crossing of the line with the ring.
+    #[inline]
+    pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
+        let rate = self.normal.dot(direction);
+        if rate == 0.0 {
+            return;
+        }
+        let distance = self.normal.dot(self.centre - origin) / rate;
+        let offset = (origin + direction * distance - self.centre).length_squared();
+        if offset <= self.radius_squared && offset >= self.hole_radius_squared {
+            roots.push(distance, 0);
+        }
+    }
+
+    /// POV-Ray's disc inside: strictly on the inner side of the disc's plane, whatever the
+    /// radius.
+    pub fn inside(&self, point: DVec3) -> bool {
+        self.normal.dot(point - self.centre) < 0.0
+    }
+
+    /// The outward unit normal.
+    pub fn normal(&self) -> DVec3 {
+        self.normal
+    }
+
+    /// Bounding box of the ring.
+    pub fn bounds(&self) -> Aabb {
+        let reach = disc_reach(self.normal, self.radius_squared.sqrt());
+        Aabb::from_corners(self.centre - reach, self.centre + reach)
+    }
+}
+
+/// Half the size, along each axis, of the bounds of a disc of `radius` across unit `normal`.
+pub fn disc_reach(normal: DVec3, radius: f64) -> DVec3 {
+    let across = DVec3::ONE - normal * normal;
+    DVec3::new(
+        across.x.max(0.0).sqrt(),
+        across.y.max(0.0).sqrt(),
+        across.z.max(0.0).sqrt(),
+    ) * radius
+}
+
+/// A triangle, stored as one corner and the two edges leaving it.
+#[derive(Clone, Copy, Debug)]
+pub struct Triangle {
+    corner: DVec3,
+    edge_one: DVec3,
+    edge_two: DVec3,
+}
+
+impl Triangle {
+    /// A triangle; `None` when the corners are collinear or not finite.
+    pub fn new(corners: [DVec3; 3]) -> Option<Triangle> {
+        let [a, b, c] = corners;
+        let triangle = Triangle {
+            corner: a,
+            edge_one: b - a,
+            edge_two: c - a,
+        };
+        let area = triangle.edge_one.cross(triangle.edge_two).length_squared();
+        (area > 0.0 && area.is_finite() && a.is_finite()).then_some(triangle)
+    }
+
+    /// The same triangle with its corners mapped by `map`.
+    pub fn transformed(&self, map: &DAffine3) -> Option<Triangle> {
+        Triangle::new(self.corners().map(|corner| map.transform_point3(corner)))
+    }
+
+    /// The three corners.
+    pub fn corners(&self) -> [DVec3; 3] {
+        [
+            self.corner,
+            self.corner + self.edge_one,
+            self.corner + self.edge_two,
+        ]
+    }
+
+    /// Pushes the crossing of the line with the triangle (edges included).
+    #[inline]
+    pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
+        let across_two = direction.cross(self.edge_two);
+        let determinant = self.edge_one.dot(across_two);
+        if determinant == 0.0 {
+            return;
+        }
+        let inverse_determinant = 1.0 / determinant;
+        let offset = origin - self.corner;
+        let first = offset.dot(across_two) * inverse_determinant;
+        if !(0.0..=1.0).contains(&first) {
+            return;
+        }
+        let across_one = offset.cross(self.edge_one);
+        let second = direction.dot(across_one) * inverse_determinant;
+        if second < 0.0 || first + second > 1.0 {
+            return;
+        }
+        roots.push(self.edge_two.dot(across_one) * inverse_determinant, 0);
+    }
+
+    /// A triangle has no inside.
+    pub fn inside(&self, _point: DVec3) -> bool {
+        false
+    }
+
+    /// The normal (not normalised) on the side where the corners run anticlockwise.
+    pub fn normal(&self) -> DVec3 {
+        self.edge_one.cross(self.edge_two)
+    }
+
+    /// Bounding box of the corners.
+    pub fn bounds(&self) -> Aabb {
+        Aabb::from_points(self.corners())
+    }
+}
+
+/// An axis-aligned box between two corners.
+#[derive(Clone, Copy, Debug)]
+pub struct Cuboid {
+    min: DVec3,
+    max: DVec3,
+}
+
+impl Cuboid {
+    /// A box from two opposite corners in any order; `None` when a coordinate is not finite.
+    pub fn new(corner1: DVec3, corner2: DVec3) -> Option<Cuboid> {
+        (corner1.is_finite() && corner2.is_finite()).then_some(Cuboid {
+            min: corner1.min(corner2),
+            max: corner1.max(corner2),
+        })
+    }
+
+    /// The same box after a map that only scales and translates each axis (diagonal matrix).
+    pub fn scaled_and_moved(&self, map: &DAffine3) -> Option<Cuboid> {
+        Cuboid::new(
+            map.transform_point3(self.min),
+            map.transform_point3(self.max),
+        )
+    }
+
+    /// Pushes where the line enters and leaves the box.
+    ///
+    /// The part tag is `2 * axis` for the face at the smaller coordinate and `2 * axis + 1`
+    /// for the face at the larger one.
+    #[inline]
+    pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
+        let mut entry = f64::NEG_INFINITY;
+        let mut exit = f64::INFINITY;
+        let mut entry_part = 0;
+        let mut exit_part = 0;
+        for axis in 0..3 {
+            let step = direction[axis];
+            let start = origin[axis];
+            if step == 0.0 {
+                if start < self.min[axis] || start > self.max[axis] {
+                    return;
+                }
+                continue;
+            }
+            let to_min = (self.min[axis] - start) / step;
+            let to_max = (self.max[axis] - start) / step;
+            let axis_tag = 2 * axis as u8;
+            let (near, far, near_part, far_part) = if to_min <= to_max {
+                (to_min, to_max, axis_tag, axis_tag + 1)
+            } else {
+                (to_max, to_min, axis_tag + 1, axis_tag)
+            };
+            if near > entry {
+                entry = near;
+                entry_part = near_part;
+            }
+            if far < exit {
+                exit = far;
+                exit_part = far_part;
+            }
+        }
+        if entry <= exit {
+            roots.push(entry, entry_part);
+            roots.push(exit, exit_part);
+        }
+    }
+
+    /// True when `point` is strictly inside.
+    pub fn inside(&self, point: DVec3) -> bool {
+        point.cmpgt(self.min).all() && point.cmplt(self.max).all()
+    }
+
+    /// Outward unit normal of the face with tag `part`.
+    pub fn normal(&self, part: u8) -> DVec3 {
+        let mut normal = DVec3::ZERO;
+        normal[(part / 2).min(2) as usize] = if part.is_multiple_of(2) { -1.0 } else { 1.0 };
+        normal
+    }
+
+    /// The box itself.
+    pub fn bounds(&self) -> Aabb {
+        Aabb {
+            min: self.min,
+            max: self.max,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plane_follows_pov_ray_definition() {
+        // plane { <0, 2, 0>, 1 } is the plane y = 1 with +y outside.
+        let plane = Plane::new(DVec3::new(0.0, 2.0, 0.0), 1.0).unwrap();
+        let mut roots = Roots::new();
+        plane.intersect(DVec3::new(0.0, 5.0, 0.0), -DVec3::Y, &mut roots);
+        assert_eq!(roots.nearest_within(0.0, 100.0), Some((4.0, 0)));
+        assert!(plane.inside(DVec3::ZERO));
+        assert!(!plane.inside(DVec3::Y * 2.0));
+        let moved = plane
+            .transformed(&DAffine3::from_translation(DVec3::Y))
+            .unwrap();
+        assert!((moved.distance - 2.0).abs() < 1e-12);
+        assert!(Plane::new(DVec3::ZERO, 1.0).is_none());
+    }
+
+    #[test]
+    fn disc_hole_and_rim() {
+        let disc = Disc::new(DVec3::ZERO, DVec3::Y, 2.0, 1.0).unwrap();
+        for (x, hit) in [(0.5, false), (1.5, true), (2.5, false)] {
+            let mut roots = Roots::new();
+            disc.intersect(DVec3::new(x, 3.0, 0.0), -DVec3::Y, &mut roots);
+            assert_eq!(roots.iter().count() == 1, hit, "x = {x}");
+        }
+        assert!(disc.inside(DVec3::new(10.0, -1.0, 0.0)));
+    }
+
+    #[test]
+    fn triangle_hits_inside_only() {
+        let triangle = Triangle::new([DVec3::ZERO, DVec3::X, DVec3::Y]).unwrap();
+        let mut roots = Roots::new();
+        triangle.intersect(DVec3::new(0.2, 0.2, -1.0), DVec3::Z * 2.0, &mut roots);
+        assert_eq!(roots.nearest_within(0.0, 10.0), Some((0.5, 0)));
+        let mut roots = Roots::new();
+        triangle.intersect(DVec3::new(0.6, 0.6, -1.0), DVec3::Z, &mut roots);
+        assert!(roots.iter().next().is_none());
+        assert!(Triangle::new([DVec3::ZERO, DVec3::X, DVec3::X * 2.0]).is_none());
+    }
+
+    #[test]
+    fn box_faces() {
+        let cuboid = Cuboid::new(DVec3::ONE, -DVec3::ONE).unwrap();
+        let mut roots = Roots::new();
+        cuboid.intersect(DVec3::new(0.5, 0.5, -5.0), DVec3::Z, &mut roots);
+        let hits: Vec<_> = roots.iter().collect();
+        assert_eq!(hits, vec![(4.0, 4), (6.0, 5)]);
+        assert_eq!(cuboid.normal(4), -DVec3::Z);
+        assert_eq!(cuboid.normal(5), DVec3::Z);
+        let mut roots = Roots::new();
+        cuboid.intersect(DVec3::new(2.0, 0.0, -5.0), DVec3::Z, &mut roots);
+        assert!(roots.iter().next().is_none());
+    }
+}

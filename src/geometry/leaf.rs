@@ -1,0 +1,345 @@
+//! Leaf primitives: one shape placed in the world with its material.
+//!
+//! In: a [`scene::Shape`] (not CSG), the object's world-from-local transform, a material index
+//! and the inverse flag. Out: a compact [`Leaf`] answering ray intersections, inside tests and
+//! world-space outward normals, plus its world bounds.
+//! Holds: transforms that a shape can absorb (any affine map for planes and triangles, a
+//! similarity for spheres, an axis scaling plus translation for boxes) are baked into the shape
+//! at build time; otherwise the leaf keeps only the world-to-local map. A degenerate shape or
+//! a singular or non-finite transform gives an empty leaf that nothing hits.
+
+use super::flat::{Cuboid, Disc, Plane, Triangle};
+use super::quadric::Quadric;
+use super::roots::Roots;
+use super::round::{Cone, Sphere};
+use super::torus::{Torus, TorusShape};
+use super::Ray;
+use crate::accel::Aabb;
+use crate::scene::{Shape, Transform};
+use glam::{DAffine3, DVec3};
+
+/// A shape in its own local space.
+#[derive(Clone, Debug)]
+pub enum LocalShape {
+    /// Nothing: a degenerate shape.
+    Empty,
+    /// A sphere.
+    Sphere(Sphere),
+    /// An axis-aligned box.
+    Cuboid(Cuboid),
+    /// An infinite plane.
+    Plane(Plane),
+    /// A cylinder or cone frustum.
+    Cone(Box<Cone>),
+    /// A torus.
+    Torus(Torus),
+    /// A flat disc, possibly with a hole.
+    Disc(Disc),
+    /// A general quadric surface.
+    Quadric(Box<Quadric>),
+    /// A triangle.
+    Triangle(Triangle),
+}
+
+/// Which points count as inside a shape, beyond its surface bounds.
+enum InsideReach {
+    /// Inside points lie within the surface bounds.
+    Bounded,
+    /// Inside points may be anywhere (half-spaces, quadrics).
+    Unbounded,
+    /// No point is ever inside.
+    Nowhere,
+}
+
+impl LocalShape {
+    /// The local shape for a scene shape; CSG shapes give [`LocalShape::Empty`].
+    pub fn from_scene(shape: &Shape) -> LocalShape {
+        let shape = match *shape {
+            Shape::Sphere { centre, radius } => Sphere::new(centre, radius).map(Self::Sphere),
+            Shape::Box { corner1, corner2 } => Cuboid::new(corner1, corner2).map(Self::Cuboid),
+            Shape::Plane { normal, distance } => Plane::new(normal, distance).map(Self::Plane),
+            Shape::Cylinder {
+                base,
+                cap,
+                radius,
+                open,
+            } => Cone::cylinder(base, cap, radius, open).map(|cone| Self::Cone(Box::new(cone))),
+            Shape::Cone {
+                base,
+                base_radius,
+                cap,
+                cap_radius,
+                open,
+            } => Cone::new(base, base_radius, cap, cap_radius, open)
+                .map(|cone| Self::Cone(Box::new(cone))),
+            Shape::Torus { major, minor } => {
+                Torus::from_radii(major, minor).map(|shape| match shape {
+                    TorusShape::Torus(torus) => Self::Torus(torus),
+                    TorusShape::Sphere(sphere) => Self::Sphere(sphere),
+                })
+            }
+            Shape::Disc {
+                centre,
+                normal,
+                radius,
+                hole_radius,
+            } => Disc::new(centre, normal, radius, hole_radius).map(Self::Disc),
+            Shape::Quadric { coefficients } => {
+                Quadric::new(coefficients).map(|quadric| Self::Quadric(Box::new(quadric)))
+            }
+            Shape::Triangle { corners } => Triangle::new(corners).map(Self::Triangle),
+            Shape::Csg { .. } => None,
+        };
+        shape.unwrap_or(LocalShape::Empty)
+    }
+
+    /// Pushes every crossing of the line `origin + t direction` (local space).
+    #[inline]
+    pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
+        match self {
+            LocalShape::Empty => {}
+            LocalShape::Sphere(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Cuboid(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Plane(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Cone(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Torus(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Disc(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Quadric(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Triangle(shape) => shape.intersect(origin, direction, roots),
+        }
+    }
+
+    /// True when the local `point` is inside the shape.
+    pub fn inside(&self, point: DVec3) -> bool {
+        match self {
+            LocalShape::Empty => false,
+            LocalShape::Sphere(shape) => shape.inside(point),
+            LocalShape::Cuboid(shape) => shape.inside(point),
+            LocalShape::Plane(shape) => shape.inside(point),
+            LocalShape::Cone(shape) => shape.inside(point),
+            LocalShape::Torus(shape) => shape.inside(point),
+            LocalShape::Disc(shape) => shape.inside(point),
+            LocalShape::Quadric(shape) => shape.inside(point),
+            LocalShape::Triangle(shape) => shape.inside(point),
+        }
+    }
+
+    /// Outward normal (any length) at the local surface `point` of surface part `part`.
+    pub fn normal(&self, point: DVec3, part: u8) -> DVec3 {
+        match self {
+            LocalShape::Empty => DVec3::Z,
+            LocalShape::Sphere(shape) => shape.normal(point),
+            LocalShape::Cuboid(shape) => shape.normal(part),
+            LocalShape::Plane(shape) => shape.normal(),
+            LocalShape::Cone(shape) => shape.normal(point, part),
+            LocalShape::Torus(shape) => shape.normal(point),
+            LocalShape::Disc(shape) => shape.normal(),
+            LocalShape::Quadric(shape) => shape.normal(point),
+            LocalShape::Triangle(shape) => shape.normal(),
+        }
+    }
+
+    /// Local bounds of the surface; `None` when unbounded.
+    pub fn bounds(&self) -> Option<Aabb> {
+        match self {
+            LocalShape::Empty => Some(Aabb::EMPTY),
+            LocalShape::Sphere(shape) => Some(shape.bounds()),
+            LocalShape::Cuboid(shape) => Some(shape.bounds()),
+            LocalShape::Plane(_) | LocalShape::Quadric(_) => None,
+            LocalShape::Cone(shape) => Some(shape.bounds()),
+            LocalShape::Torus(shape) => Some(shape.bounds()),
+            LocalShape::Disc(shape) => Some(shape.bounds()),
+            LocalShape::Triangle(shape) => Some(shape.bounds()),
+        }
+    }
+
+    /// Where inside points can be, relative to the surface bounds.
+    fn inside_reach(&self) -> InsideReach {
+        match self {
+            LocalShape::Empty | LocalShape::Triangle(_) => InsideReach::Nowhere,
+            LocalShape::Plane(_) | LocalShape::Quadric(_) | LocalShape::Disc(_) => {
+                InsideReach::Unbounded
+            }
+            _ => InsideReach::Bounded,
+        }
+    }
+
+    /// The shape with `world_from_local` folded in, when the shape can absorb that map.
+    fn absorbing(&self, world_from_local: &DAffine3) -> Option<LocalShape> {
+        let matrix = world_from_local.matrix3;
+        match self {
+            LocalShape::Empty => Some(LocalShape::Empty),
+            LocalShape::Plane(plane) => Some(
+                plane
+                    .transformed(world_from_local)
+                    .map_or(LocalShape::Empty, Self::Plane),
+            ),
+            LocalShape::Triangle(triangle) => Some(
+                triangle
+                    .transformed(world_from_local)
+                    .map_or(LocalShape::Empty, Self::Triangle),
+            ),
+            LocalShape::Sphere(sphere) => {
+                let gram = matrix.transpose() * matrix;
+                let scale_squared = gram.x_axis.x;
+                let tolerance = scale_squared * 1e-12;
+                let similar = (gram.y_axis.y - scale_squared).abs() <= tolerance
+                    && (gram.z_axis.z - scale_squared).abs() <= tolerance
+                    && gram.x_axis.y.abs() <= tolerance
+                    && gram.x_axis.z.abs() <= tolerance
+                    && gram.y_axis.z.abs() <= tolerance;
+                similar.then(|| {
+                    let centre = world_from_local.transform_point3(sphere.centre());
+                    Sphere::new(centre, sphere.radius() * scale_squared.sqrt())
+                        .map_or(LocalShape::Empty, Self::Sphere)
+                })
+            }
+            LocalShape::Cuboid(cuboid) => {
+                let diagonal = matrix.x_axis.y == 0.0
+                    && matrix.x_axis.z == 0.0
+                    && matrix.y_axis.x == 0.0
+                    && matrix.y_axis.z == 0.0
+                    && matrix.z_axis.x == 0.0
+                    && matrix.z_axis.y == 0.0;
+                diagonal.then(|| {
+                    cuboid
+                        .scaled_and_moved(world_from_local)
+                        .map_or(LocalShape::Empty, Self::Cuboid)
+                })
+            }
+            _ => None,
+        }
+    }
+}
+
+/// One shape placed in the world, with its material and inverse flag.
+#[derive(Clone, Debug)]
+pub struct Leaf {
+    shape: LocalShape,
+    /// World-to-local map; `None` when the shape is already in world coordinates.
+    local_from_world: Option<Box<DAffine3>>,
+    /// Index into the world's materials.
+    material: u32,
+    /// Inside and outside swapped, normals flipped.
+    inverse: bool,
+}
+
+/// World-space bounds of a leaf.
+#[derive(Clone, Copy, Debug)]
+pub struct LeafBounds {
+    /// Where the surface can be hit; `None` when unbounded.
+    pub surface: Option<Aabb>,
+    /// Where inside points can be; `None` when they can be anywhere.
+    pub inside: Option<Aabb>,
+}
+
+/// True when both maps of `transform` are finite and its matrix is invertible.
+fn usable(transform: &Transform) -> bool {
+    let forward = &transform.outer_from_inner;
+    let backward = &transform.inner_from_outer;
+    let determinant = forward.matrix3.determinant();
+    forward.is_finite()
+        && backward.is_finite()
+        && determinant.is_finite()
+        && determinant != 0.0
+        && backward.matrix3.determinant().is_finite()
+}
+
+impl Leaf {
+    /// Places `shape` (not CSG) in the world through `world_from_local`.
+    pub fn new(
+        shape: &Shape,
+        world_from_local: &Transform,
+        material: u32,
+        inverse: bool,
+    ) -> (Leaf, LeafBounds) {
+        let local = LocalShape::from_scene(shape);
+        let (shape, local_from_world, world_from_shape) = if !usable(world_from_local) {
+            (LocalShape::Empty, None, DAffine3::IDENTITY)
+        } else if world_from_local.outer_from_inner == DAffine3::IDENTITY {
+            (local, None, DAffine3::IDENTITY)
+        } else if let Some(absorbed) = local.absorbing(&world_from_local.outer_from_inner) {
+            (absorbed, None, DAffine3::IDENTITY)
+        } else {
+            let backward = Box::new(world_from_local.inner_from_outer);
+            (local, Some(backward), world_from_local.outer_from_inner)
+        };
+        let surface = shape
+            .bounds()
+            .map(|bounds| bounds.transformed(&world_from_shape));
+        let inside = if inverse {
+            None
+        } else {
+            match shape.inside_reach() {
+                InsideReach::Bounded => surface,
+                InsideReach::Unbounded => None,
+                InsideReach::Nowhere => Some(Aabb::EMPTY),
+            }
+        };
+        let leaf = Leaf {
+            shape,
+            local_from_world,
+            material,
+            inverse,
+        };
+        (leaf, LeafBounds { surface, inside })
+    }
+
+    /// Index of the leaf's material.
+    pub fn material(&self) -> u32 {
+        self.material
+    }
+
+    /// Pushes every crossing of the world ray (as ray parameters) into `roots`.
+    #[inline]
+    pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        match &self.local_from_world {
+            None => self.shape.intersect(ray.origin, ray.direction, roots),
+            Some(map) => self.shape.intersect(
+                map.transform_point3(ray.origin),
+                map.transform_vector3(ray.direction),
+                roots,
+            ),
+        }
+    }
+
+    /// The nearest crossing strictly between the limits, with its surface part.
+    #[inline]
+    pub fn nearest(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<(f64, u8)> {
+        let mut roots = Roots::new();
+        self.intersect(ray, &mut roots);
+        roots.nearest_within(min_distance, max_distance)
+    }
+
+    /// True when the world `point` is inside the leaf (inverse applied).
+    #[inline]
+    pub fn inside(&self, point: DVec3) -> bool {
+        let local = match &self.local_from_world {
+            None => point,
+            Some(map) => map.transform_point3(point),
+        };
+        self.shape.inside(local) != self.inverse
+    }
+
+    /// The unit outward world normal at the world surface `point` (flipped when inverse).
+    pub fn normal(&self, point: DVec3, part: u8) -> DVec3 {
+        let normal = match &self.local_from_world {
+            None => self.shape.normal(point, part),
+            Some(map) => {
+                let local = self.shape.normal(map.transform_point3(point), part);
+                map.matrix3.transpose() * local
+            }
+        };
+        let normal = normal.try_normalize().unwrap_or(DVec3::Z);
+        if self.inverse {
+            -normal
+        } else {
+            normal
+        }
+    }
+
+    /// True for a leaf that nothing can hit.
+    pub fn is_empty(&self) -> bool {
+        matches!(self.shape, LocalShape::Empty)
+    }
+}

@@ -1,0 +1,196 @@
+//! The World: every primitive of a scene behind a BVH, answering nearest-hit queries.
+//!
+//! In: a [`Scene`]. Out: [`World`] with its material table and [`World::first_hit`].
+//! Holds: bounded primitives are stored in BVH order; unbounded ones (planes, quadrics, CSG
+//! objects without finite bounds) sit in a separate list tested by every ray; queries never
+//! allocate (CSG scratch space is per thread and reused).
+
+use super::build::{build_scene, Primitive};
+use super::leaf::Leaf;
+use super::{Material, Ray, SurfaceHit};
+use crate::accel::{Aabb, Bvh};
+use crate::scene::Scene;
+use glam::DVec3;
+
+/// Everything a ray can hit, ready for queries from many threads.
+#[derive(Debug, Default)]
+pub struct World {
+    /// The materials hits refer to by index.
+    pub materials: Vec<Material>,
+    /// Bounded primitives, in the order the BVH expects.
+    primitives: Vec<Primitive>,
+    /// The hierarchy over `primitives`.
+    bvh: Bvh,
+    /// Primitives without finite bounds, tested by every ray.
+    unbounded: Vec<Primitive>,
+    /// Number of leaf shapes.
+    leaf_count: usize,
+}
+
+/// The nearest hit found so far, before its normal is computed.
+#[derive(Clone, Copy)]
+struct PendingHit<'a> {
+    leaf: &'a Leaf,
+    part: u8,
+    flip: bool,
+}
+
+impl Primitive {
+    /// The nearest hit strictly between the limits; `shadows_only` skips shadowless leaves.
+    #[inline]
+    fn nearest<'a>(
+        &'a self,
+        ray: &Ray,
+        inverse_direction: DVec3,
+        min_distance: f64,
+        max_distance: f64,
+        skip: &impl Fn(&Leaf) -> bool,
+    ) -> Option<(f64, PendingHit<'a>)> {
+        match self {
+            Primitive::Leaf(leaf) => {
+                if skip(leaf) {
+                    return None;
+                }
+                let (distance, part) = leaf.nearest(ray, min_distance, max_distance)?;
+                Some((
+                    distance,
+                    PendingHit {
+                        leaf,
+                        part,
+                        flip: false,
+                    },
+                ))
+            }
+            Primitive::Csg(tree) => {
+                let hit =
+                    tree.nearest(ray, inverse_direction, min_distance, max_distance, |l| {
+                        !skip(l)
+                    })?;
+                let leaf = &tree.leaves[hit.leaf as usize];
+                Some((
+                    hit.distance,
+                    PendingHit {
+                        leaf,
+                        part: hit.part,
+                        flip: hit.flip,
+                    },
+                ))
+            }
+        }
+    }
+}
+
+impl World {
+    /// Prepares every object of `scene` for ray queries.
+    pub fn build(scene: &Scene) -> World {
+        let built = build_scene(&scene.objects);
+        let mut bounded = Vec::new();
+        let mut bounds = Vec::new();
+        let mut unbounded = Vec::new();
+        for (primitive, surface) in built.primitives {
+            match surface {
+                Some(surface) if surface.is_finite() => {
+                    bounded.push(Some(primitive));
+                    bounds.push(surface);
+                }
+                _ => unbounded.push(primitive),
+            }
+        }
+        let (bvh, order) = Bvh::build(&bounds);
+        let primitives = order
+            .iter()
+            .filter_map(|&index| bounded[index as usize].take())
+            .collect();
+        World {
+            materials: built.materials,
+            primitives,
+            bvh,
+            unbounded,
+            leaf_count: built.leaf_count,
+        }
+    }
+
+    /// Nearest hit with `min_distance < distance < max_distance`.
+    pub fn first_hit(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<SurfaceHit> {
+        self.search(ray, min_distance, max_distance, &|_| false)
+    }
+
+    /// Nearest hit like [`World::first_hit`], ignoring objects marked `no_shadow`.
+    pub fn first_shadow_hit(
+        &self,
+        ray: &Ray,
+        min_distance: f64,
+        max_distance: f64,
+    ) -> Option<SurfaceHit> {
+        let materials = &self.materials;
+        self.search(ray, min_distance, max_distance, &|leaf: &Leaf| {
+            materials
+                .get(leaf.material() as usize)
+                .is_some_and(|material| material.no_shadow)
+        })
+    }
+
+    /// Number of leaf primitives (shapes), counting every CSG child.
+    pub fn object_count(&self) -> usize {
+        self.leaf_count
+    }
+
+    /// Bounds of all bounded primitives, or `None` when there are none.
+    pub fn bounds(&self) -> Option<Aabb> {
+        self.bvh.bounds()
+    }
+
+    /// Number of primitives tested by every ray because they have no finite bounds.
+    pub fn unbounded_count(&self) -> usize {
+        self.unbounded.len()
+    }
+
+    /// The nearest hit, skipping leaves for which `skip` is true.
+    fn search(
+        &self,
+        ray: &Ray,
+        min_distance: f64,
+        max_distance: f64,
+        skip: &impl Fn(&Leaf) -> bool,
+    ) -> Option<SurfaceHit> {
+        let usable = ray.origin.is_finite()
+            && ray.direction.is_finite()
+            && ray.direction != DVec3::ZERO
+            && min_distance < max_distance;
+        if !usable {
+            return None;
+        }
+        let inverse_direction = DVec3::ONE / ray.direction;
+        let mut closest = max_distance;
+        let mut best = None;
+        for primitive in &self.unbounded {
+            if let Some(found) =
+                primitive.nearest(ray, inverse_direction, min_distance, closest, skip)
+            {
+                closest = found.0;
+                best = Some(found);
+            }
+        }
+        let from_bvh = self.bvh.nearest_hit(
+            ray.origin,
+            inverse_direction,
+            min_distance,
+            closest,
+            |at, limit| {
+                self.primitives[at].nearest(ray, inverse_direction, min_distance, limit, skip)
+            },
+        );
+        if from_bvh.is_some() {
+            best = from_bvh;
+        }
+        let (distance, pending) = best?;
+        let point = ray.at(distance);
+        let normal = pending.leaf.normal(point, pending.part);
+        Some(SurfaceHit {
+            distance,
+            point,
+            normal: if pending.flip { -normal } else { normal },
+            material: pending.leaf.material(),
+        })
+    }
+}
