@@ -196,8 +196,11 @@ impl Evaluator {
     fn run_directive(&mut self, directive: &Rc<Directive>, stream: &mut Stream) -> EvalResult<()> {
         let span = directive.span;
         match &directive.kind {
-            DirectiveKind::Declare { local, target, value } => {
+            DirectiveKind::Declare { local, target, value, layers } => {
                 let value = self.item_value(value)?;
+                if let Some(layer) = layers.first() {
+                    self.warn(layer.span, "layered textures are not supported yet; only the first layer is used");
+                }
                 self.assign(*local, target, value)?;
             }
             DirectiveKind::Undef(name, _) => {

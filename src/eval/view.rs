@@ -87,10 +87,11 @@ impl Evaluator {
                 self.warn(block.head_span, "`normal` perturbation is not supported yet; it is ignored");
                 Ok(Value::Float(0.0))
             }
-            _ if UNSUPPORTED_BLOCKS.contains(&head) => Err(self
-                .error(block.head_span, format!("`{head}` is not supported yet"))
-                .with_label("not supported yet")
-                .into()),
+            _ if UNSUPPORTED_BLOCKS.contains(&head) => {
+                // Leave the feature out of the picture but say so, so the rest still renders.
+                self.warn(block.head_span, format!("`{head}` is not supported yet; it is left out"));
+                Ok(Value::Float(0.0))
+            }
             _ => {
                 let mut d = self.error(block.head_span, format!("unknown block keyword `{head}`")).with_label("not a POV-Ray block");
                 let candidates = BLOCK_KEYWORDS.iter().chain(UNSUPPORTED_BLOCKS).copied();
@@ -212,7 +213,10 @@ impl Evaluator {
                     }
                     "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "cylinder" | "spherical"
                     | "mesh_camera" => {
-                        return Err(self.error(*span, format!("`{word}` cameras are not supported yet")).into())
+                        self.warn(*span, format!("`{word}` cameras are not supported yet; a perspective camera is used"));
+                        if *word == *"cylinder" {
+                            let _ = self.expect_value(stream, "the cylinder camera type")?;
+                        }
                     }
                     "focal_point" | "aperture" | "blur_samples" | "confidence" | "variance" => {
                         self.warn(*span, format!("camera `{word}` (focal blur) is not supported yet; it is ignored"));

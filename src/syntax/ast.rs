@@ -382,7 +382,7 @@ pub enum SwitchLabel {
 #[derive(Debug)]
 pub enum DirectiveKind {
     /// `#declare` (global) or `#local` (innermost scope).
-    Declare { local: bool, target: Target, value: Item },
+    Declare { local: bool, target: Target, value: Item, layers: Vec<Rc<Block>> },
     /// `#undef Name`.
     Undef(Name, Span),
     /// `#if`, `#ifdef`, `#ifndef` with `#elseif`/`#else` branches (an `#ifdef` test is

@@ -356,7 +356,12 @@ impl Lowerer {
                     _ => Some(Item::Directive(Rc::new(self.directive(p)))),
                 });
                 let value = value.unwrap_or(Item::Comma(span));
-                DirectiveKind::Declare { local: rule == Rule::local, target, value }
+                let layers = inner
+                    .filter(|p| p.as_rule() == Rule::texture_layer)
+                    .filter_map(|p| p.into_inner().find(|b| b.as_rule() == Rule::block))
+                    .map(|b| Rc::new(self.block(b)))
+                    .collect();
+                DirectiveKind::Declare { local: rule == Rule::local, target, value, layers }
             }
             Rule::undef => {
                 let name = inner.next().expect("undef name");

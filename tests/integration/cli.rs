@@ -1,0 +1,88 @@
+//! The real binary: exit codes, output files, determinism.
+
+use crate::{scratch, tests_folder};
+use std::process::Command;
+
+fn durer() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_durer"))
+}
+
+const SMALL_SCENE: &str = "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n\
+    camera { location <0, 1, -4> look_at 0 }\nlight_source { <5, 5, -5> rgb 1 }\n\
+    sphere { 0, 1 pigment { rgb <1, 0.5, 0.2> } finish { phong 0.5 } }\n\
+    plane { y, -1 pigment { checker rgb 1, rgb 0.2 } }\n";
+
+fn path(p: &std::path::Path) -> &str {
+    p.to_str().expect("utf-8 path")
+}
+
+#[test]
+fn render_writes_a_png_and_exits_zero() {
+    let dir = scratch("render");
+    let scene = dir.join("scene.pov");
+    std::fs::write(&scene, SMALL_SCENE).unwrap();
+    let status = durer()
+        .args(["render", path(&scene), "--width", "32", "--height", "24", "--quiet"])
+        .status()
+        .unwrap();
+    assert_eq!(status.code(), Some(0));
+    let image = image::open(dir.join("scene.png")).expect("default output next to the scene");
+    assert_eq!((image.width(), image.height()), (32, 24));
+}
+
+#[test]
+fn scene_error_exits_one_and_keeps_the_old_image() {
+    let dir = scratch("error");
+    let scene = dir.join("bad.pov");
+    std::fs::write(&scene, "sphere { 0, 1 pigmnet { rgb 1 } }\n").unwrap();
+    let output = dir.join("out.png");
+    std::fs::write(&output, b"previous image").unwrap();
+    let result = durer().args(["render", path(&scene), "-o", path(&output)]).output().unwrap();
+    assert_eq!(result.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert!(stderr.contains("bad.pov:1:15"), "{stderr}");
+    assert!(stderr.contains("did you mean `pigment`?"), "{stderr}");
+    assert_eq!(std::fs::read(&output).unwrap(), b"previous image");
+}
+
+#[test]
+fn usage_error_exits_two() {
+    let result = durer().args(["render", "--no-such-flag"]).output().unwrap();
+    assert_eq!(result.status.code(), Some(2));
+}
+
+#[test]
+fn missing_scene_file_exits_one() {
+    let result = durer().args(["check", "/no/such/scene.pov"]).output().unwrap();
+    assert_eq!(result.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&result.stderr).contains("cannot read"));
+}
+
+#[test]
+fn check_prints_a_summary() {
+    let scene = tests_folder().join("language").join("objects.pov");
+    let result = durer().args(["check", path(&scene)]).output().unwrap();
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(0), "{stderr}");
+    let stdout = String::from_utf8_lossy(&result.stdout);
+    assert!(stdout.contains("16 objects") && stdout.contains("lights"), "{stdout}");
+}
+
+#[test]
+fn output_is_identical_for_any_thread_count() {
+    let dir = scratch("threads");
+    let scene = dir.join("scene.pov");
+    std::fs::write(&scene, SMALL_SCENE).unwrap();
+    let mut images = Vec::new();
+    for threads in ["1", "4"] {
+        let out = dir.join(format!("t{threads}.png"));
+        let status = durer()
+            .args(["render", path(&scene), "-o", path(&out), "--width", "64", "--height", "48"])
+            .args(["--threads", threads, "--quiet"])
+            .status()
+            .unwrap();
+        assert_eq!(status.code(), Some(0));
+        images.push(std::fs::read(out).unwrap());
+    }
+    assert_eq!(images[0], images[1]);
+}

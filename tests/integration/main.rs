@@ -1,0 +1,31 @@
+//! Integration tests: language cases, diagnostics and the command line.
+
+mod cli;
+mod diagnostics;
+mod language;
+
+use std::path::{Path, PathBuf};
+
+/// The repository's `tests/` folder.
+pub fn tests_folder() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests")
+}
+
+/// Evaluates a scene file on a thread with a large stack, as the CLI does.
+pub fn evaluate(path: &Path) -> durer::eval::Evaluated {
+    let path = path.to_path_buf();
+    std::thread::Builder::new()
+        .stack_size(1 << 30)
+        .spawn(move || durer::eval::evaluate_file(&path, &durer::eval::EvalOptions::default()))
+        .expect("spawn evaluator")
+        .join()
+        .expect("evaluator thread")
+}
+
+/// A fresh scratch folder for one test.
+pub fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("durer-test-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("create scratch folder");
+    dir
+}
