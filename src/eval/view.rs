@@ -214,7 +214,7 @@ impl Evaluator {
                     "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "cylinder" | "spherical"
                     | "mesh_camera" => {
                         self.warn(*span, format!("`{word}` cameras are not supported yet; a perspective camera is used"));
-                        if *word == *"cylinder" {
+                        if &**word == "cylinder" {
                             let _ = self.expect_value(stream, "the cylinder camera type")?;
                         }
                     }
