@@ -1,0 +1,347 @@
+#!/usr/bin/env python3
+"""Render the conformance corpus with POV-Ray and durer and compare the images.
+
+usage: scripts/conformance.py [--corpus FILE] [--durer PATH] [--jobs N] [--timeout S]
+                              [--out docs/conformance.md] [--filter SUBSTR]
+
+The corpus (default ../shared/corpus.txt from the repository root) lists POV-Ray's example
+scenes, one per line: `path<TAB>tier<TAB>yes|no`, paths relative to
+/usr/share/doc/povray/examples; lines starting with `#` are comments. Each scene's folder is
+copied into conformance-work/ (git-ignored) and rendered there at 160x120 by
+
+    povray -D +Iscene.pov +Oout.png +W160 +H120 -GA +WT1 +L<include> +L<scene folder>
+    durer render scene.pov -o out.png --width 160 --height 120 -L <include> --quiet
+
+POV-Ray renders are cached in conformance-work/povray-cache/, keyed by scene path and
+modification time, so reruns only pay for durer. Results are classified as
+
+    match   at most 2% of pixels differ by more than 24/255 in a channel
+    close   4x4-block means differ by at most 6/255 on average
+    differ  neither
+    error   durer failed (exit status, timeout, missing or unreadable image, wrong size)
+    skip    POV-Ray failed, or the corpus marks the scene as not rendering
+
+and written as a Markdown report (default docs/conformance.md); the summary is also printed.
+Standard library only.
+"""
+
+import argparse
+import concurrent.futures
+import datetime
+import hashlib
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import imagediff  # noqa: E402
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+WORK = os.path.join(REPO, "conformance-work")
+CACHE = os.path.join(WORK, "povray-cache")
+EXAMPLES = "/usr/share/doc/povray/examples"
+INCLUDE = "/usr/share/povray-3.7/include"
+WIDTH, HEIGHT = 160, 120
+CLASSES = ["match", "close", "differ", "error", "skip"]
+# Bump when the POV-Ray command changes, so stale cache entries are not reused.
+CACHE_VERSION = 1
+
+
+class Entry:
+    """One corpus line."""
+
+    def __init__(self, path, tier, renders, order):
+        self.path = path
+        self.tier = tier
+        self.renders = renders
+        self.order = order
+
+    @property
+    def source(self):
+        return self.path if os.path.isabs(self.path) else os.path.join(EXAMPLES, self.path)
+
+    @property
+    def slug(self):
+        return re.sub(r"[^A-Za-z0-9_.-]+", "_", self.path.replace(".pov", ""))
+
+
+class Result:
+    """The outcome for one scene."""
+
+    def __init__(self, entry, verdict, note="", comparison=None, povray_time=None,
+                 durer_time=None):
+        self.entry = entry
+        self.verdict = verdict
+        self.note = note
+        self.comparison = comparison
+        self.povray_time = povray_time
+        self.durer_time = durer_time
+
+
+def read_corpus(path):
+    entries = []
+    with open(path, encoding="utf-8") as handle:
+        for number, line in enumerate(handle, 1):
+            line = line.rstrip("\n")
+            if not line.strip() or line.lstrip().startswith("#"):
+                continue
+            fields = line.split("\t") if "\t" in line else line.split()
+            if len(fields) < 3:
+                raise SystemExit(f"{path}:{number}: expected path<TAB>tier<TAB>yes|no")
+            renders = fields[2].strip().lower()
+            if renders not in ("yes", "no"):
+                raise SystemExit(f"{path}:{number}: third column must be yes or no")
+            entries.append(Entry(fields[0].strip(), fields[1].strip(), renders == "yes",
+                                 len(entries)))
+    return entries
+
+
+def run_command(command, cwd, timeout):
+    """Run a command in its own process group; returns (exit code or None, stderr, seconds)."""
+    start = time.monotonic()
+    process = subprocess.Popen(command, cwd=cwd, stdin=subprocess.DEVNULL,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                               start_new_session=True)
+    try:
+        _, stderr = process.communicate(timeout=timeout)
+        code = process.returncode
+    except subprocess.TimeoutExpired:
+        # The group holds only the process started here and its own children.
+        os.killpg(process.pid, signal.SIGKILL)
+        _, stderr = process.communicate()
+        code = None
+    return code, stderr.decode("utf-8", "replace"), time.monotonic() - start
+
+
+def describe_failure(code, stderr, timeout, pick_error_line=False):
+    if code is None:
+        return f"timeout after {timeout:g} s"
+    lines = [line.strip() for line in stderr.splitlines() if line.strip()]
+    if pick_error_line:
+        # POV-Ray prints its banner first; the interesting line mentions an error.
+        errors = [line for line in lines if "error" in line.lower()]
+        lines = errors or lines[-1:]
+    first = lines[0] if lines else ""
+    status = f"killed by signal {-code}" if code < 0 else f"exit {code}"
+    return f"{status}: {first}" if first else status
+
+
+def fresh_copy(entry, kind):
+    """Copy the scene's folder into the scratch area; returns the copy's folder."""
+    target = os.path.join(WORK, "run", entry.slug, kind)
+    shutil.rmtree(target, ignore_errors=True)
+    shutil.copytree(os.path.dirname(entry.source), target, symlinks=True)
+    return target
+
+
+def povray_command(scene_name, output, folder):
+    return ["povray", "-D", f"+I{scene_name}", f"+O{output}", f"+W{WIDTH}", f"+H{HEIGHT}",
+            "-GA", "+WT1", f"+L{INCLUDE}", f"+L{folder}"]
+
+
+def povray_render(entry, timeout):
+    """Render with POV-Ray, or reuse the cache; returns (png path or None, seconds, note)."""
+    mtime = os.stat(entry.source).st_mtime_ns
+    key_text = f"{CACHE_VERSION}\0{entry.source}\0{mtime}\0{WIDTH}x{HEIGHT}"
+    key = hashlib.sha1(key_text.encode()).hexdigest()[:12]
+    png = os.path.join(CACHE, f"{entry.slug}-{key}.png")
+    record_path = os.path.join(CACHE, f"{entry.slug}-{key}.json")
+    if os.path.exists(record_path):
+        with open(record_path, encoding="utf-8") as handle:
+            record = json.load(handle)
+        # A render that timed out is retried when a longer timeout is allowed.
+        retry = record.get("timed_out") and timeout > record.get("timeout", 0)
+        if (record["ok"] and os.path.exists(png)) or (not record["ok"] and not retry):
+            return (png if record["ok"] else None), record["seconds"], record["note"]
+    folder = fresh_copy(entry, "povray")
+    partial = png + ".partial.png"
+    code, stderr, seconds = run_command(
+        povray_command(os.path.basename(entry.source), partial, folder), folder, timeout)
+    ok = code == 0 and os.path.exists(partial)
+    note = ""
+    if code is not None and code != 0:
+        # -GA hides POV-Ray's diagnostics; rerun with messages on to say why it failed.
+        verbose = [arg for arg in povray_command(os.path.basename(entry.source), partial, folder)
+                   if arg != "-GA"]
+        _, stderr, _ = run_command(verbose, folder, timeout)
+    if not ok:
+        note = "povray " + describe_failure(code, stderr, timeout, pick_error_line=True)
+    if code == 0 and not ok:
+        note = "povray wrote no image"
+    if ok:
+        os.replace(partial, png)
+    elif os.path.exists(partial):
+        os.remove(partial)
+    shutil.rmtree(os.path.dirname(folder), ignore_errors=True)
+    with open(record_path, "w", encoding="utf-8") as handle:
+        json.dump({"scene": entry.source, "ok": ok, "seconds": seconds, "note": note,
+                   "timed_out": code is None, "timeout": timeout}, handle)
+    return (png if ok else None), seconds, note
+
+
+def durer_render(entry, durer, timeout):
+    """Render with durer; returns (png path or None, seconds, note)."""
+    folder = fresh_copy(entry, "durer")
+    output = os.path.join(WORK, "durer-out", entry.slug + ".png")
+    if os.path.exists(output):
+        os.remove(output)
+    command = [durer, "render", os.path.basename(entry.source), "-o", output,
+               "--width", str(WIDTH), "--height", str(HEIGHT), "-L", INCLUDE, "--quiet"]
+    code, stderr, seconds = run_command(command, folder, timeout)
+    shutil.rmtree(os.path.dirname(folder), ignore_errors=True)
+    if code != 0:
+        return None, seconds, describe_failure(code, stderr, timeout)
+    if not os.path.exists(output):
+        return None, seconds, "exit 0 but no image written"
+    return output, seconds, ""
+
+
+def run_scene(entry, durer, timeout):
+    if not entry.renders:
+        return Result(entry, "skip", "corpus: does not render in POV-Ray")
+    reference, povray_time, note = povray_render(entry, timeout)
+    if reference is None:
+        return Result(entry, "skip", note, povray_time=povray_time)
+    output, durer_time, note = durer_render(entry, durer, timeout)
+    result = Result(entry, "error", note, povray_time=povray_time, durer_time=durer_time)
+    if output is None:
+        return result
+    try:
+        comparison = imagediff.compare(imagediff.read_png(reference), imagediff.read_png(output))
+    except (OSError, imagediff.PngError, ValueError) as error:
+        result.note = f"bad image: {error}"
+        return result
+    result.verdict = comparison.verdict()
+    result.comparison = comparison
+    result.note = f"max diff {comparison.max_diff:.0f}" if result.verdict != "match" else ""
+    return result
+
+
+def counts(results):
+    tally = {name: 0 for name in CLASSES}
+    for result in results:
+        tally[result.verdict] += 1
+    return ", ".join(f"{tally[name]} {name}" for name in CLASSES)
+
+
+def summary_lines(results):
+    lines = [f"{len(results)} scenes: {counts(results)}"]
+    for tier in sorted({r.entry.tier for r in results}):
+        in_tier = [r for r in results if r.entry.tier == tier]
+        lines.append(f"tier {tier} ({len(in_tier)} scenes): {counts(in_tier)}")
+    return lines
+
+
+def seconds_text(value):
+    return "" if value is None else f"{value:.2f}"
+
+
+def markdown_cell(text, limit=140):
+    text = text.replace("|", "\\|").replace("\n", " ")
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def write_report(path, results, args, wall):
+    lines = [
+        "# Conformance against POV-Ray 3.7",
+        "",
+        f"Generated by `scripts/conformance.py` on {datetime.date.today().isoformat()}: "
+        f"{WIDTH}x{HEIGHT}, timeout {args.timeout:g} s, {args.jobs} jobs in parallel "
+        f"(times are wall-clock seconds; POV-Ray single-threaded, cached times are from "
+        f"the run that filled the cache). Total run time {wall:.0f} s.",
+        "",
+        "**match**: at most 2% of pixels differ by more than 24/255 in a channel; "
+        "**close**: 4x4-block means differ by at most 6/255 on average; "
+        "**error**: durer failed; **skip**: POV-Ray failed or the corpus says it does not "
+        "render.",
+        "",
+    ]
+    lines += [f"- {line}" for line in summary_lines(results)]
+    lines += [
+        "",
+        "| scene | tier | result | over 24/255 | block diff | povray s | durer s | note |",
+        "|---|---|---|---:|---:|---:|---:|---|",
+    ]
+    for r in results:
+        c = r.comparison
+        over = f"{100 * c.fraction_over:.2f}%" if c else ""
+        block = f"{c.block_diff:.2f}" if c else ""
+        lines.append(
+            f"| {r.entry.path} | {r.entry.tier} | {r.verdict} | {over} | {block} | "
+            f"{seconds_text(r.povray_time)} | {seconds_text(r.durer_time)} | "
+            f"{markdown_cell(r.note)} |"
+        )
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write("\n".join(lines) + "\n")
+
+
+def default_durer():
+    for profile in ("release", "debug"):
+        candidate = os.path.join(REPO, "target", profile, "durer")
+        if os.path.exists(candidate):
+            return candidate
+    return os.path.join(REPO, "target", "release", "durer")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--corpus", default=os.path.join(REPO, "..", "shared", "corpus.txt"))
+    parser.add_argument("--durer", default=None,
+                        help="durer binary (default target/release/durer, else target/debug)")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    parser.add_argument("--timeout", type=float, default=60.0, help="seconds per render")
+    parser.add_argument("--out", default=os.path.join(REPO, "docs", "conformance.md"))
+    parser.add_argument("--filter", default="", help="only scenes whose path contains this")
+    args = parser.parse_args()
+
+    durer = os.path.abspath(args.durer) if args.durer else default_durer()
+    if not os.path.exists(durer):
+        print(f"error: durer binary not found at {durer}; run `cargo build --release` "
+              "or pass --durer PATH", file=sys.stderr)
+        return 2
+    if shutil.which("povray") is None:
+        print("error: povray not found on PATH; install POV-Ray 3.7 "
+              "(e.g. `sudo apt-get install povray povray-includes povray-examples`)",
+              file=sys.stderr)
+        return 2
+    entries = [e for e in read_corpus(args.corpus) if args.filter in e.path]
+    if not entries:
+        print("error: no corpus entries selected", file=sys.stderr)
+        return 2
+    os.makedirs(CACHE, exist_ok=True)
+    os.makedirs(os.path.join(WORK, "durer-out"), exist_ok=True)
+
+    start = time.monotonic()
+    results = []
+    lock = threading.Lock()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = {pool.submit(run_scene, e, durer, args.timeout): e for e in entries}
+        for future in concurrent.futures.as_completed(futures):
+            entry = futures[future]
+            try:
+                result = future.result()
+            except Exception as error:  # a harness bug must not lose the whole run
+                result = Result(entry, "error", f"harness: {type(error).__name__}: {error}")
+            with lock:
+                results.append(result)
+                print(f"[{len(results)}/{len(entries)}] {entry.path}: {result.verdict}"
+                      + (f" ({result.note})" if result.note else ""), file=sys.stderr)
+    wall = time.monotonic() - start
+    results.sort(key=lambda r: r.entry.order)
+    write_report(args.out, results, args, wall)
+    for line in summary_lines(results):
+        print(line)
+    print(f"report: {os.path.abspath(args.out)} ({wall:.0f} s)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
