@@ -6,7 +6,7 @@ RGBA, all five scanline filters, and Adam7 interlacing. Pixels come back as RGB
 in the 0..255 scale (16-bit samples are divided by 257, so they stay floats);
 alpha is dropped because POV-Ray writes opaque images unless asked otherwise.
 
-The metric (the same definition as tests/reference_images.rs):
+The metric (the same definition as tests/integration/reference_images.rs):
 
 * a pixel is *over* when any channel differs by more than 24/255;
 * an image *matches* when at most 2% of pixels are over (the tolerance);

@@ -3,6 +3,7 @@
 mod cli;
 mod diagnostics;
 mod language;
+mod reference_images;
 
 use std::path::{Path, PathBuf};
 
