@@ -142,6 +142,8 @@ impl Evaluator {
                 if count >= LOOP_ITERATION_LIMIT {
                     return Err(self.loop_limit(directive.span));
                 }
+                // The variable ends one step past the last value, as in POV-Ray.
+                self.assign_local(variable, Value::Float(next));
                 if for_continues(next, end, step) {
                     if let Some(Frame { kind: FrameKind::For { value, .. }, position, .. }) =
                         stream.frames.last_mut()
@@ -149,7 +151,6 @@ impl Evaluator {
                         *value = next;
                         *position = 0;
                     }
-                    self.assign_declare(variable, Value::Float(next));
                     return Ok(());
                 }
             }
@@ -181,10 +182,11 @@ impl Evaluator {
             .into()
     }
 
-    /// `#declare`-style assignment of a plain name.
-    pub(crate) fn assign_declare(&mut self, name: &Rc<str>, value: Value) {
-        let (scope, name) = self.declare_slot(name);
-        self.scopes[scope].insert(name, value);
+    /// `#local`-style assignment of a plain name in the innermost scope.
+    pub(crate) fn assign_local(&mut self, name: &Rc<str>, value: Value) {
+        if let Some(scope) = self.scopes.last_mut() {
+            scope.insert(name.clone(), value);
+        }
     }
 
     pub(crate) fn eval_condition(&mut self, condition: &Expr) -> EvalResult<bool> {
@@ -252,7 +254,8 @@ impl Evaluator {
                 if step == 0.0 {
                     return Err(self.error(span, "`#for` step is zero").with_label("this loop would never end").into());
                 }
-                self.assign_declare(variable, Value::Float(start));
+                // POV-Ray makes the loop variable local to the current macro or file.
+                self.assign_local(variable, Value::Float(start));
                 if for_continues(start, end, step) {
                     let kind = FrameKind::For { directive: directive.clone(), value: start, end, step, iterations: 0 };
                     stream.push(body.clone(), kind);

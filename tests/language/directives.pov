@@ -16,6 +16,10 @@ Check(Sum = 45, "#while sums 0..9")
 #declare Sum = 0;
 #for (J, 1, 10, 2) #declare Sum = Sum + J; #end
 Check(Sum = 25, "#for with step")
+Check(J = 11, "the #for variable ends one step past the end")
+#macro LoopInMacro() #for (LoopVar, 1, 3) #end #end
+LoopInMacro()
+#ifdef (LoopVar) #error "a #for variable inside a macro leaked out" #end
 #declare Sum = 0;
 #for (J, 5, 1, -1) #declare Sum = Sum + J; #end
 Check(Sum = 15, "#for counting down")
