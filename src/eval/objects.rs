@@ -259,7 +259,7 @@ impl Evaluator {
             _ => {
                 let (value, vspan) = self.expect_value(stream, "a transform")?;
                 match value {
-                    Value::Transform(t) => t,
+                    Value::Transform(t) => *t,
                     other => {
                         return Err(self.error(vspan, format!("expected a transform, found {}", other.type_name())).into())
                     }

@@ -378,7 +378,7 @@ impl Evaluator {
                 .into());
         }
         // Evaluate arguments in the caller's scope; plain identifiers are passed by reference.
-        let mut scope = Scope::with_capacity(definition.parameters.len());
+        let mut scope = Scope::with_capacity_and_hasher(definition.parameters.len(), Default::default());
         let caller_scope = self.scopes.len() - 1;
         for (parameter, argument) in definition.parameters.iter().zip(&call.arguments) {
             let value = match argument {

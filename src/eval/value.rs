@@ -32,8 +32,8 @@ pub enum Value {
     Interior(Rc<Interior>),
     /// A colour map.
     ColourMap(Rc<Vec<(f64, Colour)>>),
-    /// A transformation.
-    Transform(Transform),
+    /// A transformation (boxed: it is large and rare).
+    Transform(Rc<Transform>),
     /// A camera.
     Camera(Rc<Camera>),
     /// A light source.

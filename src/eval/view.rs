@@ -81,7 +81,7 @@ impl Evaluator {
             "finish" => Ok(Value::Finish(Rc::new(self.eval_finish(stream, None)?))),
             "interior" => Ok(Value::Interior(Rc::new(self.eval_interior(stream)?))),
             "color_map" | "colour_map" => Ok(Value::ColourMap(Rc::new(self.eval_colour_map(stream)?))),
-            "transform" => Ok(Value::Transform(self.eval_transform_block(stream)?)),
+            "transform" => Ok(Value::Transform(Rc::new(self.eval_transform_block(stream)?))),
             "material" => Ok(Value::Texture(std::sync::Arc::new(self.eval_material(stream)?.0))),
             "normal" => {
                 self.warn(block.head_span, "`normal` perturbation is not supported yet; it is ignored");
@@ -225,7 +225,7 @@ impl Evaluator {
                     _ => return Err(self.unexpected_in(&item, "camera")),
                 },
                 Item::Block(block) => match self.eval_block(block)? {
-                    Value::Transform(t) => transforms.push(t),
+                    Value::Transform(t) => transforms.push(*t),
                     Value::Camera(c) => camera = Rc::unwrap_or_clone(c),
                     _ if matches!(&block.head, BlockHead::Word(w) if &**w == "normal") => {}
                     _ => return Err(self.unexpected_in(&item, "camera")),
