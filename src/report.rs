@@ -104,7 +104,7 @@ pub fn to_report(diagnostic: &Diagnostic, sources: &SourceMap) -> Report {
 pub fn render_plain(diagnostic: &Diagnostic, sources: &SourceMap) -> String {
     let report = to_report(diagnostic, sources);
     let handler = miette::GraphicalReportHandler::new_themed(miette::GraphicalTheme::unicode_nocolor())
-        .with_width(100);
+        .with_width(1000);
     let mut out = String::new();
     if handler.render_report(&mut out, &report).is_err() {
         out = report.message.clone();
