@@ -29,6 +29,19 @@ impl Evaluator {
                         let t = self.transform_keyword(word, *span, stream)?;
                         transform_pigment(&mut texture.pigment, &t);
                     }
+                    "uv_mapping" => {
+                        self.warn(*span, "`uv_mapping` is not supported yet; it is ignored");
+                    }
+                    w if w == "gradient" || w == "checker" || UNSUPPORTED_PATTERNS.contains(&w) => {
+                        self.warn(*span, format!("texture patterns (`{w}` in `texture`) are not supported yet; it is ignored"));
+                        if w == "gradient" {
+                            let _ = self.expect_value(stream, "a direction")?;
+                        }
+                    }
+                    "turbulence" | "octaves" | "omega" | "lambda" | "frequency" | "phase" => {
+                        self.warn(*span, format!("texture `{word}` is not supported yet; it is ignored"));
+                        let _ = self.expect_value(stream, "a value")?;
+                    }
                     _ => return Err(self.unexpected_in(&item, "texture")),
                 },
                 Item::Block(block) => {
@@ -42,7 +55,7 @@ impl Evaluator {
                     match self.eval_block(block)? {
                         Value::Pigment(p) => texture.pigment = Rc::unwrap_or_clone(p),
                         Value::Transform(t) => transform_pigment(&mut texture.pigment, &t),
-                        Value::Float(_) => {} // ignored normal
+                        Value::Nothing => {} // a left-out block such as `normal`
                         _ => return Err(self.unexpected_in(&item, "texture")),
                     }
                 }
@@ -101,6 +114,26 @@ impl Evaluator {
                     "ramp_wave" | "triangle_wave" | "sine_wave" | "scallop_wave" | "cubic_wave" => {
                         self.warn(*span, format!("`{word}` is not supported yet; it is ignored"));
                     }
+                    "filter" | "transmit" => {
+                        let amount = self.expect_float(stream, "a float")?;
+                        if let Pigment::Solid(colour) = &mut pigment {
+                            if &**word == "filter" {
+                                colour.filter = amount;
+                            } else {
+                                colour.transmit = amount;
+                            }
+                        }
+                    }
+                    "quick_color" | "quick_colour" => {
+                        let _ = self.expect_value(stream, "a colour")?;
+                    }
+                    "agate_turb" => {
+                        self.warn(*span, "`agate_turb` is not supported yet; it is ignored");
+                        let _ = self.expect_value(stream, "a value")?;
+                    }
+                    "uv_mapping" => {
+                        self.warn(*span, "`uv_mapping` is not supported yet; it is ignored");
+                    }
                     "poly_wave" => {
                         self.warn(*span, "`poly_wave` is not supported yet; it is ignored");
                         let _ = self.optional_bool(stream)?;
@@ -127,6 +160,7 @@ impl Evaluator {
                         Value::ColourMap(map) if is_colour_map => colour_map = Some((*map).clone()),
                         Value::Transform(t) => transform_pigment(&mut pigment, &t),
                         Value::Pigment(p) => pigment = Rc::unwrap_or_clone(p),
+                        Value::Nothing => {}
                         _ => return Err(self.unexpected_in(&item, "pigment")),
                     }
                 }
@@ -400,7 +434,7 @@ impl Evaluator {
                 Value::Texture(t) => texture = (*t).clone(),
                 Value::Pigment(p) => texture.pigment = Rc::unwrap_or_clone(p),
                 Value::Finish(f) => texture.finish = Rc::unwrap_or_clone(f),
-                Value::Float(_) => {}
+                Value::Nothing => {}
                 _ => return Err(self.unexpected_in(&item, "#default")),
             }
             self.set_default_texture(texture);

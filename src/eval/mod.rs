@@ -348,7 +348,7 @@ impl Evaluator {
             Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),
             Value::Light(light) => self.lights.push(Rc::unwrap_or_clone(light)),
             Value::Colour(colour) if matches!(item, Item::Block(_)) => self.background = colour,
-            Value::Float(_) if matches!(item, Item::Block(_)) => {} // settings blocks
+            Value::Nothing => {} // settings blocks and left-out features
             other => {
                 return Err(self
                     .error(span, format!("expected an object, camera or light, found {}", other.type_name()))

@@ -13,12 +13,14 @@ use std::sync::Arc;
 
 impl Evaluator {
     /// Evaluates the body of an object block (`head` is its keyword).
-    pub(crate) fn eval_object(&mut self, head: &str, block: &Block, stream: &mut Stream) -> EvalResult<Object> {
+    /// `None` when the object is a feature durer leaves out (already warned about).
+    pub(crate) fn eval_object(&mut self, head: &str, block: &Block, stream: &mut Stream) -> EvalResult<Option<Object>> {
         let mut object = match head {
             "object" => {
                 let (value, span) = self.expect_value(stream, "an object")?;
                 match value {
                     Value::Object(o) => Rc::unwrap_or_clone(o),
+                    Value::Nothing => return Ok(None),
                     other => {
                         return Err(self
                             .error(span, format!("expected an object, found {}", other.type_name()))
@@ -55,14 +57,14 @@ impl Evaluator {
                         }
                     }
                 }
-                return Ok(object);
+                return Ok(Some(object));
             }
             _ => Object::new(self.eval_shape(head, block, stream)?),
         };
         while let Some(item) = self.next_item(stream)? {
             self.object_modifier(&mut object, item, stream, head)?;
         }
-        Ok(object)
+        Ok(Some(object))
     }
 
     /// Reads a shape's required parameters.
@@ -156,10 +158,6 @@ impl Evaluator {
             },
             Item::Block(block) => {
                 if let crate::syntax::ast::BlockHead::Word(w) = &block.head {
-                    if matches!(&**w, "bounded_by" | "clipped_by" | "photons" | "radiosity") {
-                        self.warn(block.head_span, format!("`{w}` is not supported yet; it is ignored"));
-                        return Ok(());
-                    }
                     if &**w == "material" {
                         let mut body = Stream::new(block.body.clone());
                         let (texture, interior) = self.eval_material(&mut body)?;
@@ -213,7 +211,7 @@ impl Evaluator {
             }
             Value::Interior(interior) => object.interior = Some(Rc::unwrap_or_clone(interior)),
             Value::Transform(t) => apply_transform(object, &t),
-            Value::Float(_) => {} // an ignored block such as `normal { .. }`
+            Value::Nothing => {} // a left-out block such as `normal { .. }`
             other => {
                 return Err(self
                     .error(span, format!("{} cannot modify an object", other.type_name()))

@@ -42,6 +42,8 @@ pub enum Value {
     Macro(Rc<MacroDefinition>),
     /// A user-defined function.
     Function(Rc<FunctionLiteral>),
+    /// What a block durer does not support yet evaluates to: it is left out of the scene.
+    Nothing,
     /// A parameter passed by reference: the caller's variable `name` in scope `scope`.
     Reference { scope: usize, name: Rc<str> },
 }
@@ -106,6 +108,7 @@ impl Value {
             Value::Macro(_) => "a macro",
             Value::Function(_) => "a function",
             Value::Reference { .. } => "a reference",
+            Value::Nothing => "a left-out feature",
         }
     }
 }

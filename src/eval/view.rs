@@ -20,9 +20,11 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
 const UNSUPPORTED_BLOCKS: &[&str] = &[
-    "bicubic_patch", "blob", "fog", "height_field", "isosurface", "julia_fractal", "lathe",
+    "bicubic_patch", "blob", "fog", "bounded_by", "clipped_by", "photons", "radiosity",
+    "looks_like", "projected_through", "warp", "image_map", "bump_map", "material_map",
+    "uv_vectors", "irid", "subsurface", "media_attenuation", "height_field", "isosurface", "julia_fractal", "lathe",
     "media", "mesh", "mesh2", "parametric", "photons", "poly", "polygon", "prism", "rainbow",
-    "radiosity", "sky_sphere", "smooth_triangle", "sor", "sphere_sweep", "spline",
+    "sky_sphere", "smooth_triangle", "sor", "sphere_sweep", "spline",
     "superellipsoid", "text", "cubic", "quartic", "ovus", "lemon", "density", "pigment_map",
     "normal_map", "texture_map", "slope_map", "interior_texture",
 ];
@@ -62,7 +64,10 @@ impl Evaluator {
         match head {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "object" | "union" | "intersection" | "difference" | "merge" => {
-                Ok(Value::Object(Rc::new(self.eval_object(head, block, stream)?)))
+                Ok(match self.eval_object(head, block, stream)? {
+                    Some(object) => Value::Object(Rc::new(object)),
+                    None => Value::Nothing,
+                })
             }
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
@@ -74,7 +79,7 @@ impl Evaluator {
             }
             "global_settings" => {
                 self.eval_global_settings(stream)?;
-                Ok(Value::Float(0.0))
+                Ok(Value::Nothing)
             }
             "texture" => Ok(Value::Texture(std::sync::Arc::new(self.eval_texture(stream)?))),
             "pigment" => Ok(Value::Pigment(Rc::new(self.eval_pigment(stream)?))),
@@ -85,12 +90,12 @@ impl Evaluator {
             "material" => Ok(Value::Texture(std::sync::Arc::new(self.eval_material(stream)?.0))),
             "normal" => {
                 self.warn(block.head_span, "`normal` perturbation is not supported yet; it is ignored");
-                Ok(Value::Float(0.0))
+                Ok(Value::Nothing)
             }
             _ if UNSUPPORTED_BLOCKS.contains(&head) => {
                 // Leave the feature out of the picture but say so, so the rest still renders.
                 self.warn(block.head_span, format!("`{head}` is not supported yet; it is left out"));
-                Ok(Value::Float(0.0))
+                Ok(Value::Nothing)
             }
             _ => {
                 let mut d = self.error(block.head_span, format!("unknown block keyword `{head}`")).with_label("not a POV-Ray block");
@@ -227,7 +232,7 @@ impl Evaluator {
                 Item::Block(block) => match self.eval_block(block)? {
                     Value::Transform(t) => transforms.push(*t),
                     Value::Camera(c) => camera = Rc::unwrap_or_clone(c),
-                    _ if matches!(&block.head, BlockHead::Word(w) if &**w == "normal") => {}
+                    Value::Nothing => {}
                     _ => return Err(self.unexpected_in(&item, "camera")),
                 },
                 Item::Expr(expr) => match self.eval_expr(expr)? {
@@ -331,12 +336,18 @@ impl Evaluator {
                     "media_interaction" | "media_attenuation" => {
                         let _ = self.optional_bool(stream)?;
                     }
-                    "area_light" | "parallel" | "cylinder" | "looks_like" | "projected_through"
-                    | "jitter" | "adaptive" | "circular" | "orient" | "area_illumination" => {
-                        return Err(self
-                            .error(*span, format!("light source `{word}` is not supported yet"))
-                            .with_label("not supported yet")
-                            .into())
+                    "area_light" => {
+                        self.warn(*span, "`area_light` is not supported yet; a point light at its centre is used");
+                        for what in ["the first axis", "the second axis", "a size", "a size"] {
+                            let _ = self.expect_value(stream, what)?;
+                        }
+                    }
+                    "jitter" | "circular" | "orient" | "parallel" | "cylinder" => {
+                        self.warn(*span, format!("light source `{word}` is not supported yet; it is ignored"));
+                    }
+                    "adaptive" | "area_illumination" => {
+                        self.warn(*span, format!("light source `{word}` is not supported yet; it is ignored"));
+                        let _ = self.optional_bool(stream)?;
                     }
                     _ => return Err(self.unexpected_in(&item, "light_source")),
                 },
@@ -345,6 +356,7 @@ impl Evaluator {
                         light.position = t.point_to_outer(light.position);
                         spot.point_at = t.point_to_outer(spot.point_at);
                     }
+                    Value::Nothing => {}
                     _ => return Err(self.unexpected_in(&item, "light_source")),
                 },
                 Item::Comma(_) => {}
