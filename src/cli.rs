@@ -13,7 +13,11 @@ use std::time::Instant;
 const EVALUATION_STACK_BYTES: usize = 1 << 30;
 
 #[derive(Parser)]
-#[command(name = "durer", version, about = "Render POV-Ray 3.7 scenes with a recursive ray tracer")]
+#[command(
+    name = "durer",
+    version,
+    about = "Render POV-Ray 3.7 scenes with a recursive ray tracer"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -109,7 +113,10 @@ fn print_diagnostics(evaluated: &Evaluated, quiet: bool) -> bool {
         if colour {
             eprintln!("{:?}", miette::Report::new(report));
         } else {
-            eprint!("{}", durer::report::render_plain(diagnostic, &evaluated.sources));
+            eprint!(
+                "{}",
+                durer::report::render_plain(diagnostic, &evaluated.sources)
+            );
         }
     }
     failed
@@ -119,7 +126,9 @@ fn check(args: SceneArgs) -> i32 {
     let start = Instant::now();
     let evaluated = evaluate(&args.scene, eval_options(&args));
     let failed = print_diagnostics(&evaluated, false);
-    let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else { return 1 };
+    let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else {
+        return 1;
+    };
     let world = durer::geometry::World::build(scene);
     println!(
         "{}: ok, {} objects ({} primitives), {} lights, {:.3} s",
@@ -136,7 +145,9 @@ fn render(args: RenderArgs) -> i32 {
     let start = Instant::now();
     let evaluated = evaluate(&args.scene.scene, eval_options(&args.scene));
     let failed = print_diagnostics(&evaluated, args.quiet);
-    let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else { return 1 };
+    let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else {
+        return 1;
+    };
     let parse_time = start.elapsed();
 
     let mut pool = rayon::ThreadPoolBuilder::new();
@@ -151,13 +162,18 @@ fn render(args: RenderArgs) -> i32 {
         }
     };
     let render_start = Instant::now();
-    let options = durer::render::RenderOptions { width: args.scene.width.max(1), height: args.scene.height.max(1) };
+    let options = durer::render::RenderOptions {
+        width: args.scene.width.max(1),
+        height: args.scene.height.max(1),
+    };
     let show_progress = !args.quiet && std::io::stderr().is_terminal();
     let bar = show_progress.then(|| {
         let bar = indicatif::ProgressBar::new(u64::from(options.height));
         bar.set_style(
-            indicatif::ProgressStyle::with_template("{spinner} rendering [{bar:40}] {pos}/{len} rows {eta}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+            indicatif::ProgressStyle::with_template(
+                "{spinner} rendering [{bar:40}] {pos}/{len} rows {eta}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
         );
         bar
     });
@@ -172,7 +188,9 @@ fn render(args: RenderArgs) -> i32 {
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
-    let output = args.output.unwrap_or_else(|| args.scene.scene.with_extension("png"));
+    let output = args
+        .output
+        .unwrap_or_else(|| args.scene.scene.with_extension("png"));
     if let Err(error) = durer::render::write_png_atomic(&output, &image) {
         eprintln!("durer: cannot write {}: {error}", output.display());
         return 1;

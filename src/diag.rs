@@ -23,7 +23,11 @@ pub struct Span {
 impl Span {
     /// A span covering `start..end` of `file`.
     pub fn new(file: FileId, start: usize, end: usize) -> Span {
-        Span { file, start: start as u32, end: end as u32 }
+        Span {
+            file,
+            start: start as u32,
+            end: end as u32,
+        }
     }
 
     /// The smallest span covering both `self` and `other` (same file assumed).
@@ -31,7 +35,11 @@ impl Span {
         if self.file != other.file {
             return self;
         }
-        Span { file: self.file, start: self.start.min(other.start), end: self.end.max(other.end) }
+        Span {
+            file: self.file,
+            start: self.start.min(other.start),
+            end: self.end.max(other.end),
+        }
     }
 }
 
@@ -88,7 +96,10 @@ impl Diagnostic {
 
     /// A warning at `span` with `message`.
     pub fn warning(span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic { severity: Severity::Warning, ..Diagnostic::error(span, message) }
+        Diagnostic {
+            severity: Severity::Warning,
+            ..Diagnostic::error(span, message)
+        }
     }
 
     /// Sets the label shown under the main span.
@@ -136,7 +147,10 @@ impl SourceMap {
 
     /// Adds a file and returns its id.
     pub fn add(&mut self, path: &Path, text: Arc<str>) -> FileId {
-        self.files.push(SourceFile { path: path.to_path_buf(), text });
+        self.files.push(SourceFile {
+            path: path.to_path_buf(),
+            text,
+        });
         (self.files.len() - 1) as FileId
     }
 
@@ -147,18 +161,26 @@ impl SourceMap {
 
     /// 1-based line and column of a byte offset in a file.
     pub fn line_column(&self, id: FileId, offset: u32) -> (usize, usize) {
-        let Some(file) = self.file(id) else { return (0, 0) };
+        let Some(file) = self.file(id) else {
+            return (0, 0);
+        };
         let offset = (offset as usize).min(file.text.len());
         let before = &file.text[..floor_char_boundary(&file.text, offset)];
         let line = before.matches('\n').count() + 1;
-        let column = before.rfind('\n').map_or(before.len(), |n| before.len() - n - 1) + 1;
+        let column = before
+            .rfind('\n')
+            .map_or(before.len(), |n| before.len() - n - 1)
+            + 1;
         (line, column)
     }
 
     /// "file:line:col" for a span.
     pub fn describe(&self, span: Span) -> String {
         let (line, column) = self.line_column(span.file, span.start);
-        let name = self.file(span.file).map(|f| f.path.display().to_string()).unwrap_or_default();
+        let name = self
+            .file(span.file)
+            .map(|f| f.path.display().to_string())
+            .unwrap_or_default();
         format!("{name}:{line}:{column}")
     }
 }
@@ -171,7 +193,10 @@ fn floor_char_boundary(text: &str, mut offset: usize) -> usize {
 }
 
 /// The candidate closest to `name` by edit distance, if close enough to be a likely typo.
-pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+pub fn did_you_mean<'a>(
+    name: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<&'a str> {
     let limit = (name.chars().count() / 3).max(1);
     let mut best: Option<(usize, &str)> = None;
     for candidate in candidates {
@@ -179,7 +204,9 @@ pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str
             continue;
         }
         let distance = edit_distance(&name.to_lowercase(), &candidate.to_lowercase());
-        if distance <= limit && best.is_none_or(|(d, c)| distance < d || (distance == d && candidate < c)) {
+        if distance <= limit
+            && best.is_none_or(|(d, c)| distance < d || (distance == d && candidate < c))
+        {
             best = Some((distance, candidate));
         }
     }
@@ -194,13 +221,15 @@ fn edit_distance(a: &str, b: &str) -> usize {
     for (i, row) in rows.iter_mut().enumerate() {
         row[0] = i;
     }
-    for j in 0..=b.len() {
-        rows[0][j] = j;
+    for (j, cell) in rows[0].iter_mut().enumerate() {
+        *cell = j;
     }
     for i in 1..=a.len() {
         for j in 1..=b.len() {
             let cost = usize::from(a[i - 1] != b[j - 1]);
-            let mut d = (rows[i - 1][j] + 1).min(rows[i][j - 1] + 1).min(rows[i - 1][j - 1] + cost);
+            let mut d = (rows[i - 1][j] + 1)
+                .min(rows[i][j - 1] + 1)
+                .min(rows[i - 1][j - 1] + cost);
             if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
                 d = d.min(rows[i - 2][j - 2] + 1);
             }

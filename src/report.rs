@@ -43,7 +43,9 @@ impl miette::Diagnostic for Report {
     }
 
     fn help<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
-        self.help.as_ref().map(|h| Box::new(h) as Box<dyn fmt::Display>)
+        self.help
+            .as_ref()
+            .map(|h| Box::new(h) as Box<dyn fmt::Display>)
     }
 }
 
@@ -58,12 +60,22 @@ pub fn to_report(diagnostic: &Diagnostic, sources: &SourceMap) -> Report {
     let source = file.map(|f| NamedSource::new(f.path.display().to_string(), f.text.to_string()));
     let mut labels = Vec::new();
     if file.is_some() {
-        let span = SourceSpan::new((diagnostic.span.start as usize).into(), (diagnostic.span.end - diagnostic.span.start) as usize);
-        let label = if diagnostic.label.is_empty() { None } else { Some(diagnostic.label.clone()) };
+        let span = SourceSpan::new(
+            (diagnostic.span.start as usize).into(),
+            (diagnostic.span.end - diagnostic.span.start) as usize,
+        );
+        let label = if diagnostic.label.is_empty() {
+            None
+        } else {
+            Some(diagnostic.label.clone())
+        };
         labels.push(LabeledSpan::new_primary_with_span(label, span));
         for (span, text) in &diagnostic.labels {
             if span.file == diagnostic.span.file {
-                let s = SourceSpan::new((span.start as usize).into(), (span.end - span.start) as usize);
+                let s = SourceSpan::new(
+                    (span.start as usize).into(),
+                    (span.end - span.start) as usize,
+                );
                 labels.push(LabeledSpan::new_with_span(Some(text.clone()), s));
             }
         }
@@ -81,11 +93,21 @@ pub fn to_report(diagnostic: &Diagnostic, sources: &SourceMap) -> Report {
     let mut index = 0;
     while index < diagnostic.trace.len() {
         let entry = &diagnostic.trace[index];
-        let run = diagnostic.trace[index..].iter().take_while(|e| *e == entry).count();
+        let run = diagnostic.trace[index..]
+            .iter()
+            .take_while(|e| *e == entry)
+            .count();
         let place = sources.describe(entry.span);
-        let verb = if entry.what.starts_with("file") { "included" } else { "called" };
+        let verb = if entry.what.starts_with("file") {
+            "included"
+        } else {
+            "called"
+        };
         if run > 1 {
-            help_lines.push(format!("in {}, {verb} at {place} ({run} times)", entry.what));
+            help_lines.push(format!(
+                "in {}, {verb} at {place} ({run} times)",
+                entry.what
+            ));
         } else {
             help_lines.push(format!("in {}, {verb} at {place}", entry.what));
         }
@@ -96,15 +118,20 @@ pub fn to_report(diagnostic: &Diagnostic, sources: &SourceMap) -> Report {
         severity: diagnostic.severity,
         source,
         labels,
-        help: if help_lines.is_empty() { None } else { Some(help_lines.join("\n")) },
+        help: if help_lines.is_empty() {
+            None
+        } else {
+            Some(help_lines.join("\n"))
+        },
     }
 }
 
 /// Renders a diagnostic as plain text (no colours), as the CLI prints it to a pipe.
 pub fn render_plain(diagnostic: &Diagnostic, sources: &SourceMap) -> String {
     let report = to_report(diagnostic, sources);
-    let handler = miette::GraphicalReportHandler::new_themed(miette::GraphicalTheme::unicode_nocolor())
-        .with_width(1000);
+    let handler =
+        miette::GraphicalReportHandler::new_themed(miette::GraphicalTheme::unicode_nocolor())
+            .with_width(1000);
     let mut out = String::new();
     if handler.render_report(&mut out, &report).is_err() {
         out = report.message.clone();

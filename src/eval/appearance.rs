@@ -11,11 +11,48 @@ use std::rc::Rc;
 
 /// Patterns POV-Ray has that durer does not render yet (they fall back to their first colour).
 const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "agate", "aoi", "average", "boxed", "bozo", "brick", "bumps", "cells", "crackle", "cylindrical",
-    "density_file", "dents", "facets", "function", "granite", "hexagon", "image_map",
-    "image_pattern", "julia", "leopard", "magnet", "mandel", "marble", "onion", "pavement",
-    "pigment_pattern", "planar", "quilted", "radial", "ripples", "slope", "spherical", "spiral1",
-    "spiral2", "spotted", "square", "tiling", "triangular", "waves", "wood", "wrinkles", "object",
+    "agate",
+    "aoi",
+    "average",
+    "boxed",
+    "bozo",
+    "brick",
+    "bumps",
+    "cells",
+    "crackle",
+    "cylindrical",
+    "density_file",
+    "dents",
+    "facets",
+    "function",
+    "granite",
+    "hexagon",
+    "image_map",
+    "image_pattern",
+    "julia",
+    "leopard",
+    "magnet",
+    "mandel",
+    "marble",
+    "onion",
+    "pavement",
+    "pigment_pattern",
+    "planar",
+    "quilted",
+    "radial",
+    "ripples",
+    "slope",
+    "spherical",
+    "spiral1",
+    "spiral2",
+    "spotted",
+    "square",
+    "tiling",
+    "triangular",
+    "waves",
+    "wood",
+    "wrinkles",
+    "object",
 ];
 
 impl Evaluator {
@@ -39,7 +76,10 @@ impl Evaluator {
                         }
                     }
                     "turbulence" | "octaves" | "omega" | "lambda" | "frequency" | "phase" => {
-                        self.warn(*span, format!("texture `{word}` is not supported yet; it is ignored"));
+                        self.warn(
+                            *span,
+                            format!("texture `{word}` is not supported yet; it is ignored"),
+                        );
                         let _ = self.expect_value(stream, "a value")?;
                     }
                     _ => return Err(self.unexpected_in(&item, "texture")),
@@ -48,7 +88,8 @@ impl Evaluator {
                     if let BlockHead::Word(w) = &block.head {
                         if &**w == "finish" {
                             let mut body = Stream::new(block.body.clone());
-                            texture.finish = self.eval_finish(&mut body, Some(texture.finish.clone()))?;
+                            texture.finish =
+                                self.eval_finish(&mut body, Some(texture.finish.clone()))?;
                             continue;
                         }
                     }
@@ -108,11 +149,17 @@ impl Evaluator {
                     "frequency" => frequency = self.expect_float(stream, "a float")?,
                     "phase" => phase = self.expect_float(stream, "a float")?,
                     "turbulence" | "octaves" | "omega" | "lambda" => {
-                        self.warn(*span, format!("pigment `{word}` is not supported yet; it is ignored"));
+                        self.warn(
+                            *span,
+                            format!("pigment `{word}` is not supported yet; it is ignored"),
+                        );
                         let _ = self.expect_value(stream, "a value")?;
                     }
                     "ramp_wave" | "triangle_wave" | "sine_wave" | "scallop_wave" | "cubic_wave" => {
-                        self.warn(*span, format!("`{word}` is not supported yet; it is ignored"));
+                        self.warn(
+                            *span,
+                            format!("`{word}` is not supported yet; it is ignored"),
+                        );
                     }
                     "filter" | "transmit" => {
                         let amount = self.expect_float(stream, "a float")?;
@@ -139,7 +186,10 @@ impl Evaluator {
                         let _ = self.optional_bool(stream)?;
                     }
                     w if UNSUPPORTED_PATTERNS.contains(&w) => {
-                        self.warn(*span, format!("pattern `{w}` is not supported yet; its first colour is used"));
+                        self.warn(
+                            *span,
+                            format!("pattern `{w}` is not supported yet; its first colour is used"),
+                        );
                         // Patterns with a required operand.
                         if matches!(w, "agate" | "brick" | "hexagon" | "checker") {
                         } else if matches!(w, "mandel" | "julia" | "magnet") {
@@ -176,7 +226,11 @@ impl Evaluator {
                 _ => return Err(self.unexpected_in(&item, "pigment")),
             }
         }
-        if let Pigment::Pattern { map: PigmentMap::Colours(entries), .. } = &mut pigment {
+        if let Pigment::Pattern {
+            map: PigmentMap::Colours(entries),
+            ..
+        } = &mut pigment
+        {
             if let Some(map) = colour_map {
                 *entries = map;
             }
@@ -216,7 +270,11 @@ impl Evaluator {
     }
 
     /// `finish { .. }`, starting from `base` (an object's current finish) or the default.
-    pub(crate) fn eval_finish(&mut self, stream: &mut Stream, base: Option<Finish>) -> EvalResult<Finish> {
+    pub(crate) fn eval_finish(
+        &mut self,
+        stream: &mut Stream,
+        base: Option<Finish>,
+    ) -> EvalResult<Finish> {
         let mut finish = base.unwrap_or_else(|| self.default_texture.finish.clone());
         while let Some(item) = self.next_item(stream)? {
             match &item {
@@ -248,14 +306,20 @@ impl Evaluator {
                     }
                     "reflection" => finish.reflection = self.expect_rgb(stream)?,
                     "crand" | "reflection_exponent" | "irid_wavelength" => {
-                        self.warn(*span, format!("finish `{word}` is not supported yet; it is ignored"));
+                        self.warn(
+                            *span,
+                            format!("finish `{word}` is not supported yet; it is ignored"),
+                        );
                         let _ = self.expect_value(stream, "a value")?;
                     }
                     "conserve_energy" => {
                         let _ = self.optional_bool(stream)?;
                     }
                     "ior" | "refraction" | "caustics" | "fade_distance" | "fade_power" => {
-                        self.warn(*span, format!("`{word}` inside `finish` is obsolete; put it in `interior`"));
+                        self.warn(
+                            *span,
+                            format!("`{word}` inside `finish` is obsolete; put it in `interior`"),
+                        );
                         let _ = self.expect_value(stream, "a value")?;
                     }
                     _ => return Err(self.unexpected_in(&item, "finish")),
@@ -268,7 +332,10 @@ impl Evaluator {
                             continue;
                         }
                         if matches!(&**w, "irid" | "subsurface") {
-                            self.warn(block.head_span, format!("`{w}` is not supported yet; it is ignored"));
+                            self.warn(
+                                block.head_span,
+                                format!("`{w}` is not supported yet; it is ignored"),
+                            );
                             continue;
                         }
                     }
@@ -296,7 +363,10 @@ impl Evaluator {
                     values.push(self.to_colour(value, e.span())?.rgb_vec());
                 }
                 Item::Keyword(word, span) => {
-                    self.warn(*span, format!("reflection `{word}` is not supported yet; it is ignored"));
+                    self.warn(
+                        *span,
+                        format!("reflection `{word}` is not supported yet; it is ignored"),
+                    );
                     if matches!(&**word, "falloff" | "exponent") {
                         let _ = self.expect_value(stream, "a value")?;
                     } else {
@@ -345,15 +415,22 @@ impl Evaluator {
             match &item {
                 Item::Keyword(word, span) => match &**word {
                     "ior" => interior.ior = self.expect_float(stream, "a float")?,
-                    "caustics" | "dispersion" | "dispersion_samples" | "fade_distance" | "fade_power"
-                    | "fade_color" | "fade_colour" => {
-                        self.warn(*span, format!("interior `{word}` is not supported yet; it is ignored"));
+                    "caustics" | "dispersion" | "dispersion_samples" | "fade_distance"
+                    | "fade_power" | "fade_color" | "fade_colour" => {
+                        self.warn(
+                            *span,
+                            format!("interior `{word}` is not supported yet; it is ignored"),
+                        );
                         let _ = self.expect_value(stream, "a value")?;
                     }
                     _ => return Err(self.unexpected_in(&item, "interior")),
                 },
-                Item::Block(block) if matches!(&block.head, BlockHead::Word(w) if &**w == "media") => {
-                    self.warn(block.head_span, "`media` is not supported yet; it is ignored");
+                Item::Block(block) if matches!(&block.head, BlockHead::Word(w) if &**w == "media") =>
+                {
+                    self.warn(
+                        block.head_span,
+                        "`media` is not supported yet; it is ignored",
+                    );
                 }
                 Item::Expr(expr) => match self.eval_expr(expr)? {
                     Value::Interior(i) => interior = Rc::unwrap_or_clone(i),
@@ -367,7 +444,10 @@ impl Evaluator {
     }
 
     /// `color_map { [v colour] .. }`, also the old `[v1, v2 colour1 colour2]` form.
-    pub(crate) fn eval_colour_map(&mut self, stream: &mut Stream) -> EvalResult<Vec<(f64, Colour)>> {
+    pub(crate) fn eval_colour_map(
+        &mut self,
+        stream: &mut Stream,
+    ) -> EvalResult<Vec<(f64, Colour)>> {
         let mut entries: Vec<(f64, Colour)> = Vec::new();
         while let Some(item) = self.next_item(stream)? {
             match &item {

@@ -9,21 +9,75 @@ use std::rc::Rc;
 
 /// Names of every built-in function, for suggestions.
 pub(crate) const FUNCTIONS: &[&str] = &[
-    "abs", "acos", "acosh", "asc", "asin", "asinh", "atan", "atan2", "atanh", "bitwise_and",
-    "bitwise_or", "bitwise_xor", "ceil", "chr", "concat", "cos", "cosh", "defined", "degrees",
-    "dimension_size", "dimensions", "div", "exp", "file_exists", "floor", "int", "ln", "log",
-    "max", "min", "mod", "pow", "radians", "select", "sin", "sinh", "sqr", "sqrt", "str",
-    "strcmp", "strlen", "strlwr", "strupr", "substr", "tan", "tanh", "val", "vaxis_rotate",
-    "vcross", "vdot", "vlength", "vnormalize", "vrotate", "vstr",
+    "abs",
+    "acos",
+    "acosh",
+    "asc",
+    "asin",
+    "asinh",
+    "atan",
+    "atan2",
+    "atanh",
+    "bitwise_and",
+    "bitwise_or",
+    "bitwise_xor",
+    "ceil",
+    "chr",
+    "concat",
+    "cos",
+    "cosh",
+    "defined",
+    "degrees",
+    "dimension_size",
+    "dimensions",
+    "div",
+    "exp",
+    "file_exists",
+    "floor",
+    "int",
+    "ln",
+    "log",
+    "max",
+    "min",
+    "mod",
+    "pow",
+    "radians",
+    "select",
+    "sin",
+    "sinh",
+    "sqr",
+    "sqrt",
+    "str",
+    "strcmp",
+    "strlen",
+    "strlwr",
+    "strupr",
+    "substr",
+    "tan",
+    "tanh",
+    "val",
+    "vaxis_rotate",
+    "vcross",
+    "vdot",
+    "vlength",
+    "vnormalize",
+    "vrotate",
+    "vstr",
 ];
 
 pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value> {
     let name = &*call.name;
     let arity_error = |ev: &Evaluator, n: usize| -> Box<crate::diag::Diagnostic> {
         let plural = if n == 1 { "" } else { "s" };
-        ev.error(call.span, format!("`{name}` takes {n} argument{plural}, found {}", call.arguments.len()))
-            .with_label("called here")
-            .into()
+        ev.error(
+            call.span,
+            format!(
+                "`{name}` takes {n} argument{plural}, found {}",
+                call.arguments.len()
+            ),
+        )
+        .with_label("called here")
+        .into()
     };
     let arity = |ev: &Evaluator, n: usize| -> EvalResult<()> {
         if call.arguments.len() != n {
@@ -91,12 +145,18 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
         }
         "min" | "max" => {
             if call.arguments.is_empty() {
-                return Err(ev.error(call.span, format!("`{name}` needs at least one argument")).into());
+                return Err(ev
+                    .error(call.span, format!("`{name}` needs at least one argument"))
+                    .into());
             }
             let mut result = ev.argument_float(call, 0)?;
             for i in 1..call.arguments.len() {
                 let x = ev.argument_float(call, i)?;
-                result = if name == "min" { result.min(x) } else { result.max(x) };
+                result = if name == "min" {
+                    result.min(x)
+                } else {
+                    result.max(x)
+                };
             }
             Value::Float(result)
         }
@@ -114,7 +174,9 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
         }
         "select" => {
             if !(3..=4).contains(&call.arguments.len()) {
-                return Err(ev.error(call.span, "`select` takes 3 or 4 arguments").into());
+                return Err(ev
+                    .error(call.span, "`select` takes 3 or 4 arguments")
+                    .into());
             }
             let a = ev.argument_float(call, 0)?;
             let index = if a < 0.0 {
@@ -134,7 +196,11 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             arity(ev, 1)?;
             let v = vector(ev, 0)?;
             let length = v.length();
-            v3(if length > 0.0 { v / length } else { DVec3::ZERO })
+            v3(if length > 0.0 {
+                v / length
+            } else {
+                DVec3::ZERO
+            })
         }
         "vdot" => {
             arity(ev, 2)?;
@@ -161,7 +227,9 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
         "defined" => {
             arity(ev, 1)?;
             let defined = match &call.arguments[0] {
-                crate::syntax::ast::Argument::Expr(crate::syntax::ast::Expr::Ident(n, _)) => ev.lookup(n).is_some(),
+                crate::syntax::ast::Argument::Expr(crate::syntax::ast::Expr::Ident(n, _)) => {
+                    ev.lookup(n).is_some()
+                }
                 _ => true,
             };
             Value::Float(f64::from(defined))
@@ -170,7 +238,14 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             arity(ev, 1)?;
             match ev.argument(call, 0)? {
                 Value::Array(a) => Value::Float(a.sizes.len() as f64),
-                other => return Err(ev.error(call.span, format!("expected an array, found {}", other.type_name())).into()),
+                other => {
+                    return Err(ev
+                        .error(
+                            call.span,
+                            format!("expected an array, found {}", other.type_name()),
+                        )
+                        .into())
+                }
             }
         }
         "dimension_size" => {
@@ -180,9 +255,20 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             match array {
                 Value::Array(a) => {
                     let i = d as usize;
-                    Value::Float(if i >= 1 && i <= a.sizes.len() { a.sizes[i - 1] as f64 } else { 0.0 })
+                    Value::Float(if i >= 1 && i <= a.sizes.len() {
+                        a.sizes[i - 1] as f64
+                    } else {
+                        0.0
+                    })
                 }
-                other => return Err(ev.error(call.span, format!("expected an array, found {}", other.type_name())).into()),
+                other => {
+                    return Err(ev
+                        .error(
+                            call.span,
+                            format!("expected an array, found {}", other.type_name()),
+                        )
+                        .into())
+                }
             }
         }
         "str" => {
@@ -199,12 +285,22 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
                 Value::Vector(v) => v.components,
                 Value::Colour(c) => c.to_array(),
                 Value::Float(f) => [f; 5],
-                other => return Err(ev.error(call.span, format!("expected a vector, found {}", other.type_name())).into()),
+                other => {
+                    return Err(ev
+                        .error(
+                            call.span,
+                            format!("expected a vector, found {}", other.type_name()),
+                        )
+                        .into())
+                }
             };
             let separator = string_argument(ev, call, 2)?;
             let width = ev.argument_float(call, 3)?;
             let precision = ev.argument_float(call, 4)?;
-            let parts: Vec<String> = components[..count].iter().map(|c| format_float(*c, width, precision)).collect();
+            let parts: Vec<String> = components[..count]
+                .iter()
+                .map(|c| format_float(*c, width, precision))
+                .collect();
             ev.checked_string(parts.join(&separator), call.span)?
         }
         "concat" => {
@@ -254,10 +350,18 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             let chars: Vec<char> = s.chars().collect();
             if start < 1 || length < 0 || (start - 1 + length) as usize > chars.len() {
                 return Err(ev
-                    .error(call.span, format!("substr({start}, {length}) is outside a string of length {}", chars.len()))
+                    .error(
+                        call.span,
+                        format!(
+                            "substr({start}, {length}) is outside a string of length {}",
+                            chars.len()
+                        ),
+                    )
                     .into());
             }
-            let part: String = chars[(start - 1) as usize..(start - 1 + length) as usize].iter().collect();
+            let part: String = chars[(start - 1) as usize..(start - 1 + length) as usize]
+                .iter()
+                .collect();
             Value::String(Rc::from(part))
         }
         "val" => {
@@ -287,14 +391,21 @@ fn string_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<
     match ev.argument(call, index)? {
         Value::String(s) => Ok(s.to_string()),
         other => Err(ev
-            .error(call.arguments[index].span(), format!("expected a string, found {}", other.type_name()))
+            .error(
+                call.arguments[index].span(),
+                format!("expected a string, found {}", other.type_name()),
+            )
             .into()),
     }
 }
 
 /// `str(value, width, precision)` as POV-Ray formats it.
 fn format_float(value: f64, width: f64, precision: f64) -> String {
-    let precision = if precision < 0.0 { 6 } else { precision as usize };
+    let precision = if precision < 0.0 {
+        6
+    } else {
+        precision as usize
+    };
     let text = format!("{value:.precision$}");
     // A negative width pads with zeros, a positive one with spaces.
     let zero_padded = width < 0.0;

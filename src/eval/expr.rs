@@ -23,12 +23,18 @@ impl Evaluator {
             Item::Expr(expr) => self.eval_expr(expr),
             Item::Block(block) => self.eval_block(block),
             Item::Directive(directive) => self.directive_value(directive),
-            other => Err(self.error(other.span(), "expected a value").with_label("not a value").into()),
+            other => Err(self
+                .error(other.span(), "expected a value")
+                .with_label("not a value")
+                .into()),
         }
     }
 
     /// A directive used where a value is expected (`#declare A = #if (..) 1 #else 2 #end`).
-    fn directive_value(&mut self, directive: &Rc<crate::syntax::ast::Directive>) -> EvalResult<Value> {
+    fn directive_value(
+        &mut self,
+        directive: &Rc<crate::syntax::ast::Directive>,
+    ) -> EvalResult<Value> {
         let items: Rc<[Item]> = Rc::from(vec![Item::Directive(directive.clone())]);
         let mut stream = super::stream::Stream::new(items);
         let mut result = None;
@@ -41,7 +47,10 @@ impl Evaluator {
                 result = Some(value);
             }
         }
-        result.ok_or_else(|| self.error(directive.span, "this directive yields no value").into())
+        result.ok_or_else(|| {
+            self.error(directive.span, "this directive yields no value")
+                .into()
+        })
     }
 
     /// Evaluates an expression.
@@ -56,7 +65,10 @@ impl Evaluator {
                 }
                 if components.len() < 2 || components.len() > 5 {
                     return Err(self
-                        .error(*span, format!("a vector has 2 to 5 components, found {}", components.len()))
+                        .error(
+                            *span,
+                            format!("a vector has 2 to 5 components, found {}", components.len()),
+                        )
                         .into());
                 }
                 Ok(Value::Vector(Vector::from_slice(&components)))
@@ -102,21 +114,31 @@ impl Evaluator {
                 let value = self.eval_expr(root)?;
                 let Value::Array(array) = value else {
                     return Err(self
-                        .error(root.span(), format!("expected an array, found {}", value.type_name()))
+                        .error(
+                            root.span(),
+                            format!("expected an array, found {}", value.type_name()),
+                        )
                         .with_label("indexed here")
                         .into());
                 };
                 let Some(offset) = array_offset(&array.sizes, &indices) else {
-                    let shown: Vec<String> = indices.iter().map(|i| format!("{}", i.trunc())).collect();
+                    let shown: Vec<String> =
+                        indices.iter().map(|i| format!("{}", i.trunc())).collect();
                     let sizes: Vec<String> = array.sizes.iter().map(|s| s.to_string()).collect();
                     return Err(self
-                        .error(*span, format!("array index [{}] out of range", shown.join("][")))
+                        .error(
+                            *span,
+                            format!("array index [{}] out of range", shown.join("][")),
+                        )
                         .with_label(format!("the array's size is [{}]", sizes.join("][")))
                         .into());
                 };
                 match &array.elements[offset] {
                     Some(v) => Ok(v.clone()),
-                    None => Err(self.error(*span, "array element used before it was assigned").with_label("not assigned").into()),
+                    None => Err(self
+                        .error(*span, "array element used before it was assigned")
+                        .with_label("not assigned")
+                        .into()),
                 }
             }
             Expr::Colour(literal) => self.eval_colour_literal(literal),
@@ -137,7 +159,10 @@ impl Evaluator {
         match self.eval_expr(expr)? {
             Value::String(s) => Ok(s),
             other => Err(self
-                .error(expr.span(), format!("expected a string, found {}", other.type_name()))
+                .error(
+                    expr.span(),
+                    format!("expected a string, found {}", other.type_name()),
+                )
                 .into()),
         }
     }
@@ -147,7 +172,10 @@ impl Evaluator {
         match value {
             Value::Float(f) => Ok(f),
             other => Err(self
-                .error(span, format!("expected a float, found {}", other.type_name()))
+                .error(
+                    span,
+                    format!("expected a float, found {}", other.type_name()),
+                )
                 .with_label("must be a float")
                 .into()),
         }
@@ -160,7 +188,10 @@ impl Evaluator {
             Value::Vector(v) => Ok(v.to_dvec3()),
             Value::Colour(c) => Ok(c.rgb_vec()),
             other => Err(self
-                .error(span, format!("expected a vector, found {}", other.type_name()))
+                .error(
+                    span,
+                    format!("expected a vector, found {}", other.type_name()),
+                )
                 .with_label("must be a vector")
                 .into()),
         }
@@ -176,7 +207,10 @@ impl Evaluator {
                 Ok(Colour::rgbft(c[0], c[1], c[2], c[3], c[4]))
             }
             other => Err(self
-                .error(span, format!("expected a colour, found {}", other.type_name()))
+                .error(
+                    span,
+                    format!("expected a colour, found {}", other.type_name()),
+                )
                 .with_label("must be a colour")
                 .into()),
         }
@@ -208,7 +242,10 @@ impl Evaluator {
             }
             Value::Colour(c) => Ok(Value::Colour(Colour::from_array(c.to_array().map(&f)))),
             other => Err(self
-                .error(span, format!("cannot do arithmetic on {}", other.type_name()))
+                .error(
+                    span,
+                    format!("cannot do arithmetic on {}", other.type_name()),
+                )
                 .into()),
         }
     }
@@ -227,14 +264,20 @@ impl Evaluator {
                 Greater => ordering.is_gt(),
                 _ => {
                     return Err(self
-                        .error(span, format!("operator `{}` cannot combine two strings", op.symbol()))
+                        .error(
+                            span,
+                            format!("operator `{}` cannot combine two strings", op.symbol()),
+                        )
                         .with_help("use concat(a, b) to join strings")
                         .into())
                 }
             };
             return Ok(Value::Float(f64::from(result)));
         }
-        if matches!(op, Less | LessEqual | Equal | NotEqual | GreaterEqual | Greater | And | Or) {
+        if matches!(
+            op,
+            Less | LessEqual | Equal | NotEqual | GreaterEqual | Greater | And | Or
+        ) {
             let x = self.to_float(a, span)?;
             let y = self.to_float(b, span)?;
             let result = match op {
@@ -249,10 +292,19 @@ impl Evaluator {
             };
             return Ok(Value::Float(f64::from(result)));
         }
-        let numeric = |v: &Value| matches!(v, Value::Float(_) | Value::Vector(_) | Value::Colour(_));
+        let numeric =
+            |v: &Value| matches!(v, Value::Float(_) | Value::Vector(_) | Value::Colour(_));
         if !numeric(&a) || !numeric(&b) {
             return Err(self
-                .error(span, format!("operator `{}` cannot combine {} and {}", op.symbol(), a.type_name(), b.type_name()))
+                .error(
+                    span,
+                    format!(
+                        "operator `{}` cannot combine {} and {}",
+                        op.symbol(),
+                        a.type_name(),
+                        b.type_name()
+                    ),
+                )
                 .with_label(format!("{} met {}", a.type_name(), b.type_name()))
                 .into());
         }
@@ -267,7 +319,9 @@ impl Evaluator {
             (Value::Colour(_), _) | (_, Value::Colour(_)) => {
                 let x = self.to_colour(a.clone(), span)?.to_array();
                 let y = self.to_colour(b.clone(), span)?.to_array();
-                Ok(Value::Colour(Colour::from_array(std::array::from_fn(|i| apply(x[i], y[i])))))
+                Ok(Value::Colour(Colour::from_array(std::array::from_fn(
+                    |i| apply(x[i], y[i]),
+                ))))
             }
             (Value::Vector(_), _) | (_, Value::Vector(_)) => {
                 let len = match (&a, &b) {
@@ -286,7 +340,14 @@ impl Evaluator {
             _ => {
                 let culprit = if matches!(a, Value::Float(_)) { &b } else { &a };
                 Err(self
-                    .error(span, format!("operator `{}` cannot be applied to {}", op.symbol(), culprit.type_name()))
+                    .error(
+                        span,
+                        format!(
+                            "operator `{}` cannot be applied to {}",
+                            op.symbol(),
+                            culprit.type_name()
+                        ),
+                    )
                     .with_label(format!("{} met {}", a.type_name(), b.type_name()))
                     .into())
             }
@@ -303,7 +364,12 @@ impl Evaluator {
                 Ok(c)
             }
             Value::Vector(v) => Ok(v.components),
-            other => Err(self.error(span, format!("expected a vector, found {}", other.type_name())).into()),
+            other => Err(self
+                .error(
+                    span,
+                    format!("expected a vector, found {}", other.type_name()),
+                )
+                .into()),
         }
     }
 
@@ -314,31 +380,40 @@ impl Evaluator {
             Value::Float(f) => [*f; 5],
             other => {
                 return Err(self
-                    .error(span, format!("`.{member}` cannot be applied to {}", other.type_name()))
+                    .error(
+                        span,
+                        format!("`.{member}` cannot be applied to {}", other.type_name()),
+                    )
                     .into())
             }
         };
-        let index = match member {
-            "x" | "u" | "red" => 0,
-            "y" | "v" | "green" => 1,
-            "z" | "blue" => 2,
-            "t" | "filter" => 3,
-            "transmit" => 4,
-            "gray" | "grey" => {
-                let [r, g, b, ..] = components;
-                return Ok(Value::Float(0.297 * r + 0.589 * g + 0.114 * b));
-            }
-            _ => {
-                return Err(self
+        let index =
+            match member {
+                "x" | "u" | "red" => 0,
+                "y" | "v" | "green" => 1,
+                "z" | "blue" => 2,
+                "t" | "filter" => 3,
+                "transmit" => 4,
+                "gray" | "grey" => {
+                    let [r, g, b, ..] = components;
+                    return Ok(Value::Float(0.297 * r + 0.589 * g + 0.114 * b));
+                }
+                _ => return Err(self
                     .error(span, format!("unknown member `.{member}`"))
-                    .with_help("members are .x .y .z .t .u .v .red .green .blue .filter .transmit .gray")
-                    .into())
-            }
-        };
+                    .with_help(
+                        "members are .x .y .z .t .u .v .red .green .blue .filter .transmit .gray",
+                    )
+                    .into()),
+            };
         if let Value::Vector(v) = &value {
-            if index >= v.len as usize && !matches!(member, "filter" | "transmit" | "red" | "green" | "blue") {
+            if index >= v.len as usize
+                && !matches!(member, "filter" | "transmit" | "red" | "green" | "blue")
+            {
                 return Err(self
-                    .error(span, format!("`.{member}` does not exist on a {}-component vector", v.len))
+                    .error(
+                        span,
+                        format!("`.{member}` does not exist on a {}-component vector", v.len),
+                    )
                     .into());
             }
         }
@@ -366,7 +441,13 @@ impl Evaluator {
                         Value::Vector(v) => {
                             if (v.len as usize) < count {
                                 return Err(self
-                                    .error(span, format!("expected a vector of {count} components, found {}", v.len))
+                                    .error(
+                                        span,
+                                        format!(
+                                            "expected a vector of {count} components, found {}",
+                                            v.len
+                                        ),
+                                    )
                                     .into());
                             }
                             v.components
@@ -374,7 +455,10 @@ impl Evaluator {
                         Value::Colour(c) => c.to_array(),
                         other => {
                             return Err(self
-                                .error(span, format!("expected a vector, found {}", other.type_name()))
+                                .error(
+                                    span,
+                                    format!("expected a vector, found {}", other.type_name()),
+                                )
                                 .into())
                         }
                     };
@@ -421,7 +505,10 @@ impl Evaluator {
             let n = self.eval_float(size)?;
             if !(1.0..=ARRAY_SIZE_LIMIT as f64).contains(&n.trunc()) {
                 return Err(self
-                    .error(size.span(), format!("array size {n} is not between 1 and {ARRAY_SIZE_LIMIT}"))
+                    .error(
+                        size.span(),
+                        format!("array size {n} is not between 1 and {ARRAY_SIZE_LIMIT}"),
+                    )
                     .into());
             }
             sizes.push(n as usize);
@@ -433,15 +520,29 @@ impl Evaluator {
         if sizes.is_empty() {
             sizes.push(values.len().max(1));
         }
-        let total = sizes.iter().try_fold(1usize, |a, s| a.checked_mul(*s)).unwrap_or(usize::MAX);
+        let total = sizes
+            .iter()
+            .try_fold(1usize, |a, s| a.checked_mul(*s))
+            .unwrap_or(usize::MAX);
         if total > ARRAY_SIZE_LIMIT {
             return Err(self
-                .error(literal.span, format!("array of {total} elements is larger than the limit of {ARRAY_SIZE_LIMIT}"))
+                .error(
+                    literal.span,
+                    format!(
+                        "array of {total} elements is larger than the limit of {ARRAY_SIZE_LIMIT}"
+                    ),
+                )
                 .into());
         }
         if literal.initialiser.is_some() && values.len() != total {
             return Err(self
-                .error(literal.span, format!("array initialiser has {} elements, the array holds {total}", values.len()))
+                .error(
+                    literal.span,
+                    format!(
+                        "array initialiser has {} elements, the array holds {total}",
+                        values.len()
+                    ),
+                )
                 .into());
         }
         let mut elements: Vec<Option<Value>> = values.into_iter().map(Some).collect();
@@ -458,7 +559,11 @@ impl Evaluator {
                 ArrayElement::Nested(_) => None,
             })
             .collect();
-        if init.elements.iter().any(|e| matches!(e, ArrayElement::Nested(_))) {
+        if init
+            .elements
+            .iter()
+            .any(|e| matches!(e, ArrayElement::Nested(_)))
+        {
             for element in &init.elements {
                 if let ArrayElement::Nested(nested) = element {
                     self.collect_array_init(nested, out)?;
@@ -474,7 +579,9 @@ impl Evaluator {
             let value = self.item_value(&item)?;
             out.push(value);
             if out.len() > ARRAY_SIZE_LIMIT {
-                return Err(self.error(init.span, "array initialiser is too large").into());
+                return Err(self
+                    .error(init.span, "array initialiser is too large")
+                    .into());
             }
         }
         Ok(())
@@ -485,7 +592,10 @@ impl Evaluator {
             Some(Value::Macro(_)) => return self.call_macro_value(call),
             Some(Value::Function(_)) => {
                 return Err(self
-                    .error(call.span, "calling user-defined functions is not supported yet")
+                    .error(
+                        call.span,
+                        "calling user-defined functions is not supported yet",
+                    )
                     .with_label("not supported yet")
                     .into())
             }
@@ -506,14 +616,21 @@ impl Evaluator {
         match call.arguments.get(index) {
             Some(crate::syntax::ast::Argument::Expr(e)) => self.eval_expr(e),
             Some(crate::syntax::ast::Argument::Block(b)) => self.eval_block(b),
-            None => Err(self.error(call.span, format!("`{}` needs more arguments", call.name)).into()),
+            None => Err(self
+                .error(call.span, format!("`{}` needs more arguments", call.name))
+                .into()),
         }
     }
 
     /// Checks a string's size against the limit.
     pub(crate) fn checked_string(&self, s: String, span: Span) -> EvalResult<Value> {
         if s.len() > STRING_SIZE_LIMIT {
-            return Err(self.error(span, format!("string longer than {STRING_SIZE_LIMIT} bytes")).into());
+            return Err(self
+                .error(
+                    span,
+                    format!("string longer than {STRING_SIZE_LIMIT} bytes"),
+                )
+                .into());
         }
         Ok(Value::String(Rc::from(s)))
     }

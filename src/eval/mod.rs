@@ -48,7 +48,12 @@ pub struct EvalOptions {
 
 impl Default for EvalOptions {
     fn default() -> Self {
-        EvalOptions { include_paths: Vec::new(), image_width: 320, image_height: 240, clock: 0.0 }
+        EvalOptions {
+            include_paths: Vec::new(),
+            image_width: 320,
+            image_height: 240,
+            clock: 0.0,
+        }
     }
 }
 
@@ -78,7 +83,11 @@ pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
             None
         }
     };
-    Evaluated { scene, diagnostics, sources: evaluator.sources }
+    Evaluated {
+        scene,
+        diagnostics,
+        sources: evaluator.sources,
+    }
 }
 
 /// One symbol table: the global one, an include file's or a macro call's.
@@ -95,7 +104,11 @@ impl Hasher for NameHasher {
     }
 
     fn write(&mut self, bytes: &[u8]) {
-        let mut hash = if self.0 == 0 { 0xcbf2_9ce4_8422_2325 } else { self.0 };
+        let mut hash = if self.0 == 0 {
+            0xcbf2_9ce4_8422_2325
+        } else {
+            self.0
+        };
         for byte in bytes {
             hash ^= u64::from(*byte);
             hash = hash.wrapping_mul(0x0100_0000_01b3);
@@ -186,7 +199,11 @@ impl Evaluator {
             let span = from.unwrap_or_default();
             let mut d = self.error(span, format!("cannot read `{}`: {e}", path.display()));
             if from.is_none() {
-                d.span = Span { file: u32::MAX, start: 0, end: 0 };
+                d.span = Span {
+                    file: u32::MAX,
+                    start: 0,
+                    end: 0,
+                };
             }
             Box::new(d)
         })?;
@@ -205,14 +222,21 @@ impl Evaluator {
     pub(crate) fn find_include(&self, name: &str) -> Result<PathBuf, Vec<PathBuf>> {
         let direct = Path::new(name);
         if direct.is_absolute() {
-            return if direct.is_file() { Ok(direct.to_path_buf()) } else { Err(vec![]) };
+            return if direct.is_file() {
+                Ok(direct.to_path_buf())
+            } else {
+                Err(vec![])
+            };
         }
         let mut folders = vec![self.scene_folder.clone()];
         folders.extend(self.options.include_paths.iter().cloned());
         if let Some(paths) = std::env::var_os("DURER_INCLUDE_PATH") {
             folders.extend(std::env::split_paths(&paths));
         }
-        for installed in ["/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"] {
+        for installed in [
+            "/usr/share/povray-3.7/include",
+            "/usr/local/share/povray-3.7/include",
+        ] {
             folders.push(PathBuf::from(installed));
         }
         for folder in &folders {
@@ -225,20 +249,29 @@ impl Evaluator {
     }
 
     /// Runs `#include`: parses the file once and streams its items in a new local scope.
-    pub(crate) fn include(&mut self, name: &str, span: Span, stream: &mut Stream) -> EvalResult<()> {
+    pub(crate) fn include(
+        &mut self,
+        name: &str,
+        span: Span,
+        stream: &mut Stream,
+    ) -> EvalResult<()> {
         let path = match self.find_include(name) {
             Ok(path) => path,
             Err(folders) => {
-                let searched: Vec<String> = folders.iter().map(|f| f.display().to_string()).collect();
+                let searched: Vec<String> =
+                    folders.iter().map(|f| f.display().to_string()).collect();
                 return Err(self
                     .error(span, format!("cannot find include file `{name}`"))
                     .with_label("included here")
                     .with_help(format!("searched: {}", searched.join(", ")))
-                .into());
+                    .into());
             }
         };
         self.enter_nesting(span)?;
-        self.trace.push(TraceEntry { what: format!("file `{name}`"), span });
+        self.trace.push(TraceEntry {
+            what: format!("file `{name}`"),
+            span,
+        });
         let items = match self.load_file(&path, Some(span)) {
             Ok(items) => items,
             Err(e) => {
@@ -258,7 +291,7 @@ impl Evaluator {
                 .error(span, format!("nesting deeper than {NESTING_LIMIT} levels"))
                 .with_label("this call or include goes too deep")
                 .with_help("a recursive macro probably never reaches its base case")
-            .into());
+                .into());
         }
         self.nesting += 1;
         Ok(())
@@ -281,7 +314,9 @@ impl Evaluator {
         for index in (0..=top.min(self.scopes.len().saturating_sub(1))).rev() {
             if let Some(value) = self.scopes[index].get(name) {
                 return match value {
-                    Value::Reference { scope, name } if *scope < index => self.lookup_from(*scope, name),
+                    Value::Reference { scope, name } if *scope < index => {
+                        self.lookup_from(*scope, name)
+                    }
                     Value::Reference { .. } => None,
                     other => Some(other),
                 };
@@ -296,10 +331,15 @@ impl Evaluator {
         let mut top = self.scopes.len() - 1;
         let mut name = name.clone();
         loop {
-            let found = (0..=top).rev().find(|&i| self.scopes[i].contains_key(&name));
+            let found = (0..=top)
+                .rev()
+                .find(|&i| self.scopes[i].contains_key(&name));
             match found {
                 Some(i) => match &self.scopes[i][&name] {
-                    Value::Reference { scope, name: target } if *scope < i => {
+                    Value::Reference {
+                        scope,
+                        name: target,
+                    } if *scope < i => {
                         top = *scope;
                         name = target.clone();
                     }
@@ -312,7 +352,9 @@ impl Evaluator {
 
     /// An "undefined identifier" error with a did-you-mean over visible names and keywords.
     pub(crate) fn undefined(&self, name: &str, span: Span) -> Diagnostic {
-        let mut d = self.error(span, format!("undefined identifier `{name}`")).with_label("not declared");
+        let mut d = self
+            .error(span, format!("undefined identifier `{name}`"))
+            .with_label("not declared");
         let visible = self.scopes.iter().flat_map(|s| s.keys().map(|k| &**k));
         let keywords = crate::syntax::keywords::ALL.iter().copied();
         if let Some(similar) = did_you_mean(name, visible.chain(keywords)) {
@@ -328,13 +370,19 @@ impl Evaluator {
             Item::Block(block) => self.eval_block(block)?,
             Item::Expr(expr) => self.eval_expr(expr)?,
             Item::Keyword(word, span) => {
-                return Err(self.error(*span, format!("`{word}` cannot stand at the top level of a scene"))
+                return Err(self
+                    .error(
+                        *span,
+                        format!("`{word}` cannot stand at the top level of a scene"),
+                    )
                     .with_label("expected an object, camera, light or directive")
-                .into())
+                    .into())
             }
             Item::Comma(_) => return Ok(()),
             Item::MapEntry(..) | Item::Directive(_) => {
-                return Err(self.error(span, "expected an object, camera, light or directive").into())
+                return Err(self
+                    .error(span, "expected an object, camera, light or directive")
+                    .into())
             }
         };
         match value {
@@ -351,9 +399,15 @@ impl Evaluator {
             Value::Nothing => {} // settings blocks and left-out features
             other => {
                 return Err(self
-                    .error(span, format!("expected an object, camera or light, found {}", other.type_name()))
+                    .error(
+                        span,
+                        format!(
+                            "expected an object, camera or light, found {}",
+                            other.type_name()
+                        ),
+                    )
                     .with_label("this value does nothing here")
-                .into())
+                    .into())
             }
         }
         Ok(())

@@ -14,7 +14,12 @@ use std::sync::Arc;
 impl Evaluator {
     /// Evaluates the body of an object block (`head` is its keyword).
     /// `None` when the object is a feature durer leaves out (already warned about).
-    pub(crate) fn eval_object(&mut self, head: &str, block: &Block, stream: &mut Stream) -> EvalResult<Option<Object>> {
+    pub(crate) fn eval_object(
+        &mut self,
+        head: &str,
+        block: &Block,
+        stream: &mut Stream,
+    ) -> EvalResult<Option<Object>> {
         let mut object = match head {
             "object" => {
                 let (value, span) = self.expect_value(stream, "an object")?;
@@ -23,7 +28,10 @@ impl Evaluator {
                     Value::Nothing => return Ok(None),
                     other => {
                         return Err(self
-                            .error(span, format!("expected an object, found {}", other.type_name()))
+                            .error(
+                                span,
+                                format!("expected an object, found {}", other.type_name()),
+                            )
                             .with_label("`object` needs an object identifier")
                             .into())
                     }
@@ -36,7 +44,10 @@ impl Evaluator {
                     "difference" => CsgOperation::Difference,
                     _ => CsgOperation::Merge,
                 };
-                let mut object = Object::new(Shape::Csg { operation, children: Vec::new() });
+                let mut object = Object::new(Shape::Csg {
+                    operation,
+                    children: Vec::new(),
+                });
                 while let Some(item) = self.next_item(stream)? {
                     let child = match &item {
                         Item::Block(b) => match self.eval_block(b)? {
@@ -90,14 +101,25 @@ impl Evaluator {
                 let base = self.expect_vector(stream, "the base point")?;
                 let cap = self.expect_vector(stream, "the cap point")?;
                 let radius = self.expect_float(stream, "the radius")?;
-                Shape::Cylinder { base, cap, radius, open: false }
+                Shape::Cylinder {
+                    base,
+                    cap,
+                    radius,
+                    open: false,
+                }
             }
             "cone" => {
                 let base = self.expect_vector(stream, "the base point")?;
                 let base_radius = self.expect_float(stream, "the base radius")?;
                 let cap = self.expect_vector(stream, "the cap point")?;
                 let cap_radius = self.expect_float(stream, "the cap radius")?;
-                Shape::Cone { base, base_radius, cap, cap_radius, open: false }
+                Shape::Cone {
+                    base,
+                    base_radius,
+                    cap,
+                    cap_radius,
+                    open: false,
+                }
             }
             "torus" => {
                 let major = self.expect_float(stream, "the major radius")?;
@@ -110,18 +132,27 @@ impl Evaluator {
                 let radius = self.expect_float(stream, "the radius")?;
                 let mut hole_radius = 0.0;
                 match self.next_item(stream)? {
-                    Some(Item::Comma(_)) => hole_radius = self.expect_float(stream, "the hole radius")?,
+                    Some(Item::Comma(_)) => {
+                        hole_radius = self.expect_float(stream, "the hole radius")?
+                    }
                     Some(other) => stream.push_back(other),
                     None => {}
                 }
-                Shape::Disc { centre, normal, radius, hole_radius }
+                Shape::Disc {
+                    centre,
+                    normal,
+                    radius,
+                    hole_radius,
+                }
             }
             "quadric" => {
                 let a = self.expect_vector(stream, "<A, B, C>")?;
                 let b = self.expect_vector(stream, "<D, E, F>")?;
                 let c = self.expect_vector(stream, "<G, H, I>")?;
                 let j = self.expect_float(stream, "J")?;
-                Shape::Quadric { coefficients: [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, j] }
+                Shape::Quadric {
+                    coefficients: [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, j],
+                }
             }
             _ => {
                 let a = self.expect_vector(stream, "the first corner")?;
@@ -133,7 +164,13 @@ impl Evaluator {
     }
 
     /// Applies one modifier item to an object.
-    fn object_modifier(&mut self, object: &mut Object, item: Item, stream: &mut Stream, head: &str) -> EvalResult<()> {
+    fn object_modifier(
+        &mut self,
+        object: &mut Object,
+        item: Item,
+        stream: &mut Stream,
+        head: &str,
+    ) -> EvalResult<()> {
         match &item {
             Item::Keyword(word, span) => match &**word {
                 "translate" | "rotate" | "scale" | "matrix" | "transform" => {
@@ -151,7 +188,10 @@ impl Evaluator {
                     let _ = self.optional_bool(stream)?;
                 }
                 "double_illuminate" | "no_image" | "no_reflection" | "no_radiosity" => {
-                    self.warn(*span, format!("`{word}` is not supported yet; it is ignored"));
+                    self.warn(
+                        *span,
+                        format!("`{word}` is not supported yet; it is ignored"),
+                    );
                     let _ = self.optional_bool(stream)?;
                 }
                 _ => return Err(self.unexpected_in(&item, head)),
@@ -183,7 +223,10 @@ impl Evaluator {
             Item::Comma(_) => {}
             Item::Expr(expr) => {
                 let value = self.eval_expr(expr)?;
-                if matches!(value, Value::Vector(_) | Value::String(_) | Value::Colour(_)) {
+                if matches!(
+                    value,
+                    Value::Vector(_) | Value::String(_) | Value::Colour(_)
+                ) {
                     return Err(self.unexpected_in(&item, head));
                 }
                 self.object_modifier_value(object, value, expr.span())?;
@@ -194,7 +237,12 @@ impl Evaluator {
     }
 
     /// Applies an evaluated modifier (texture, pigment, transform...) to an object.
-    fn object_modifier_value(&mut self, object: &mut Object, value: Value, span: Span) -> EvalResult<()> {
+    fn object_modifier_value(
+        &mut self,
+        object: &mut Object,
+        value: Value,
+        span: Span,
+    ) -> EvalResult<()> {
         match value {
             Value::Texture(texture) => self.attach_texture(object, (*texture).clone()),
             Value::Pigment(pigment) => {
@@ -214,7 +262,10 @@ impl Evaluator {
             Value::Nothing => {} // a left-out block such as `normal { .. }`
             other => {
                 return Err(self
-                    .error(span, format!("{} cannot modify an object", other.type_name()))
+                    .error(
+                        span,
+                        format!("{} cannot modify an object", other.type_name()),
+                    )
                     .with_label("not an object modifier")
                     .into())
             }
@@ -238,7 +289,12 @@ impl Evaluator {
     }
 
     /// Reads the operand of `translate`, `rotate`, `scale`, `matrix` or `transform`.
-    pub(crate) fn transform_keyword(&mut self, word: &str, span: Span, stream: &mut Stream) -> EvalResult<Transform> {
+    pub(crate) fn transform_keyword(
+        &mut self,
+        word: &str,
+        span: Span,
+        stream: &mut Stream,
+    ) -> EvalResult<Transform> {
         Ok(match word {
             "translate" => Transform::translation(self.expect_vector(stream, "a vector")?),
             "rotate" => Transform::rotation_degrees(self.expect_vector(stream, "a vector")?),
@@ -259,7 +315,12 @@ impl Evaluator {
                 match value {
                     Value::Transform(t) => *t,
                     other => {
-                        return Err(self.error(vspan, format!("expected a transform, found {}", other.type_name())).into())
+                        return Err(self
+                            .error(
+                                vspan,
+                                format!("expected a transform, found {}", other.type_name()),
+                            )
+                            .into())
                     }
                 }
             }
@@ -274,15 +335,21 @@ impl Evaluator {
         };
         if elements.len() != 12 {
             return Err(self
-                .error(vspan, format!("a matrix has 12 numbers, found {}", elements.len()))
+                .error(
+                    vspan,
+                    format!("a matrix has 12 numbers, found {}", elements.len()),
+                )
                 .into());
         }
         let mut values = [0.0; 12];
         for (v, e) in values.iter_mut().zip(elements.iter()) {
             *v = self.eval_float(e)?;
         }
-        matrix_transform(&values)
-            .ok_or_else(|| self.error(vspan, "this matrix is singular").with_label("cannot be inverted").into())
+        matrix_transform(&values).ok_or_else(|| {
+            self.error(vspan, "this matrix is singular")
+                .with_label("cannot be inverted")
+                .into()
+        })
     }
 
     /// `transform { .. }` block: a sequence of transformations (and `inverse`).
@@ -314,7 +381,10 @@ impl Evaluator {
     }
 
     /// `material { texture { .. } interior { .. } }`.
-    pub(crate) fn eval_material(&mut self, stream: &mut Stream) -> EvalResult<(Texture, Option<Interior>)> {
+    pub(crate) fn eval_material(
+        &mut self,
+        stream: &mut Stream,
+    ) -> EvalResult<(Texture, Option<Interior>)> {
         let mut texture = self.default_texture.clone();
         let mut interior = None;
         while let Some(item) = self.next_item(stream)? {
@@ -360,5 +430,8 @@ pub(crate) fn matrix_transform(values: &[f64; 12]) -> Option<Transform> {
         DVec3::new(v[3], v[4], v[5]),
         DVec3::new(v[6], v[7], v[8]),
     );
-    Transform::from_affine(DAffine3::from_mat3_translation(m, DVec3::new(v[9], v[10], v[11])))
+    Transform::from_affine(DAffine3::from_mat3_translation(
+        m,
+        DVec3::new(v[9], v[10], v[11]),
+    ))
 }

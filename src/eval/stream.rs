@@ -4,9 +4,7 @@
 use super::value::Value;
 use super::{EvalResult, Evaluator, Scope, LOOP_ITERATION_LIMIT};
 use crate::diag::{Span, TraceEntry};
-use crate::syntax::ast::{
-    Call, Directive, DirectiveKind, Expr, Item, MessageLevel, SwitchLabel,
-};
+use crate::syntax::ast::{Call, Directive, DirectiveKind, Expr, Item, MessageLevel, SwitchLabel};
 use std::rc::Rc;
 
 /// A stack of item lists being read; the top frame is read first.
@@ -29,17 +27,36 @@ enum FrameKind {
     /// An included file: its scope and trace entry are dropped when the frame ends.
     Include,
     /// A `#while` loop body.
-    While { directive: Rc<Directive>, iterations: u64 },
+    While {
+        directive: Rc<Directive>,
+        iterations: u64,
+    },
     /// A `#for` loop body.
-    For { directive: Rc<Directive>, value: f64, end: f64, step: f64, iterations: u64 },
+    For {
+        directive: Rc<Directive>,
+        value: f64,
+        end: f64,
+        step: f64,
+        iterations: u64,
+    },
     /// A `#switch` clause body; `clause` is the index of the clause running.
-    Switch { directive: Rc<Directive>, clause: usize },
+    Switch {
+        directive: Rc<Directive>,
+        clause: usize,
+    },
 }
 
 impl Stream {
     /// A stream over `items`.
     pub(crate) fn new(items: Rc<[Item]>) -> Stream {
-        Stream { frames: vec![Frame { items, position: 0, kind: FrameKind::Plain }], pushed_back: None }
+        Stream {
+            frames: vec![Frame {
+                items,
+                position: 0,
+                kind: FrameKind::Plain,
+            }],
+            pushed_back: None,
+        }
     }
 
     /// Puts an item back to be returned by the next read.
@@ -48,7 +65,11 @@ impl Stream {
     }
 
     fn push(&mut self, items: Rc<[Item]>, kind: FrameKind) {
-        self.frames.push(Frame { items, position: 0, kind });
+        self.frames.push(Frame {
+            items,
+            position: 0,
+            kind,
+        });
     }
 
     pub(crate) fn push_include(&mut self, items: Rc<[Item]>) {
@@ -63,7 +84,9 @@ impl Evaluator {
             return Ok(Some(item));
         }
         loop {
-            let Some(frame) = stream.frames.last_mut() else { return Ok(None) };
+            let Some(frame) = stream.frames.last_mut() else {
+                return Ok(None);
+            };
             if frame.position >= frame.items.len() {
                 self.end_frame(stream)?;
                 continue;
@@ -105,7 +128,9 @@ impl Evaluator {
 
     /// Pops the top frame, or restarts it when it is a loop whose condition still holds.
     fn end_frame(&mut self, stream: &mut Stream) -> EvalResult<()> {
-        let Some(frame) = stream.frames.last_mut() else { return Ok(()) };
+        let Some(frame) = stream.frames.last_mut() else {
+            return Ok(());
+        };
         match &mut frame.kind {
             FrameKind::Plain => {}
             FrameKind::Macro | FrameKind::Include => {
@@ -113,9 +138,14 @@ impl Evaluator {
                 self.trace.pop();
                 self.nesting -= 1;
             }
-            FrameKind::While { directive, iterations } => {
+            FrameKind::While {
+                directive,
+                iterations,
+            } => {
                 let directive = directive.clone();
-                let DirectiveKind::While { condition, .. } = &directive.kind else { unreachable!() };
+                let DirectiveKind::While { condition, .. } = &directive.kind else {
+                    unreachable!()
+                };
                 *iterations += 1;
                 let count = *iterations;
                 if count >= LOOP_ITERATION_LIMIT {
@@ -128,9 +158,17 @@ impl Evaluator {
                     return Ok(());
                 }
             }
-            FrameKind::For { directive, value, end, step, iterations } => {
+            FrameKind::For {
+                directive,
+                value,
+                end,
+                step,
+                iterations,
+            } => {
                 let directive = directive.clone();
-                let DirectiveKind::For { variable, .. } = &directive.kind else { unreachable!() };
+                let DirectiveKind::For { variable, .. } = &directive.kind else {
+                    unreachable!()
+                };
                 *iterations += 1;
                 // POV-Ray reads the loop variable back, so the body may change it.
                 let current = match self.lookup(variable) {
@@ -145,8 +183,11 @@ impl Evaluator {
                 // The variable ends one step past the last value, as in POV-Ray.
                 self.assign_local(variable, Value::Float(next));
                 if for_continues(next, end, step) {
-                    if let Some(Frame { kind: FrameKind::For { value, .. }, position, .. }) =
-                        stream.frames.last_mut()
+                    if let Some(Frame {
+                        kind: FrameKind::For { value, .. },
+                        position,
+                        ..
+                    }) = stream.frames.last_mut()
                     {
                         *value = next;
                         *position = 0;
@@ -160,9 +201,15 @@ impl Evaluator {
                 let directive = directive.clone();
                 let next = *clause + 1;
                 stream.frames.pop();
-                if let DirectiveKind::Switch { clauses, otherwise, .. } = &directive.kind {
+                if let DirectiveKind::Switch {
+                    clauses, otherwise, ..
+                } = &directive.kind
+                {
                     if let Some(clause) = clauses.get(next) {
-                        let kind = FrameKind::Switch { directive: directive.clone(), clause: next };
+                        let kind = FrameKind::Switch {
+                            directive: directive.clone(),
+                            clause: next,
+                        };
                         stream.push(clause.body.clone(), kind);
                     } else if let Some(otherwise) = otherwise {
                         stream.push(otherwise.clone(), FrameKind::Plain);
@@ -176,10 +223,13 @@ impl Evaluator {
     }
 
     fn loop_limit(&self, span: Span) -> Box<crate::diag::Diagnostic> {
-        self.error(span, format!("loop ran {LOOP_ITERATION_LIMIT} times without ending"))
-            .with_label("this loop")
-            .with_help("check that the loop condition eventually becomes false")
-            .into()
+        self.error(
+            span,
+            format!("loop ran {LOOP_ITERATION_LIMIT} times without ending"),
+        )
+        .with_label("this loop")
+        .with_help("check that the loop condition eventually becomes false")
+        .into()
     }
 
     /// `#local`-style assignment of a plain name in the innermost scope.
@@ -198,10 +248,18 @@ impl Evaluator {
     fn run_directive(&mut self, directive: &Rc<Directive>, stream: &mut Stream) -> EvalResult<()> {
         let span = directive.span;
         match &directive.kind {
-            DirectiveKind::Declare { local, target, value, layers } => {
+            DirectiveKind::Declare {
+                local,
+                target,
+                value,
+                layers,
+            } => {
                 let value = self.item_value(value)?;
                 if let Some(layer) = layers.first() {
-                    self.warn(layer.span, "layered textures are not supported yet; only the first layer is used");
+                    self.warn(
+                        layer.span,
+                        "layered textures are not supported yet; only the first layer is used",
+                    );
                 }
                 self.assign(*local, target, value)?;
             }
@@ -222,7 +280,12 @@ impl Evaluator {
                     }
                 }
             }
-            DirectiveKind::IfDefined { negate, target, then, rest } => {
+            DirectiveKind::IfDefined {
+                negate,
+                target,
+                then,
+                rest,
+            } => {
                 let defined = self.is_defined(target)?;
                 if defined != *negate {
                     stream.push(then.clone(), FrameKind::Plain);
@@ -241,10 +304,23 @@ impl Evaluator {
             }
             DirectiveKind::While { condition, body } => {
                 if self.eval_condition(condition)? {
-                    stream.push(body.clone(), FrameKind::While { directive: directive.clone(), iterations: 0 });
+                    stream.push(
+                        body.clone(),
+                        FrameKind::While {
+                            directive: directive.clone(),
+                            iterations: 0,
+                        },
+                    );
                 }
             }
-            DirectiveKind::For { variable, start, end, step, body, .. } => {
+            DirectiveKind::For {
+                variable,
+                start,
+                end,
+                step,
+                body,
+                ..
+            } => {
                 let start = self.eval_float(start)?;
                 let end = self.eval_float(end)?;
                 let step = match step {
@@ -252,12 +328,21 @@ impl Evaluator {
                     None => 1.0,
                 };
                 if step == 0.0 {
-                    return Err(self.error(span, "`#for` step is zero").with_label("this loop would never end").into());
+                    return Err(self
+                        .error(span, "`#for` step is zero")
+                        .with_label("this loop would never end")
+                        .into());
                 }
                 // POV-Ray makes the loop variable local to the current macro or file.
                 self.assign_local(variable, Value::Float(start));
                 if for_continues(start, end, step) {
-                    let kind = FrameKind::For { directive: directive.clone(), value: start, end, step, iterations: 0 };
+                    let kind = FrameKind::For {
+                        directive: directive.clone(),
+                        value: start,
+                        end,
+                        step,
+                        iterations: 0,
+                    };
                     stream.push(body.clone(), kind);
                 }
             }
@@ -280,12 +365,16 @@ impl Evaluator {
                 match level {
                     MessageLevel::Debug => eprint!("{text}"),
                     MessageLevel::Warning => {
-                        let mut d = crate::diag::Diagnostic::warning(span, text.trim_end().to_string());
+                        let mut d =
+                            crate::diag::Diagnostic::warning(span, text.trim_end().to_string());
                         d.trace = self.trace.iter().rev().cloned().collect();
                         self.warnings.push(d);
                     }
                     MessageLevel::Error => {
-                        return Err(self.error(span, text.trim_end().to_string()).with_label("`#error` reached").into())
+                        return Err(self
+                            .error(span, text.trim_end().to_string())
+                            .with_label("`#error` reached")
+                            .into())
                     }
                 }
             }
@@ -294,7 +383,10 @@ impl Evaluator {
             | DirectiveKind::FileRead { .. }
             | DirectiveKind::FileWrite { .. } => {
                 return Err(self
-                    .error(span, "file input and output directives are not supported yet")
+                    .error(
+                        span,
+                        "file input and output directives are not supported yet",
+                    )
                     .with_label("not supported yet")
                     .into())
             }
@@ -304,7 +396,14 @@ impl Evaluator {
 
     /// Starts the first clause whose label holds, or the `#else`.
     fn run_switch(&mut self, directive: &Rc<Directive>, stream: &mut Stream) -> EvalResult<()> {
-        let DirectiveKind::Switch { value, clauses, otherwise } = &directive.kind else { return Ok(()) };
+        let DirectiveKind::Switch {
+            value,
+            clauses,
+            otherwise,
+        } = &directive.kind
+        else {
+            return Ok(());
+        };
         let value = self.eval_float(value)?;
         for (index, clause) in clauses.iter().enumerate() {
             let holds = match &clause.label {
@@ -316,7 +415,13 @@ impl Evaluator {
                 }
             };
             if holds {
-                stream.push(clause.body.clone(), FrameKind::Switch { directive: directive.clone(), clause: index });
+                stream.push(
+                    clause.body.clone(),
+                    FrameKind::Switch {
+                        directive: directive.clone(),
+                        clause: index,
+                    },
+                );
                 return Ok(());
             }
         }
@@ -342,7 +447,9 @@ impl Evaluator {
                     self.nesting -= 1;
                     return;
                 }
-                FrameKind::While { .. } | FrameKind::For { .. } | FrameKind::Switch { .. } => return,
+                FrameKind::While { .. } | FrameKind::For { .. } | FrameKind::Switch { .. } => {
+                    return
+                }
             }
         }
     }
@@ -356,7 +463,10 @@ impl Evaluator {
             return Err(self
                 .error(call.span, format!("cannot run macro `{}`", definition.name))
                 .with_label("called here")
-                .with_secondary(definition.header_span, "its body mixes directives and braces in a way durer cannot follow")
+                .with_secondary(
+                    definition.header_span,
+                    "its body mixes directives and braces in a way durer cannot follow",
+                )
                 .into());
         };
         let required = definition.parameters.iter().filter(|p| !p.optional).count();
@@ -369,24 +479,40 @@ impl Evaluator {
                         "macro `{}` takes {} argument{}, found {}",
                         definition.name,
                         definition.parameters.len(),
-                        if definition.parameters.len() == 1 { "" } else { "s" },
+                        if definition.parameters.len() == 1 {
+                            ""
+                        } else {
+                            "s"
+                        },
                         call.arguments.len()
                     ),
                 )
                 .with_label("called here")
-                .with_secondary(definition.header_span, format!("parameters: ({})", names.join(", ")))
+                .with_secondary(
+                    definition.header_span,
+                    format!("parameters: ({})", names.join(", ")),
+                )
                 .into());
         }
         // Evaluate arguments in the caller's scope; plain identifiers are passed by reference.
-        let mut scope = Scope::with_capacity_and_hasher(definition.parameters.len(), Default::default());
+        let mut scope =
+            Scope::with_capacity_and_hasher(definition.parameters.len(), Default::default());
         let caller_scope = self.scopes.len() - 1;
         for (parameter, argument) in definition.parameters.iter().zip(&call.arguments) {
             let value = match argument {
                 crate::syntax::ast::Argument::Expr(Expr::Ident(name, span)) => {
                     match self.scopes.iter().rposition(|s| s.contains_key(name)) {
-                        Some(_) => Value::Reference { scope: caller_scope, name: name.clone() },
-                        None if self.is_builtin_name(name) => self.eval_expr(&Expr::Ident(name.clone(), *span))?,
-                        None => Value::Reference { scope: 0, name: name.clone() },
+                        Some(_) => Value::Reference {
+                            scope: caller_scope,
+                            name: name.clone(),
+                        },
+                        None if self.is_builtin_name(name) => {
+                            self.eval_expr(&Expr::Ident(name.clone(), *span))?
+                        }
+                        None => Value::Reference {
+                            scope: 0,
+                            name: name.clone(),
+                        },
                     }
                 }
                 crate::syntax::ast::Argument::Expr(expr) => self.eval_expr(expr)?,
@@ -395,7 +521,10 @@ impl Evaluator {
             scope.insert(parameter.name.clone(), value);
         }
         self.enter_nesting(call.span)?;
-        self.trace.push(TraceEntry { what: format!("macro `{}`", definition.name), span: call.span });
+        self.trace.push(TraceEntry {
+            what: format!("macro `{}`", definition.name),
+            span: call.span,
+        });
         self.scopes.push(scope);
         stream.push(body, FrameKind::Macro);
         Ok(())
@@ -403,7 +532,10 @@ impl Evaluator {
 
     /// Evaluates a macro call used as a value: its body must yield exactly one value.
     pub(crate) fn call_macro_value(&mut self, call: &Rc<Call>) -> EvalResult<Value> {
-        let mut stream = Stream { frames: Vec::new(), pushed_back: None };
+        let mut stream = Stream {
+            frames: Vec::new(),
+            pushed_back: None,
+        };
         self.enter_macro(call, &mut stream)?;
         let depth = self.scopes.len();
         let mut result: Option<Value> = None;
@@ -418,7 +550,14 @@ impl Evaluator {
                 while !stream.frames.is_empty() {
                     self.unwind_frame(&mut stream);
                 }
-                return Err(self.error(span, format!("macro `{}` used as a value produced more than one value", call.name))
+                return Err(self
+                    .error(
+                        span,
+                        format!(
+                            "macro `{}` used as a value produced more than one value",
+                            call.name
+                        ),
+                    )
                     .with_label("extra value")
                     .into());
             }
@@ -426,9 +565,12 @@ impl Evaluator {
             let _ = depth;
         }
         result.ok_or_else(|| {
-            self.error(call.span, format!("macro `{}` produced no value", call.name))
-                .with_label("used as a value here")
-                .into()
+            self.error(
+                call.span,
+                format!("macro `{}` produced no value", call.name),
+            )
+            .with_label("used as a value here")
+            .into()
         })
     }
 
@@ -444,20 +586,31 @@ impl Evaluator {
 
     /// Whether `#ifdef` finds the target (an identifier or an assigned array element).
     fn is_defined(&mut self, target: &crate::syntax::ast::Target) -> EvalResult<bool> {
-        let Some(value) = self.lookup(&target.name).cloned() else { return Ok(false) };
+        let Some(value) = self.lookup(&target.name).cloned() else {
+            return Ok(false);
+        };
         if target.indices.is_empty() {
             return Ok(true);
         }
-        let Value::Array(array) = value else { return Ok(false) };
+        let Value::Array(array) = value else {
+            return Ok(false);
+        };
         let mut indices = Vec::new();
         for index in &target.indices {
             indices.push(self.eval_float(index)?);
         }
-        Ok(array_offset(&array.sizes, &indices).and_then(|o| array.elements.get(o)).is_some_and(|e| e.is_some()))
+        Ok(array_offset(&array.sizes, &indices)
+            .and_then(|o| array.elements.get(o))
+            .is_some_and(|e| e.is_some()))
     }
 
     /// Stores a value for `#declare`/`#local`, including array elements.
-    pub(crate) fn assign(&mut self, local: bool, target: &crate::syntax::ast::Target, value: Value) -> EvalResult<()> {
+    pub(crate) fn assign(
+        &mut self,
+        local: bool,
+        target: &crate::syntax::ast::Target,
+        value: Value,
+    ) -> EvalResult<()> {
         let value = match value {
             Value::Reference { scope, name } => match self.lookup_from(scope, &name) {
                 Some(v) => v.clone(),
@@ -491,7 +644,13 @@ impl Evaluator {
         };
         let Some(offset) = array_offset(&array.sizes, &indices) else {
             return Err(self
-                .error(target.span, format!("array index {:?} out of range for size {:?}", indices, array.sizes))
+                .error(
+                    target.span,
+                    format!(
+                        "array index {:?} out of range for size {:?}",
+                        indices, array.sizes
+                    ),
+                )
                 .with_label("index out of range")
                 .into());
         };

@@ -64,7 +64,10 @@ impl Vector {
         for (c, v) in components.iter_mut().zip(values) {
             *c = *v;
         }
-        Vector { components, len: values.len().clamp(1, 5) as u8 }
+        Vector {
+            components,
+            len: values.len().clamp(1, 5) as u8,
+        }
     }
 
     /// A 3-vector.

@@ -12,21 +12,84 @@ use std::rc::Rc;
 
 /// Block keywords durer evaluates.
 pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
-    "background", "box", "camera", "color_map", "colour_map", "cone", "cylinder", "difference",
-    "disc", "finish", "global_settings", "interior", "intersection", "light_source", "material",
-    "merge", "normal", "object", "pigment", "plane", "quadric", "sphere", "texture", "torus",
-    "transform", "triangle", "union",
+    "background",
+    "box",
+    "camera",
+    "color_map",
+    "colour_map",
+    "cone",
+    "cylinder",
+    "difference",
+    "disc",
+    "finish",
+    "global_settings",
+    "interior",
+    "intersection",
+    "light_source",
+    "material",
+    "merge",
+    "normal",
+    "object",
+    "pigment",
+    "plane",
+    "quadric",
+    "sphere",
+    "texture",
+    "torus",
+    "transform",
+    "triangle",
+    "union",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
 const UNSUPPORTED_BLOCKS: &[&str] = &[
-    "bicubic_patch", "blob", "fog", "bounded_by", "clipped_by", "photons", "radiosity",
-    "looks_like", "projected_through", "warp", "image_map", "bump_map", "material_map",
-    "uv_vectors", "irid", "subsurface", "media_attenuation", "height_field", "isosurface", "julia_fractal", "lathe",
-    "media", "mesh", "mesh2", "parametric", "photons", "poly", "polygon", "prism", "rainbow",
-    "sky_sphere", "smooth_triangle", "sor", "sphere_sweep", "spline",
-    "superellipsoid", "text", "cubic", "quartic", "ovus", "lemon", "density", "pigment_map",
-    "normal_map", "texture_map", "slope_map", "interior_texture",
+    "bicubic_patch",
+    "blob",
+    "fog",
+    "bounded_by",
+    "clipped_by",
+    "photons",
+    "radiosity",
+    "looks_like",
+    "projected_through",
+    "warp",
+    "image_map",
+    "bump_map",
+    "material_map",
+    "uv_vectors",
+    "irid",
+    "subsurface",
+    "media_attenuation",
+    "height_field",
+    "isosurface",
+    "julia_fractal",
+    "lathe",
+    "media",
+    "mesh",
+    "mesh2",
+    "parametric",
+    "photons",
+    "poly",
+    "polygon",
+    "prism",
+    "rainbow",
+    "sky_sphere",
+    "smooth_triangle",
+    "sor",
+    "sphere_sweep",
+    "spline",
+    "superellipsoid",
+    "text",
+    "cubic",
+    "quartic",
+    "ovus",
+    "lemon",
+    "density",
+    "pigment_map",
+    "normal_map",
+    "texture_map",
+    "slope_map",
+    "interior_texture",
 ];
 
 impl Evaluator {
@@ -48,7 +111,11 @@ impl Evaluator {
                 }
                 match chosen {
                     Some(word) => word,
-                    None => return Err(self.error(block.head_span, "no branch of this `#if` chose a block").into()),
+                    None => {
+                        return Err(self
+                            .error(block.head_span, "no branch of this `#if` chose a block")
+                            .into())
+                    }
                 }
             }
         };
@@ -81,24 +148,40 @@ impl Evaluator {
                 self.eval_global_settings(stream)?;
                 Ok(Value::Nothing)
             }
-            "texture" => Ok(Value::Texture(std::sync::Arc::new(self.eval_texture(stream)?))),
+            "texture" => Ok(Value::Texture(std::sync::Arc::new(
+                self.eval_texture(stream)?,
+            ))),
             "pigment" => Ok(Value::Pigment(Rc::new(self.eval_pigment(stream)?))),
             "finish" => Ok(Value::Finish(Rc::new(self.eval_finish(stream, None)?))),
             "interior" => Ok(Value::Interior(Rc::new(self.eval_interior(stream)?))),
-            "color_map" | "colour_map" => Ok(Value::ColourMap(Rc::new(self.eval_colour_map(stream)?))),
-            "transform" => Ok(Value::Transform(Rc::new(self.eval_transform_block(stream)?))),
-            "material" => Ok(Value::Texture(std::sync::Arc::new(self.eval_material(stream)?.0))),
+            "color_map" | "colour_map" => {
+                Ok(Value::ColourMap(Rc::new(self.eval_colour_map(stream)?)))
+            }
+            "transform" => Ok(Value::Transform(Rc::new(
+                self.eval_transform_block(stream)?,
+            ))),
+            "material" => Ok(Value::Texture(std::sync::Arc::new(
+                self.eval_material(stream)?.0,
+            ))),
             "normal" => {
-                self.warn(block.head_span, "`normal` perturbation is not supported yet; it is ignored");
+                self.warn(
+                    block.head_span,
+                    "`normal` perturbation is not supported yet; it is ignored",
+                );
                 Ok(Value::Nothing)
             }
             _ if UNSUPPORTED_BLOCKS.contains(&head) => {
                 // Leave the feature out of the picture but say so, so the rest still renders.
-                self.warn(block.head_span, format!("`{head}` is not supported yet; it is left out"));
+                self.warn(
+                    block.head_span,
+                    format!("`{head}` is not supported yet; it is left out"),
+                );
                 Ok(Value::Nothing)
             }
             _ => {
-                let mut d = self.error(block.head_span, format!("unknown block keyword `{head}`")).with_label("not a POV-Ray block");
+                let mut d = self
+                    .error(block.head_span, format!("unknown block keyword `{head}`"))
+                    .with_label("not a POV-Ray block");
                 let candidates = BLOCK_KEYWORDS.iter().chain(UNSUPPORTED_BLOCKS).copied();
                 if let Some(s) = did_you_mean(head, candidates) {
                     d = d.with_help(format!("did you mean `{s}`?"));
@@ -109,7 +192,11 @@ impl Evaluator {
     }
 
     /// Reads the next item as a value (skipping one leading comma).
-    pub(crate) fn expect_value(&mut self, stream: &mut Stream, what: &str) -> EvalResult<(Value, crate::diag::Span)> {
+    pub(crate) fn expect_value(
+        &mut self,
+        stream: &mut Stream,
+        what: &str,
+    ) -> EvalResult<(Value, crate::diag::Span)> {
         let mut item = self.next_item(stream)?;
         if let Some(Item::Comma(_)) = item {
             item = self.next_item(stream)?;
@@ -120,10 +207,18 @@ impl Evaluator {
                 Ok((self.item_value(&item)?, span))
             }
             Some(other) => Err(self
-                .error(other.span(), format!("expected {what}, found {}", describe_item(&other)))
+                .error(
+                    other.span(),
+                    format!("expected {what}, found {}", describe_item(&other)),
+                )
                 .with_label(format!("expected {what}"))
                 .into()),
-            None => Err(self.error(self.stream_end_span(), format!("expected {what}, found the end of the block")).into()),
+            None => Err(self
+                .error(
+                    self.stream_end_span(),
+                    format!("expected {what}, found the end of the block"),
+                )
+                .into()),
         }
     }
 
@@ -176,7 +271,10 @@ impl Evaluator {
     /// "`x` is not allowed inside `block`" with a did-you-mean for misspelt keywords.
     pub(crate) fn unexpected_in(&self, item: &Item, block: &str) -> Box<crate::diag::Diagnostic> {
         let mut d = self
-            .error(item.span(), format!("{} is not allowed inside `{block}`", describe_item(item)))
+            .error(
+                item.span(),
+                format!("{} is not allowed inside `{block}`", describe_item(item)),
+            )
             .with_label("unexpected here");
         if let Item::Expr(crate::syntax::ast::Expr::Ident(name, _)) = item {
             if self.lookup(name).is_none() {
@@ -197,38 +295,42 @@ impl Evaluator {
         let mut transforms: Vec<Transform> = Vec::new();
         while let Some(item) = self.next_item(stream)? {
             match &item {
-                Item::Keyword(word, span) => match &**word {
-                    "perspective" => camera.projection = Projection::Perspective,
-                    "orthographic" => camera.projection = Projection::Orthographic,
-                    "location" => camera.location = self.expect_vector(stream, "a vector")?,
-                    "direction" => camera.direction = self.expect_vector(stream, "a vector")?,
-                    "right" => camera.right = self.expect_vector(stream, "a vector")?,
-                    "up" => camera.up = self.expect_vector(stream, "a vector")?,
-                    "sky" => sky = self.expect_vector(stream, "a vector")?,
-                    "look_at" => look_at = Some(self.expect_vector(stream, "a vector")?),
-                    "angle" => {
-                        // `angle` may stand alone for orthographic cameras.
-                        match self.peek_item(stream)? {
-                            Some(Item::Expr(_)) => angle = Some(self.expect_float(stream, "an angle")?),
-                            _ => angle = Some(f64::NAN),
+                Item::Keyword(word, span) => {
+                    match &**word {
+                        "perspective" => camera.projection = Projection::Perspective,
+                        "orthographic" => camera.projection = Projection::Orthographic,
+                        "location" => camera.location = self.expect_vector(stream, "a vector")?,
+                        "direction" => camera.direction = self.expect_vector(stream, "a vector")?,
+                        "right" => camera.right = self.expect_vector(stream, "a vector")?,
+                        "up" => camera.up = self.expect_vector(stream, "a vector")?,
+                        "sky" => sky = self.expect_vector(stream, "a vector")?,
+                        "look_at" => look_at = Some(self.expect_vector(stream, "a vector")?),
+                        "angle" => {
+                            // `angle` may stand alone for orthographic cameras.
+                            match self.peek_item(stream)? {
+                                Some(Item::Expr(_)) => {
+                                    angle = Some(self.expect_float(stream, "an angle")?)
+                                }
+                                _ => angle = Some(f64::NAN),
+                            }
                         }
-                    }
-                    "translate" | "rotate" | "scale" | "matrix" | "transform" => {
-                        transforms.push(self.transform_keyword(word, *span, stream)?)
-                    }
-                    "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "cylinder" | "spherical"
-                    | "mesh_camera" => {
-                        self.warn(*span, format!("`{word}` cameras are not supported yet; a perspective camera is used"));
-                        if &**word == "cylinder" {
-                            let _ = self.expect_value(stream, "the cylinder camera type")?;
+                        "translate" | "rotate" | "scale" | "matrix" | "transform" => {
+                            transforms.push(self.transform_keyword(word, *span, stream)?)
                         }
+                        "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "cylinder"
+                        | "spherical" | "mesh_camera" => {
+                            self.warn(*span, format!("`{word}` cameras are not supported yet; a perspective camera is used"));
+                            if &**word == "cylinder" {
+                                let _ = self.expect_value(stream, "the cylinder camera type")?;
+                            }
+                        }
+                        "focal_point" | "aperture" | "blur_samples" | "confidence" | "variance" => {
+                            self.warn(*span, format!("camera `{word}` (focal blur) is not supported yet; it is ignored"));
+                            let _ = self.expect_value(stream, "a value")?;
+                        }
+                        _ => return Err(self.unexpected_in(&item, "camera")),
                     }
-                    "focal_point" | "aperture" | "blur_samples" | "confidence" | "variance" => {
-                        self.warn(*span, format!("camera `{word}` (focal blur) is not supported yet; it is ignored"));
-                        let _ = self.expect_value(stream, "a value")?;
-                    }
-                    _ => return Err(self.unexpected_in(&item, "camera")),
-                },
+                }
                 Item::Block(block) => match self.eval_block(block)? {
                     Value::Transform(t) => transforms.push(*t),
                     Value::Camera(c) => camera = Rc::unwrap_or_clone(c),
@@ -268,7 +370,13 @@ impl Evaluator {
         if camera.projection == Projection::Orthographic {
             if let (Some(angle), Some(target)) = (angle, look_at) {
                 // Same view as a perspective camera at the look_at distance.
-                let angle = if angle.is_finite() { angle } else { 2.0 * (0.5 * camera.right.length() / camera.direction.length()).atan().to_degrees() };
+                let angle = if angle.is_finite() {
+                    angle
+                } else {
+                    2.0 * (0.5 * camera.right.length() / camera.direction.length())
+                        .atan()
+                        .to_degrees()
+                };
                 let distance = (target - camera.location).length();
                 let width = 2.0 * distance * (angle.to_radians() / 2.0).tan();
                 let aspect = camera.up.length() / camera.right.length();
@@ -306,9 +414,18 @@ impl Evaluator {
                     }
                 }
             }
-            _ => return Err(self.error(self.stream_end_span(), "expected the light's position").into()),
+            _ => {
+                return Err(self
+                    .error(self.stream_end_span(), "expected the light's position")
+                    .into())
+            }
         };
-        let mut spot = Spotlight { point_at: DVec3::Z, radius: 30.0, falloff: 45.0, tightness: 0.0 };
+        let mut spot = Spotlight {
+            point_at: DVec3::Z,
+            radius: 30.0,
+            falloff: 45.0,
+            tightness: 0.0,
+        };
         let mut is_spot = light.spotlight.is_some();
         if let Some(s) = light.spotlight {
             spot = s;
@@ -322,7 +439,9 @@ impl Evaluator {
                     "falloff" => spot.falloff = self.expect_float(stream, "an angle")?,
                     "tightness" => spot.tightness = self.expect_float(stream, "a float")?,
                     "shadowless" => light.shadowless = true,
-                    "fade_distance" => light.fade_distance = self.expect_float(stream, "a float")?,
+                    "fade_distance" => {
+                        light.fade_distance = self.expect_float(stream, "a float")?
+                    }
                     "fade_power" => light.fade_power = self.expect_float(stream, "a float")?,
                     "color" | "colour" => {
                         let (value, span) = self.expect_value(stream, "a colour")?;
@@ -343,10 +462,16 @@ impl Evaluator {
                         }
                     }
                     "jitter" | "circular" | "orient" | "parallel" | "cylinder" => {
-                        self.warn(*span, format!("light source `{word}` is not supported yet; it is ignored"));
+                        self.warn(
+                            *span,
+                            format!("light source `{word}` is not supported yet; it is ignored"),
+                        );
                     }
                     "adaptive" | "area_illumination" => {
-                        self.warn(*span, format!("light source `{word}` is not supported yet; it is ignored"));
+                        self.warn(
+                            *span,
+                            format!("light source `{word}` is not supported yet; it is ignored"),
+                        );
                         let _ = self.optional_bool(stream)?;
                     }
                     _ => return Err(self.unexpected_in(&item, "light_source")),
@@ -371,19 +496,26 @@ impl Evaluator {
         while let Some(item) = self.next_item(stream)? {
             match &item {
                 Item::Keyword(word, span) => match &**word {
-                    "assumed_gamma" => self.settings.assumed_gamma = Some(self.expect_float(stream, "a float")?),
+                    "assumed_gamma" => {
+                        self.settings.assumed_gamma = Some(self.expect_float(stream, "a float")?)
+                    }
                     "max_trace_level" => {
                         let level = self.expect_float(stream, "a float")?;
                         self.settings.max_trace_level = level.clamp(1.0, 256.0) as u32;
                     }
-                    "adc_bailout" => self.settings.adc_bailout = self.expect_float(stream, "a float")?,
+                    "adc_bailout" => {
+                        self.settings.adc_bailout = self.expect_float(stream, "a float")?
+                    }
                     "ambient_light" => {
                         let (value, span) = self.expect_value(stream, "a colour")?;
                         self.settings.ambient_light = self.to_colour(value, span)?.rgb_vec();
                     }
                     "charset" | "max_intersections" | "number_of_waves" | "noise_generator"
                     | "hf_gray_16" | "irid_wavelength" | "mm_per_unit" | "subsurface" => {
-                        self.warn(*span, format!("global setting `{word}` is not supported yet; it is ignored"));
+                        self.warn(
+                            *span,
+                            format!("global setting `{word}` is not supported yet; it is ignored"),
+                        );
                         let _ = self.next_item(stream)?;
                     }
                     _ => return Err(self.unexpected_in(&item, "global_settings")),
@@ -394,7 +526,10 @@ impl Evaluator {
                         _ => String::new(),
                     };
                     if matches!(name.as_str(), "radiosity" | "photons") {
-                        self.warn(block.head_span, format!("`{name}` is not supported yet; it is ignored"));
+                        self.warn(
+                            block.head_span,
+                            format!("`{name}` is not supported yet; it is ignored"),
+                        );
                     } else {
                         return Err(self.unexpected_in(&item, "global_settings"));
                     }

@@ -25,12 +25,24 @@ impl Colour {
 
     /// An opaque colour from its three channels.
     pub const fn rgb(red: f64, green: f64, blue: f64) -> Colour {
-        Colour { red, green, blue, filter: 0.0, transmit: 0.0 }
+        Colour {
+            red,
+            green,
+            blue,
+            filter: 0.0,
+            transmit: 0.0,
+        }
     }
 
     /// A colour from all five components.
     pub const fn rgbft(red: f64, green: f64, blue: f64, filter: f64, transmit: f64) -> Colour {
-        Colour { red, green, blue, filter, transmit }
+        Colour {
+            red,
+            green,
+            blue,
+            filter,
+            transmit,
+        }
     }
 
     /// A grey with the same value in all three channels.

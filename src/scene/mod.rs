@@ -172,20 +172,39 @@ pub enum Shape {
     /// `plane { normal, distance }`, the normal as written (not yet normalised).
     Plane { normal: DVec3, distance: f64 },
     /// `cylinder { base, cap, radius [open] }`.
-    Cylinder { base: DVec3, cap: DVec3, radius: f64, open: bool },
+    Cylinder {
+        base: DVec3,
+        cap: DVec3,
+        radius: f64,
+        open: bool,
+    },
     /// `cone { base, base_radius, cap, cap_radius [open] }`.
-    Cone { base: DVec3, base_radius: f64, cap: DVec3, cap_radius: f64, open: bool },
+    Cone {
+        base: DVec3,
+        base_radius: f64,
+        cap: DVec3,
+        cap_radius: f64,
+        open: bool,
+    },
     /// `torus { major, minor }`, in the XZ plane around the Y axis.
     Torus { major: f64, minor: f64 },
     /// `disc { centre, normal, radius [, hole_radius] }`.
-    Disc { centre: DVec3, normal: DVec3, radius: f64, hole_radius: f64 },
+    Disc {
+        centre: DVec3,
+        normal: DVec3,
+        radius: f64,
+        hole_radius: f64,
+    },
     /// `quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }`:
     /// A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
     Quadric { coefficients: [f64; 10] },
     /// `triangle { a, b, c }`.
     Triangle { corners: [DVec3; 3] },
     /// A CSG combination of child objects.
-    Csg { operation: CsgOperation, children: Vec<Object> },
+    Csg {
+        operation: CsgOperation,
+        children: Vec<Object>,
+    },
 }
 
 /// The four CSG operations.
@@ -212,18 +231,28 @@ pub struct Texture {
 
 impl Default for Texture {
     fn default() -> Self {
-        Texture { pigment: Pigment::Solid(Colour::BLACK), finish: Finish::default() }
+        Texture {
+            pigment: Pigment::Solid(Colour::BLACK),
+            finish: Finish::default(),
+        }
     }
 }
 
 /// A pigment: a colour function of position.
+// Pigments live inside shared textures, never in large arrays, so the size of the pattern
+// variant does not matter.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 pub enum Pigment {
     /// The same colour everywhere.
     Solid(Colour),
     /// A pattern looked up through a map; the point is first mapped by `transform`'s
     /// `inner_from_outer` (object local space to pattern space).
-    Pattern { pattern: Pattern, map: PigmentMap, transform: Transform },
+    Pattern {
+        pattern: Pattern,
+        map: PigmentMap,
+        transform: Transform,
+    },
 }
 
 /// A pattern: a function from pattern space to a value in [0, 1] or a block index.

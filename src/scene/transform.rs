@@ -30,7 +30,10 @@ impl Transform {
         if !det.is_finite() || det.abs() < 1e-300 {
             return None;
         }
-        Some(Transform { outer_from_inner, inner_from_outer: outer_from_inner.inverse() })
+        Some(Transform {
+            outer_from_inner,
+            inner_from_outer: outer_from_inner.inverse(),
+        })
     }
 
     /// A translation by `offset`.
@@ -51,8 +54,12 @@ impl Transform {
         let r = angles * (std::f64::consts::PI / 180.0);
         // POV-Ray rotates about X, then Y, then Z; its left-handed system matches glam's
         // right-handed rotation matrices applied to the same coordinates.
-        let m = DMat3::from_rotation_z(r.z) * DMat3::from_rotation_y(r.y) * DMat3::from_rotation_x(r.x);
-        Transform { outer_from_inner: DAffine3::from_mat3(m), inner_from_outer: DAffine3::from_mat3(m.transpose()) }
+        let m =
+            DMat3::from_rotation_z(r.z) * DMat3::from_rotation_y(r.y) * DMat3::from_rotation_x(r.x);
+        Transform {
+            outer_from_inner: DAffine3::from_mat3(m),
+            inner_from_outer: DAffine3::from_mat3(m.transpose()),
+        }
     }
 
     /// `then` applied after `self`: the result maps inner space of `self` to outer space of `then`.
@@ -65,7 +72,10 @@ impl Transform {
 
     /// The inverse transformation.
     pub fn inverse(&self) -> Transform {
-        Transform { outer_from_inner: self.inner_from_outer, inner_from_outer: self.outer_from_inner }
+        Transform {
+            outer_from_inner: self.inner_from_outer,
+            inner_from_outer: self.outer_from_inner,
+        }
     }
 
     /// Maps a point from inner to outer space.

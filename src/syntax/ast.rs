@@ -382,20 +382,44 @@ pub enum SwitchLabel {
 #[derive(Debug)]
 pub enum DirectiveKind {
     /// `#declare` (global) or `#local` (innermost scope).
-    Declare { local: bool, target: Target, value: Item, layers: Vec<Rc<Block>> },
+    Declare {
+        local: bool,
+        target: Target,
+        value: Item,
+        layers: Vec<Rc<Block>>,
+    },
     /// `#undef Name`.
     Undef(Name, Span),
     /// `#if`, `#ifdef`, `#ifndef` with `#elseif`/`#else` branches (an `#ifdef` test is
     /// lowered to a condition on `defined`).
-    If { branches: Vec<Branch>, end_span: Span },
+    If {
+        branches: Vec<Branch>,
+        end_span: Span,
+    },
     /// `#ifdef (Target)`/`#ifndef`: the first branch tests definedness.
-    IfDefined { negate: bool, target: Target, then: Rc<[Item]>, rest: Vec<Branch> },
+    IfDefined {
+        negate: bool,
+        target: Target,
+        then: Rc<[Item]>,
+        rest: Vec<Branch>,
+    },
     /// `#while (c) body #end`.
     While { condition: Expr, body: Rc<[Item]> },
     /// `#for (Name, start, end[, step]) body #end`.
-    For { variable: Name, variable_span: Span, start: Expr, end: Expr, step: Option<Expr>, body: Rc<[Item]> },
+    For {
+        variable: Name,
+        variable_span: Span,
+        start: Expr,
+        end: Expr,
+        step: Option<Expr>,
+        body: Rc<[Item]>,
+    },
     /// `#switch (v) clauses [#else ..] #end`.
-    Switch { value: Expr, clauses: Vec<SwitchClause>, otherwise: Option<Rc<[Item]>> },
+    Switch {
+        value: Expr,
+        clauses: Vec<SwitchClause>,
+        otherwise: Option<Rc<[Item]>>,
+    },
     /// `#break`.
     Break,
     /// `#macro`.
@@ -409,7 +433,11 @@ pub enum DirectiveKind {
     /// `#debug`, `#warning`, `#error` with their message.
     Message { level: MessageLevel, text: Expr },
     /// `#fopen Name "file" read|write|append`.
-    FileOpen { handle: Name, path: Expr, mode: Name },
+    FileOpen {
+        handle: Name,
+        path: Expr,
+        mode: Name,
+    },
     /// `#fclose Name`.
     FileClose(Name),
     /// `#read (Handle, targets..)`.

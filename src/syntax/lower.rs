@@ -45,7 +45,12 @@ impl Lowerer {
             Rule::block => Item::Block(Rc::new(self.block(pair))),
             Rule::map_entry => {
                 let inner = pair.into_inner().next();
-                Item::MapEntry(inner.map(|p| self.items(p)).unwrap_or_else(|| Rc::from(Vec::new())), span)
+                Item::MapEntry(
+                    inner
+                        .map(|p| self.items(p))
+                        .unwrap_or_else(|| Rc::from(Vec::new())),
+                    span,
+                )
             }
             Rule::comma => Item::Comma(span),
             Rule::keyword => Item::Keyword(Rc::from(pair.as_str()), span),
@@ -76,8 +81,16 @@ impl Lowerer {
                 BlockHead::Conditional(branches)
             }
         };
-        let body = inner.next().map(|p| self.items(p)).unwrap_or_else(|| Rc::from(Vec::new()));
-        Block { head, head_span, body, span }
+        let body = inner
+            .next()
+            .map(|p| self.items(p))
+            .unwrap_or_else(|| Rc::from(Vec::new()));
+        Block {
+            head,
+            head_span,
+            body,
+            span,
+        }
     }
 
     /// Lowers an `expr` pair (arithmetic with Pratt precedence).
@@ -111,9 +124,10 @@ impl Lowerer {
         let mut inner = pair.into_inner();
         let logical = self.logical(inner.next().expect("full_expr has a condition"));
         match (inner.next(), inner.next()) {
-            (Some(a), Some(b)) => {
-                Expr::Conditional(Box::new((logical, self.full_expr(a), self.full_expr(b))), span)
-            }
+            (Some(a), Some(b)) => Expr::Conditional(
+                Box::new((logical, self.full_expr(a), self.full_expr(b))),
+                span,
+            ),
             _ => logical,
         }
     }
@@ -202,12 +216,22 @@ impl Lowerer {
                     .collect()
             })
             .unwrap_or_default();
-        Call { name: Rc::from(name.as_str()), name_span, arguments, span }
+        Call {
+            name: Rc::from(name.as_str()),
+            name_span,
+            arguments,
+            span,
+        }
     }
 
     fn colour(&self, pair: Pair<Rule>) -> ColourLiteral {
         let span = self.span(&pair);
-        let mut literal = ColourLiteral { kind: None, base: None, components: Vec::new(), span };
+        let mut literal = ColourLiteral {
+            kind: None,
+            base: None,
+            components: Vec::new(),
+            span,
+        };
         for p in pair.into_inner() {
             match p.as_rule() {
                 Rule::colour_type => {
@@ -245,12 +269,16 @@ impl Lowerer {
 
     fn array(&self, pair: Pair<Rule>) -> ArrayLiteral {
         let span = self.span(&pair);
-        let mut literal = ArrayLiteral { sizes: Vec::new(), initialiser: None, span };
+        let mut literal = ArrayLiteral {
+            sizes: Vec::new(),
+            initialiser: None,
+            span,
+        };
         for p in pair.into_inner() {
             match p.as_rule() {
-                Rule::array_size => {
-                    literal.sizes.push(self.full_expr(p.into_inner().next().expect("size")))
-                }
+                Rule::array_size => literal
+                    .sizes
+                    .push(self.full_expr(p.into_inner().next().expect("size"))),
                 Rule::array_init => literal.initialiser = Some(self.array_init(p)),
                 _ => {}
             }
@@ -276,11 +304,15 @@ impl Lowerer {
         let mut body = FunctionBody::Items(Rc::from(Vec::new()));
         for p in pair.into_inner() {
             match p.as_rule() {
-                Rule::parameters => parameters = self.parameters(p).into_iter().map(|p| p.name).collect(),
+                Rule::parameters => {
+                    parameters = self.parameters(p).into_iter().map(|p| p.name).collect()
+                }
                 Rule::function_body => {
                     let inner = p.into_inner().next();
                     body = match inner {
-                        Some(e) if e.as_rule() == Rule::full_expr => FunctionBody::Expr(self.full_expr(e)),
+                        Some(e) if e.as_rule() == Rule::full_expr => {
+                            FunctionBody::Expr(self.full_expr(e))
+                        }
                         Some(items) => FunctionBody::Items(self.items(items)),
                         None => FunctionBody::Items(Rc::from(Vec::new())),
                     };
@@ -288,7 +320,11 @@ impl Lowerer {
                 _ => {}
             }
         }
-        FunctionLiteral { parameters, body, span }
+        FunctionLiteral {
+            parameters,
+            body,
+            span,
+        }
     }
 
     fn parameters(&self, pair: Pair<Rule>) -> Vec<Parameter> {
@@ -303,7 +339,11 @@ impl Lowerer {
                         _ => name = Rc::from(q.as_str()),
                     }
                 }
-                Parameter { name, optional, span }
+                Parameter {
+                    name,
+                    optional,
+                    span,
+                }
             })
             .collect()
     }
@@ -315,7 +355,11 @@ impl Lowerer {
         let indices = inner
             .map(|p| self.full_expr(p.into_inner().next().expect("index expression")))
             .collect();
-        Target { name, indices, span }
+        Target {
+            name,
+            indices,
+            span,
+        }
     }
 
     fn branches<'i>(&self, pairs: impl Iterator<Item = Pair<'i, Rule>>) -> (Vec<Branch>, Span) {
@@ -327,11 +371,17 @@ impl Lowerer {
                     let mut inner = p.into_inner().filter(|p| !is_directive_word(p.as_rule()));
                     let condition = self.expr(inner.next().expect("elseif condition"));
                     let body = self.items(inner.next().expect("elseif body"));
-                    branches.push(Branch { condition: Some(condition), body });
+                    branches.push(Branch {
+                        condition: Some(condition),
+                        body,
+                    });
                 }
                 Rule::else_branch => {
                     let body = self.items(significant(p).next().expect("else body"));
-                    branches.push(Branch { condition: None, body });
+                    branches.push(Branch {
+                        condition: None,
+                        body,
+                    });
                 }
                 Rule::end => end_span = self.span(&p),
                 _ => {}
@@ -343,7 +393,9 @@ impl Lowerer {
     fn directive(&self, pair: Pair<Rule>) -> Directive {
         let span = self.span(&pair);
         let rule = pair.as_rule();
-        let mut inner = pair.into_inner().filter(|p| !is_directive_word(p.as_rule()));
+        let mut inner = pair
+            .into_inner()
+            .filter(|p| !is_directive_word(p.as_rule()));
         let kind = match rule {
             Rule::declare | Rule::local => {
                 let mut first = inner.next().expect("declare target");
@@ -361,7 +413,12 @@ impl Lowerer {
                     .filter_map(|p| p.into_inner().find(|b| b.as_rule() == Rule::block))
                     .map(|b| Rc::new(self.block(b)))
                     .collect();
-                DirectiveKind::Declare { local: rule == Rule::local, target, value, layers }
+                DirectiveKind::Declare {
+                    local: rule == Rule::local,
+                    target,
+                    value,
+                    layers,
+                }
             }
             Rule::undef => {
                 let name = inner.next().expect("undef name");
@@ -371,7 +428,10 @@ impl Lowerer {
                 let condition = self.expr(inner.next().expect("if condition"));
                 let body = self.items(inner.next().expect("if body"));
                 let (rest, end_span) = self.branches(inner);
-                let mut branches = vec![Branch { condition: Some(condition), body }];
+                let mut branches = vec![Branch {
+                    condition: Some(condition),
+                    body,
+                }];
                 branches.extend(rest);
                 DirectiveKind::If { branches, end_span }
             }
@@ -383,10 +443,19 @@ impl Lowerer {
                 let indices = tinner
                     .map(|p| self.full_expr(p.into_inner().next().expect("index")))
                     .collect();
-                let target = Target { name, indices, span: tspan };
+                let target = Target {
+                    name,
+                    indices,
+                    span: tspan,
+                };
                 let then = self.items(inner.next().expect("ifdef body"));
                 let (rest, _) = self.branches(inner);
-                DirectiveKind::IfDefined { negate: rule == Rule::ifndef_directive, target, then, rest }
+                DirectiveKind::IfDefined {
+                    negate: rule == Rule::ifndef_directive,
+                    target,
+                    then,
+                    rest,
+                }
             }
             Rule::while_directive => {
                 let condition = self.expr(inner.next().expect("while condition"));
@@ -408,7 +477,14 @@ impl Lowerer {
                         _ => {}
                     }
                 }
-                DirectiveKind::For { variable, variable_span, start, end, step, body }
+                DirectiveKind::For {
+                    variable,
+                    variable_span,
+                    start,
+                    end,
+                    step,
+                    body,
+                }
             }
             Rule::switch_directive => {
                 let value = self.expr(inner.next().expect("switch value"));
@@ -420,10 +496,14 @@ impl Lowerer {
                             let mut c = p.into_inner();
                             let label_pair = c.next().expect("switch label");
                             let label = if label_pair.as_rule() == Rule::case_label {
-                                let mut l = label_pair.into_inner().filter(|p| p.as_rule() == Rule::expr);
+                                let mut l = label_pair
+                                    .into_inner()
+                                    .filter(|p| p.as_rule() == Rule::expr);
                                 SwitchLabel::Case(self.expr(l.next().expect("case value")))
                             } else {
-                                let mut l = label_pair.into_inner().filter(|p| p.as_rule() == Rule::full_expr);
+                                let mut l = label_pair
+                                    .into_inner()
+                                    .filter(|p| p.as_rule() == Rule::full_expr);
                                 let low = self.full_expr(l.next().expect("range low"));
                                 let high = self.full_expr(l.next().expect("range high"));
                                 SwitchLabel::Range(low, high)
@@ -437,7 +517,11 @@ impl Lowerer {
                         _ => {}
                     }
                 }
-                DirectiveKind::Switch { value, clauses, otherwise }
+                DirectiveKind::Switch {
+                    value,
+                    clauses,
+                    otherwise,
+                }
             }
             Rule::break_directive => DirectiveKind::Break,
             Rule::macro_directive => {
@@ -465,7 +549,10 @@ impl Lowerer {
                     Rule::warning => MessageLevel::Warning,
                     _ => MessageLevel::Error,
                 };
-                DirectiveKind::Message { level, text: self.expr(inner.next().expect("message")) }
+                DirectiveKind::Message {
+                    level,
+                    text: self.expr(inner.next().expect("message")),
+                }
             }
             Rule::fopen => {
                 let handle = Rc::from(inner.next().expect("handle").as_str());
@@ -473,10 +560,15 @@ impl Lowerer {
                 let mode = Rc::from(inner.next().expect("mode").as_str());
                 DirectiveKind::FileOpen { handle, path, mode }
             }
-            Rule::fclose => DirectiveKind::FileClose(Rc::from(inner.next().expect("handle").as_str())),
+            Rule::fclose => {
+                DirectiveKind::FileClose(Rc::from(inner.next().expect("handle").as_str()))
+            }
             Rule::read => {
                 let handle = Rc::from(inner.next().expect("handle").as_str());
-                DirectiveKind::FileRead { handle, targets: inner.map(|p| self.target(p)).collect() }
+                DirectiveKind::FileRead {
+                    handle,
+                    targets: inner.map(|p| self.target(p)).collect(),
+                }
             }
             Rule::write => {
                 let handle = Rc::from(inner.next().expect("handle").as_str());
@@ -494,7 +586,8 @@ impl Lowerer {
 
 /// The inner pairs of `pair` without its directive words.
 fn significant(pair: Pair<Rule>) -> impl Iterator<Item = Pair<Rule>> {
-    pair.into_inner().filter(|p| !is_directive_word(p.as_rule()))
+    pair.into_inner()
+        .filter(|p| !is_directive_word(p.as_rule()))
 }
 
 /// Directive words (`kw_*` rules) only mark where a directive starts.

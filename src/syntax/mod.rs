@@ -37,15 +37,27 @@ fn syntax_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) 
         pest::error::InputLocation::Span((s, _)) => s,
     };
     let found = token_at(text, offset);
-    let span = Span::new(file, offset, offset + found.len().max(1).min(text.len() - offset.min(text.len())));
+    let span = Span::new(
+        file,
+        offset,
+        offset + found.len().max(1).min(text.len() - offset.min(text.len())),
+    );
     let expected = match &error.variant {
         pest::error::ErrorVariant::ParsingError { positives, .. } => describe_expected(positives),
         pest::error::ErrorVariant::CustomError { message } => message.clone(),
     };
-    let found_text = if found.is_empty() { "end of file".to_string() } else { format!("`{found}`") };
+    let found_text = if found.is_empty() {
+        "end of file".to_string()
+    } else {
+        format!("`{found}`")
+    };
     let mut d = Diagnostic::error(span, format!("expected {expected}, found {found_text}"))
         .with_label(format!("expected {expected}"));
-    if found.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') {
+    if found
+        .chars()
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+    {
         if let Some(k) = did_you_mean(found, keywords::ALL.iter().copied()) {
             d = d.with_help(format!("did you mean `{k}`?"));
         }
@@ -56,7 +68,9 @@ fn syntax_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) 
 /// The word or symbol starting at `offset`.
 fn token_at(text: &str, offset: usize) -> &str {
     let rest = text.get(offset..).unwrap_or("");
-    let word_len = rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(rest.len());
+    let word_len = rest
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .unwrap_or(rest.len());
     if word_len > 0 {
         &rest[..word_len]
     } else {
@@ -81,7 +95,10 @@ fn describe_expected(rules: &[Rule]) -> String {
 /// Human names for grammar rules in error messages.
 fn rule_name(rule: Rule) -> &'static str {
     match rule {
-        Rule::expr | Rule::full_expr | Rule::postfix_expr | Rule::relational_expr
+        Rule::expr
+        | Rule::full_expr
+        | Rule::postfix_expr
+        | Rule::relational_expr
         | Rule::logical_expr => "an expression",
         Rule::number => "a number",
         Rule::string => "a string",
@@ -168,8 +185,11 @@ fn unbalanced(text: &str, file: FileId) -> Option<Diagnostic> {
                             stack.truncate(pos);
                         } else {
                             return Some(
-                                Diagnostic::error(Span::new(file, i, end), "`#end` without an opening directive")
-                                    .with_label("nothing to end here"),
+                                Diagnostic::error(
+                                    Span::new(file, i, end),
+                                    "`#end` without an opening directive",
+                                )
+                                .with_label("nothing to end here"),
                             );
                         }
                     }
@@ -185,7 +205,8 @@ fn unbalanced(text: &str, file: FileId) -> Option<Diagnostic> {
     let (kind, start, end) = *stack.last()?;
     let span = Span::new(file, start, end);
     Some(if kind == b'{' {
-        Diagnostic::error(span, "unclosed `{`").with_label("this `{` is never closed")
+        Diagnostic::error(span, "unclosed `{`")
+            .with_label("this `{` is never closed")
             .with_help("add the matching `}`")
     } else {
         let word = text[start + 1..end].trim();

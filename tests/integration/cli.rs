@@ -22,7 +22,15 @@ fn render_writes_a_png_and_exits_zero() {
     let scene = dir.join("scene.pov");
     std::fs::write(&scene, SMALL_SCENE).unwrap();
     let status = durer()
-        .args(["render", path(&scene), "--width", "32", "--height", "24", "--quiet"])
+        .args([
+            "render",
+            path(&scene),
+            "--width",
+            "32",
+            "--height",
+            "24",
+            "--quiet",
+        ])
         .status()
         .unwrap();
     assert_eq!(status.code(), Some(0));
@@ -37,7 +45,10 @@ fn scene_error_exits_one_and_keeps_the_old_image() {
     std::fs::write(&scene, "sphere { 0, 1 pigmnet { rgb 1 } }\n").unwrap();
     let output = dir.join("out.png");
     std::fs::write(&output, b"previous image").unwrap();
-    let result = durer().args(["render", path(&scene), "-o", path(&output)]).output().unwrap();
+    let result = durer()
+        .args(["render", path(&scene), "-o", path(&output)])
+        .output()
+        .unwrap();
     assert_eq!(result.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&result.stderr);
     assert!(stderr.contains("bad.pov:1:15"), "{stderr}");
@@ -53,7 +64,10 @@ fn usage_error_exits_two() {
 
 #[test]
 fn missing_scene_file_exits_one() {
-    let result = durer().args(["check", "/no/such/scene.pov"]).output().unwrap();
+    let result = durer()
+        .args(["check", "/no/such/scene.pov"])
+        .output()
+        .unwrap();
     assert_eq!(result.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&result.stderr).contains("cannot read"));
 }
@@ -65,7 +79,10 @@ fn check_prints_a_summary() {
     let stderr = String::from_utf8_lossy(&result.stderr);
     assert_eq!(result.status.code(), Some(0), "{stderr}");
     let stdout = String::from_utf8_lossy(&result.stdout);
-    assert!(stdout.contains("16 objects") && stdout.contains("lights"), "{stdout}");
+    assert!(
+        stdout.contains("16 objects") && stdout.contains("lights"),
+        "{stdout}"
+    );
 }
 
 #[test]
@@ -77,7 +94,16 @@ fn output_is_identical_for_any_thread_count() {
     for threads in ["1", "4"] {
         let out = dir.join(format!("t{threads}.png"));
         let status = durer()
-            .args(["render", path(&scene), "-o", path(&out), "--width", "64", "--height", "48"])
+            .args([
+                "render",
+                path(&scene),
+                "-o",
+                path(&out),
+                "--width",
+                "64",
+                "--height",
+                "48",
+            ])
             .args(["--threads", threads, "--quiet"])
             .status()
             .unwrap();

@@ -13,12 +13,24 @@ fn language_cases_pass() {
         .filter(|p| p.extension().is_some_and(|e| e == "pov"))
         .collect();
     paths.sort();
-    assert!(paths.len() >= 3, "expected language cases, found {}", paths.len());
+    assert!(
+        paths.len() >= 3,
+        "expected language cases, found {}",
+        paths.len()
+    );
     for path in paths {
         let evaluated = evaluate(&path);
-        for d in evaluated.diagnostics.iter().filter(|d| d.severity == Severity::Error) {
+        for d in evaluated
+            .diagnostics
+            .iter()
+            .filter(|d| d.severity == Severity::Error)
+        {
             failures.push(durer::report::render_plain(d, &evaluated.sources));
         }
     }
-    assert!(failures.is_empty(), "language cases failed:\n{}", failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "language cases failed:\n{}",
+        failures.join("\n")
+    );
 }
