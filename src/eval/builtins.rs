@@ -10,6 +10,8 @@ use std::rc::Rc;
 /// Names of every built-in function, for suggestions.
 pub(crate) const FUNCTIONS: &[&str] = &[
     "abs",
+    "rand",
+    "seed",
     "acos",
     "acosh",
     "asc",
@@ -127,6 +129,25 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
     };
     let v3 = |v: DVec3| Value::Vector(Vector::from_dvec3(v));
     Ok(match name {
+        "seed" => {
+            arity(ev, 1)?;
+            let start = ev.argument_float(call, 0)?;
+            // The stream's state is the seed as a 32-bit integer (negative values wrap).
+            ev.random_streams.push(start.trunc() as i64 as u32);
+            Value::Float((ev.random_streams.len() - 1) as f64)
+        }
+        "rand" => {
+            arity(ev, 1)?;
+            let stream = ev.argument_float(call, 0)?;
+            let index = stream.trunc();
+            if index < 0.0 || index as usize >= ev.random_streams.len() {
+                return Err(ev
+                    .error(call.arguments[0].span(), "`rand` needs a stream made by `seed`")
+                    .with_label(format!("{stream} is not a random stream"))
+                    .into());
+            }
+            Value::Float(next_random(&mut ev.random_streams[index as usize]))
+        }
         "atan2" => {
             let (a, b) = float2(ev)?;
             Value::Float(a.atan2(b))
@@ -385,6 +406,14 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             return Err(d.into());
         }
     })
+}
+
+/// Advances a random stream and returns its next value in [0, 1]: the linear congruential
+/// sequence state' = 1812433253 * state + 12345 (mod 2^32), scaled by 1 / (2^32 - 1), which
+/// reproduces the values POV-Ray 3.7 prints for `rand(seed(N))`.
+fn next_random(state: &mut u32) -> f64 {
+    *state = state.wrapping_mul(1_812_433_253).wrapping_add(12_345);
+    f64::from(*state) / f64::from(u32::MAX)
 }
 
 fn string_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<String> {

@@ -136,6 +136,8 @@ pub(crate) struct Evaluator {
     background: Colour,
     pub(crate) settings: GlobalSettings,
     warned_once: std::collections::HashSet<String>,
+    /// States of the random streams made by `seed`, indexed by stream number.
+    pub(crate) random_streams: Vec<u32>,
 }
 
 impl Evaluator {
@@ -159,6 +161,7 @@ impl Evaluator {
             background: Colour::BLACK,
             settings: GlobalSettings::default(),
             warned_once: Default::default(),
+            random_streams: Vec::new(),
         }
     }
 

@@ -36,3 +36,12 @@ Check(t.t = 1 & u.u = 1 & v.v = 1, "t u v constants")
 Check(W.x = -1 & W.z = 2, "vector without commas")
 Check(select(-1, 1, 2) = 1 & select(1, 1, 2) = 2 & select(0, 1, 2, 3) = 2, "select")
 Check(bitwise_and(6, 3) = 2 & bitwise_or(4, 1) = 5 & bitwise_xor(3, 1) = 2, "bitwise functions")
+// rand follows POV-Ray 3.7's own sequence (values printed by povray 3.7).
+#declare S = seed(0);
+Check(abs(rand(S) - 0.000002874294) < 1e-11, "first value of seed(0)")
+Check(abs(rand(S) - 0.466563684509) < 1e-11, "second value of seed(0)")
+Check(abs(rand(S) - 0.249070228834) < 1e-11, "third value of seed(0)")
+#declare S2 = seed(-1);
+Check(abs(rand(S2) - 0.578012873553) < 1e-11, "negative seeds wrap")
+#declare S3 = seed(2.7);
+Check(abs(rand(S3) - 0.843982876242) < 1e-11, "seeds are truncated")
