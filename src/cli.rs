@@ -76,12 +76,13 @@ pub fn run() -> i32 {
     }
 }
 
-fn eval_options(args: &SceneArgs) -> EvalOptions {
+fn eval_options(args: &SceneArgs, output: Option<&Path>) -> EvalOptions {
     EvalOptions {
         include_paths: args.include_paths.clone(),
         image_width: args.width,
         image_height: args.height,
         clock: 0.0,
+        output_folder: output.and_then(Path::parent).map(Path::to_path_buf),
     }
 }
 
@@ -124,7 +125,7 @@ fn print_diagnostics(evaluated: &Evaluated, quiet: bool) -> bool {
 
 fn check(args: SceneArgs) -> i32 {
     let start = Instant::now();
-    let evaluated = evaluate(&args.scene, eval_options(&args));
+    let evaluated = evaluate(&args.scene, eval_options(&args, None));
     let failed = print_diagnostics(&evaluated, false);
     let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else {
         return 1;
@@ -143,7 +144,11 @@ fn check(args: SceneArgs) -> i32 {
 
 fn render(args: RenderArgs) -> i32 {
     let start = Instant::now();
-    let evaluated = evaluate(&args.scene.scene, eval_options(&args.scene));
+    let output = args
+        .output
+        .clone()
+        .unwrap_or_else(|| args.scene.scene.with_extension("png"));
+    let evaluated = evaluate(&args.scene.scene, eval_options(&args.scene, Some(&output)));
     let failed = print_diagnostics(&evaluated, args.quiet);
     let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else {
         return 1;
@@ -188,9 +193,6 @@ fn render(args: RenderArgs) -> i32 {
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
-    let output = args
-        .output
-        .unwrap_or_else(|| args.scene.scene.with_extension("png"));
     if let Err(error) = durer::render::write_png_atomic(&output, &image) {
         eprintln!("durer: cannot write {}: {error}", output.display());
         return 1;

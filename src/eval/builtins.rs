@@ -142,7 +142,10 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             let index = stream.trunc();
             if index < 0.0 || index as usize >= ev.random_streams.len() {
                 return Err(ev
-                    .error(call.arguments[0].span(), "`rand` needs a stream made by `seed`")
+                    .error(
+                        call.arguments[0].span(),
+                        "`rand` needs a stream made by `seed`",
+                    )
                     .with_label(format!("{stream} is not a random stream"))
                     .into());
             }

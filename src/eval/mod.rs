@@ -7,6 +7,7 @@
 mod appearance;
 mod builtins;
 mod expr;
+mod files;
 mod objects;
 mod stream;
 mod value;
@@ -44,6 +45,8 @@ pub struct EvalOptions {
     pub image_height: u32,
     /// Value of `clock`.
     pub clock: f64,
+    /// Folder of the output image: scenes may read and write data files there.
+    pub output_folder: Option<PathBuf>,
 }
 
 impl Default for EvalOptions {
@@ -53,6 +56,7 @@ impl Default for EvalOptions {
             image_width: 320,
             image_height: 240,
             clock: 0.0,
+            output_folder: None,
         }
     }
 }
@@ -122,7 +126,7 @@ pub(crate) struct Evaluator {
     pub(crate) sources: SourceMap,
     pub(crate) scopes: Vec<Scope>,
     parsed: HashMap<PathBuf, (FileId, Rc<[Item]>)>,
-    scene_folder: PathBuf,
+    pub(crate) scene_folder: PathBuf,
     pub(crate) trace: Vec<TraceEntry>,
     pub(crate) warnings: Vec<Diagnostic>,
     pub(crate) nesting: usize,
@@ -138,6 +142,8 @@ pub(crate) struct Evaluator {
     warned_once: std::collections::HashSet<String>,
     /// States of the random streams made by `seed`, indexed by stream number.
     pub(crate) random_streams: Vec<u32>,
+    /// Data files opened by `#fopen`; closed ones are `None`.
+    pub(crate) files: Vec<Option<files::DataFile>>,
 }
 
 impl Evaluator {
@@ -162,6 +168,7 @@ impl Evaluator {
             settings: GlobalSettings::default(),
             warned_once: Default::default(),
             random_streams: Vec::new(),
+            files: Vec::new(),
         }
     }
 

@@ -378,18 +378,12 @@ impl Evaluator {
                     }
                 }
             }
-            DirectiveKind::FileOpen { .. }
-            | DirectiveKind::FileClose(_)
-            | DirectiveKind::FileRead { .. }
-            | DirectiveKind::FileWrite { .. } => {
-                return Err(self
-                    .error(
-                        span,
-                        "file input and output directives are not supported yet",
-                    )
-                    .with_label("not supported yet")
-                    .into())
+            DirectiveKind::FileOpen { handle, path, mode } => {
+                self.file_open(handle, path, mode, span)?
             }
+            DirectiveKind::FileClose(handle) => self.file_close(handle, span)?,
+            DirectiveKind::FileRead { handle, targets } => self.file_read(handle, targets, span)?,
+            DirectiveKind::FileWrite { handle, values } => self.file_write(handle, values, span)?,
         }
         Ok(())
     }

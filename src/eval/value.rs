@@ -42,6 +42,8 @@ pub enum Value {
     Macro(Rc<MacroDefinition>),
     /// A user-defined function.
     Function(Rc<FunctionLiteral>),
+    /// An open data file (index into the evaluator's file table).
+    File(usize),
     /// What a block durer does not support yet evaluates to: it is left out of the scene.
     Nothing,
     /// A parameter passed by reference: the caller's variable `name` in scope `scope`.
@@ -112,6 +114,7 @@ impl Value {
             Value::Function(_) => "a function",
             Value::Reference { .. } => "a reference",
             Value::Nothing => "a left-out feature",
+            Value::File(_) => "a file handle",
         }
     }
 }

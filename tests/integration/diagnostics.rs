@@ -148,3 +148,16 @@ fn errors_inside_macros_show_the_call_trace() {
     ];
     check("macro_trace", 2, 14, &needles);
 }
+
+#[test]
+fn files_outside_the_scene_folder_are_refused() {
+    check(
+        "file_outside",
+        1,
+        10,
+        &[
+            "`/etc/passwd` is outside the folders scenes may read and write",
+            "data files must be in",
+        ],
+    );
+}

@@ -1,0 +1,1 @@
+#fopen F "/etc/passwd" read
