@@ -129,6 +129,13 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
     };
     let v3 = |v: DVec3| Value::Vector(Vector::from_dvec3(v));
     Ok(match name {
+        "internal" => {
+            return Err(ev
+                .error(call.span, "POV-Ray's internal functions are not available yet")
+                .with_label("called here")
+                .with_help("functions.inc defines its f_* functions with these; they arrive with isosurfaces")
+                .into());
+        }
         "seed" => {
             arity(ev, 1)?;
             let start = ev.argument_float(call, 0)?;

@@ -8,7 +8,7 @@ use crate::diag::Span;
 use crate::scene::Colour;
 use crate::syntax::ast::{
     ArrayElement, ArrayInit, ArrayLiteral, BinaryOp, Call, ColourComponent, ColourLiteral,
-    ColourType, Expr, Item, UnaryOp,
+    ColourType, Expr, FunctionBody, FunctionLiteral, Item, UnaryOp,
 };
 use glam::DVec3;
 use std::rc::Rc;
@@ -590,19 +590,72 @@ impl Evaluator {
     fn eval_call(&mut self, call: &Rc<Call>) -> EvalResult<Value> {
         match self.lookup(&call.name) {
             Some(Value::Macro(_)) => return self.call_macro_value(call),
-            Some(Value::Function(_)) => {
-                return Err(self
-                    .error(
-                        call.span,
-                        "calling user-defined functions is not supported yet",
-                    )
-                    .with_label("not supported yet")
-                    .into())
+            Some(Value::Function(function)) => {
+                let function = function.clone();
+                return self.call_function(&function, call);
             }
-            Some(Value::Array(_)) | Some(Value::Float(_)) | Some(Value::Vector(_)) => {}
             _ => {}
         }
         super::builtins::call_builtin(self, call)
+    }
+
+    /// Calls a user-defined function: float arguments bound to its parameters (`x, y, z`
+    /// when it declares none), the body evaluated as a float expression.
+    fn call_function(&mut self, function: &Rc<FunctionLiteral>, call: &Call) -> EvalResult<Value> {
+        const DEFAULT_PARAMETERS: [&str; 3] = ["x", "y", "z"];
+        let names: Vec<Rc<str>> = if function.parameters.is_empty() {
+            DEFAULT_PARAMETERS.iter().map(|n| Rc::from(*n)).collect()
+        } else {
+            function.parameters.clone()
+        };
+        if let FunctionBody::Expr(Expr::Call(inner)) = &function.body {
+            if &*inner.name == "internal" {
+                return Err(self
+                    .error(call.span, format!("`{}` is one of POV-Ray's internal functions, not available yet", call.name))
+                    .with_label("called here")
+                    .with_help("functions.inc defines its f_* functions this way; they arrive with isosurfaces")
+                    .into());
+            }
+        }
+        if call.arguments.len() != names.len() {
+            return Err(self
+                .error(
+                    call.span,
+                    format!(
+                        "function `{}` takes {} arguments, found {}",
+                        call.name,
+                        names.len(),
+                        call.arguments.len()
+                    ),
+                )
+                .with_secondary(function.span, "the function is declared here")
+                .into());
+        }
+        let FunctionBody::Expr(body) = &function.body else {
+            return Err(self
+                .error(
+                    call.span,
+                    format!("function `{}` is a pattern or pigment function", call.name),
+                )
+                .with_label("calling these is not supported yet")
+                .into());
+        };
+        let mut scope = super::Scope::with_capacity_and_hasher(names.len(), Default::default());
+        for (index, name) in names.into_iter().enumerate() {
+            let value = self.argument_float(call, index)?;
+            scope.insert(name, Value::Float(value));
+        }
+        self.enter_nesting(call.span)?;
+        self.trace.push(crate::diag::TraceEntry {
+            what: format!("function `{}`", call.name),
+            span: call.span,
+        });
+        self.scopes.push(scope);
+        let result = self.eval_float(body);
+        self.scopes.pop();
+        self.trace.pop();
+        self.nesting -= 1;
+        Ok(Value::Float(result?))
     }
 
     /// Evaluates the argument at `index` as a float.

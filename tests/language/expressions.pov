@@ -45,3 +45,12 @@ Check(abs(rand(S) - 0.249070228834) < 1e-11, "third value of seed(0)")
 Check(abs(rand(S2) - 0.578012873553) < 1e-11, "negative seeds wrap")
 #declare S3 = seed(2.7);
 Check(abs(rand(S3) - 0.843982876242) < 1e-11, "seeds are truncated")
+// User-defined functions.
+#declare Square = function(A) { A * A }
+#declare Dist = function { sqrt(x*x + y*y + z*z) }
+#declare Both = function(P, Q) { Square(P) + Square(Q) }
+Check(Square(3) = 9, "function with a parameter")
+Check(Dist(3, 4, 0) = 5, "function with the default x, y, z parameters")
+Check(Both(1, 2) = 5, "functions call functions")
+#declare Step = function(A) { select(A, 0, 1) }
+Check(Step(-2) = 0 & Step(2) = 1, "select inside a function")
