@@ -5,8 +5,9 @@
 //! Holds: transforms compose down the tree (a child's transform maps into its parent's local
 //! space); texture, interior and `no_shadow` are inherited from the nearest ancestor that sets
 //! them; each owning object's texture is converted to world space once and shared by every leaf
-//! that inherits it; top-level unions are flattened into their children (an inverted union
-//! passes the inversion down), other CSG nodes become trees.
+//! that inherits it; top-level unions that are not inverted are flattened into their children,
+//! other CSG objects become trees; a union inverted anywhere (by `inverse`, an inverted ancestor
+//! or being subtracted) filters out surfaces inside its other children, as POV-Ray's does.
 
 use super::csg::{Combination, CsgNode, CsgTree, NodeBounds};
 use super::leaf::Leaf;
@@ -64,6 +65,15 @@ enum InteriorKey {
     Owned(usize),
 }
 
+/// The inversions applied to a CSG subtree from above.
+#[derive(Clone, Copy, Debug)]
+struct Inversion {
+    /// An odd number of inversions: the subtree's inside and outside are swapped.
+    odd: bool,
+    /// Inverted at least once (which permanently turns unions into filtering nodes).
+    any: bool,
+}
+
 /// The appearance an object passes down to its children.
 #[derive(Clone, Debug)]
 struct Appearance {
@@ -99,13 +109,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
     };
     let mut primitives = Vec::new();
     for object in objects {
-        builder.add_top_level(
-            object,
-            &Transform::IDENTITY,
-            &appearance,
-            false,
-            &mut primitives,
-        );
+        builder.add_top_level(object, &Transform::IDENTITY, &appearance, &mut primitives);
     }
     BuiltScene {
         primitives,
@@ -211,35 +215,35 @@ impl Builder {
     }
 
     /// Adds a top-level object (or a child of a flattened top-level union).
+    ///
+    /// A union that is not inverted is split into its children (like POV-Ray's
+    /// `split_union`); everything else that is CSG becomes one tree.
     fn add_top_level(
         &mut self,
         object: &Object,
         world_from_parent: &Transform,
         inherited: &Appearance,
-        extra_inverse: bool,
         out: &mut Vec<(Primitive, Option<Aabb>)>,
     ) {
         let world_from_local = object.transform.then(world_from_parent);
-        let inverse = object.inverse != extra_inverse;
         match &object.shape {
             Shape::Csg {
                 operation: CsgOperation::Union,
                 children,
-            } => {
+            } if !object.inverse => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 for child in children {
-                    self.add_top_level(child, &world_from_local, &appearance, inverse, out);
+                    self.add_top_level(child, &world_from_local, &appearance, out);
                 }
             }
             Shape::Csg { .. } => {
                 let mut leaves = Vec::new();
-                let root = self.csg_node(
-                    object,
-                    world_from_parent,
-                    inherited,
-                    extra_inverse,
-                    &mut leaves,
-                );
+                let inversion = Inversion {
+                    odd: false,
+                    any: false,
+                };
+                let root =
+                    self.csg_node(object, world_from_parent, inherited, inversion, &mut leaves);
                 let surface = root.bounds().surface;
                 if surface.is_some_and(|bounds| bounds.is_empty()) {
                     return;
@@ -249,7 +253,7 @@ impl Builder {
             shape => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 let material = self.material(&appearance);
-                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inverse);
+                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, object.inverse);
                 let surface = padded(bounds.surface);
                 if leaf.is_empty() || surface.is_some_and(|bounds| bounds.is_empty()) {
                     return;
@@ -261,23 +265,33 @@ impl Builder {
     }
 
     /// Builds the CSG subtree for `object`, appending its leaves to `leaves`.
+    ///
+    /// `inherited_inversion` describes the inversions applied from above (an inverted ancestor,
+    /// or being a subtracted child of a difference).
     fn csg_node(
         &mut self,
         object: &Object,
         world_from_parent: &Transform,
         inherited: &Appearance,
-        extra_inverse: bool,
+        inherited_inversion: Inversion,
         leaves: &mut Vec<Leaf>,
     ) -> CsgNode {
         let world_from_local = object.transform.then(world_from_parent);
         let appearance = self.appearance(object, &world_from_local, inherited);
-        let inverse = object.inverse != extra_inverse;
+        let inversion = Inversion {
+            odd: inherited_inversion.odd != object.inverse,
+            any: inherited_inversion.any || object.inverse,
+        };
         match &object.shape {
             Shape::Csg {
                 operation,
                 children,
             } => {
                 let combination = match operation {
+                    // POV-Ray turns an inverted union into an intersection of its inverted
+                    // children, which drops the surfaces lying inside other children; inverting
+                    // it again does not bring the plain union back.
+                    CsgOperation::Union if inversion.any => Combination::Merge,
                     CsgOperation::Union => Combination::Union,
                     CsgOperation::Merge => Combination::Merge,
                     CsgOperation::Intersection | CsgOperation::Difference => {
@@ -289,15 +303,19 @@ impl Builder {
                     .iter()
                     .enumerate()
                     .map(|(position, child)| {
-                        let invert_child = subtract && position > 0;
-                        self.csg_node(child, &world_from_local, &appearance, invert_child, leaves)
+                        let subtracted = subtract && position > 0;
+                        let passed_down = Inversion {
+                            odd: subtracted,
+                            any: inversion.any || subtracted,
+                        };
+                        self.csg_node(child, &world_from_local, &appearance, passed_down, leaves)
                     })
                     .collect();
-                CsgNode::combine(combination, inverse, nodes)
+                CsgNode::combine(combination, inversion.odd, nodes)
             }
             shape => {
                 let material = self.material(&appearance);
-                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inverse);
+                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inversion.odd);
                 let index = leaves.len() as u32;
                 leaves.push(leaf);
                 self.leaf_count += 1;
