@@ -6,11 +6,13 @@
 //! space); texture, interior and `no_shadow` are inherited from the nearest ancestor that sets
 //! them; each owning object's texture is converted to world space once and shared by every leaf
 //! that inherits it; top-level unions that are not inverted are flattened into their children,
-//! other CSG objects become trees; a union inverted anywhere (by `inverse`, an inverted ancestor
-//! or being subtracted) filters out surfaces inside its other children, as POV-Ray's does.
+//! other CSG objects become trees. Inversion (by `inverse`, an inverted ancestor or being
+//! subtracted) is pushed down to the leaves and changes the kind of each CSG node on the way, as
+//! POV-Ray does: union becomes intersection, intersection becomes merge, merge becomes
+//! intersection; triangles ignore inversion.
 
 use super::csg::{Combination, CsgNode, CsgTree, NodeBounds};
-use super::leaf::Leaf;
+use super::leaf::{Leaf, LocalShape};
 use super::Material;
 use crate::accel::Aabb;
 use crate::scene::{
@@ -70,7 +72,7 @@ enum InteriorKey {
 struct Inversion {
     /// An odd number of inversions: the subtree's inside and outside are swapped.
     odd: bool,
-    /// Inverted at least once (which permanently turns unions into filtering nodes).
+    /// Inverted at least once (a union inverted twice becomes a merge, not a union again).
     any: bool,
 }
 
@@ -148,6 +150,57 @@ fn pigment_to_world(pigment: &Pigment, world_from_owner: &Transform) -> Pigment 
     } else {
         pigment.clone()
     }
+}
+
+/// POV-Ray's bounding box of `object` in world space; `None` when infinite.
+///
+/// The rules, inferred from POV-Ray's output: an inverted shape has an infinite box (triangles
+/// cannot be inverted and keep theirs); a union or merge has the union of its children's
+/// boxes; an intersection or difference has the overlap of the boxes of its children that are
+/// not inverted (so a difference is bounded by its first child). Inverting a CSG object later does not change its box, so an
+/// inverted CSG object is cut off at the box of the object it came from: rays that miss the
+/// box miss the object.
+fn pov_bounding_box(object: &Object, world_from_parent: &Transform) -> Option<Aabb> {
+    let world_from_local = object.transform.then(world_from_parent);
+    let bounds = match &object.shape {
+        Shape::Csg {
+            operation: CsgOperation::Union | CsgOperation::Merge,
+            children,
+        } => children.iter().try_fold(Aabb::EMPTY, |all, child| {
+            pov_bounding_box(child, &world_from_local).map(|b| all.union(&b))
+        })?,
+        Shape::Csg {
+            operation,
+            children,
+        } => {
+            let subtract = *operation == CsgOperation::Difference;
+            let mut common: Option<Aabb> = None;
+            for (position, child) in children.iter().enumerate() {
+                let subtracted = subtract && position > 0;
+                if (child.inverse || subtracted) && invertible(&child.shape) {
+                    continue;
+                }
+                if let Some(bounds) = pov_bounding_box(child, &world_from_local) {
+                    common = Some(common.map_or(bounds, |common| common.intersection(&bounds)));
+                }
+            }
+            common?
+        }
+        shape if object.inverse && invertible(shape) => return None,
+        shape => LocalShape::from_scene(shape)
+            .bounds()?
+            .transformed(&world_from_local.outer_from_inner),
+    };
+    Some(if bounds.is_empty() {
+        Aabb::EMPTY
+    } else {
+        bounds
+    })
+}
+
+/// False for shapes POV-Ray cannot invert (triangles): `inverse` leaves them unchanged.
+fn invertible(shape: &Shape) -> bool {
+    !matches!(shape, Shape::Triangle { .. })
 }
 
 /// Pads bounds so box tests are conservative; non-finite bounds become unbounded.
@@ -244,11 +297,16 @@ impl Builder {
                 };
                 let root =
                     self.csg_node(object, world_from_parent, inherited, inversion, &mut leaves);
-                let surface = root.bounds().surface;
+                let clip = pov_bounding_box(object, world_from_parent).filter(Aabb::is_finite);
+                let surface = match (root.bounds().surface, clip.and_then(|b| padded(Some(b)))) {
+                    (Some(surface), Some(clip)) => Some(surface.intersection(&clip)),
+                    (surface, clip) => surface.or(clip),
+                };
                 if surface.is_some_and(|bounds| bounds.is_empty()) {
                     return;
                 }
-                out.push((Primitive::Csg(Box::new(CsgTree { leaves, root })), surface));
+                let tree = CsgTree { leaves, root, clip };
+                out.push((Primitive::Csg(Box::new(tree)), surface));
             }
             shape => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
@@ -287,15 +345,19 @@ impl Builder {
                 operation,
                 children,
             } => {
-                let combination = match operation {
-                    // POV-Ray turns an inverted union into an intersection of its inverted
-                    // children, which drops the surfaces lying inside other children; inverting
-                    // it again does not bring the plain union back.
-                    CsgOperation::Union if inversion.any => Combination::Merge,
-                    CsgOperation::Union => Combination::Union,
-                    CsgOperation::Merge => Combination::Merge,
-                    CsgOperation::Intersection | CsgOperation::Difference => {
+                // Like POV-Ray, inverting a CSG node inverts its children and changes its kind:
+                // union to intersection, intersection to merge, merge to intersection.
+                let combination = match (operation, inversion.odd, inversion.any) {
+                    (CsgOperation::Union, _, false) => Combination::Union,
+                    (CsgOperation::Union, true, true) => Combination::Intersection,
+                    (CsgOperation::Union, false, true) => Combination::Merge,
+                    (CsgOperation::Merge, false, _) => Combination::Merge,
+                    (CsgOperation::Merge, true, _) => Combination::Intersection,
+                    (CsgOperation::Intersection | CsgOperation::Difference, false, _) => {
                         Combination::Intersection
+                    }
+                    (CsgOperation::Intersection | CsgOperation::Difference, true, _) => {
+                        Combination::Merge
                     }
                 };
                 let subtract = *operation == CsgOperation::Difference;
@@ -305,13 +367,13 @@ impl Builder {
                     .map(|(position, child)| {
                         let subtracted = subtract && position > 0;
                         let passed_down = Inversion {
-                            odd: subtracted,
+                            odd: inversion.odd != subtracted,
                             any: inversion.any || subtracted,
                         };
                         self.csg_node(child, &world_from_local, &appearance, passed_down, leaves)
                     })
                     .collect();
-                CsgNode::combine(combination, inversion.odd, nodes)
+                CsgNode::combine(combination, nodes)
             }
             shape => {
                 let material = self.material(&appearance);

@@ -32,11 +32,10 @@ pub struct World {
 struct PendingHit<'a> {
     leaf: &'a Leaf,
     part: u8,
-    flip: bool,
 }
 
 impl Primitive {
-    /// The nearest hit strictly between the limits; `shadows_only` skips shadowless leaves.
+    /// The nearest hit strictly between the limits, ignoring leaves for which `skip` is true.
     #[inline]
     fn nearest<'a>(
         &'a self,
@@ -52,14 +51,7 @@ impl Primitive {
                     return None;
                 }
                 let (distance, part) = leaf.nearest(ray, min_distance, max_distance)?;
-                Some((
-                    distance,
-                    PendingHit {
-                        leaf,
-                        part,
-                        flip: false,
-                    },
-                ))
+                Some((distance, PendingHit { leaf, part }))
             }
             Primitive::Csg(tree) => {
                 let hit =
@@ -72,7 +64,6 @@ impl Primitive {
                     PendingHit {
                         leaf,
                         part: hit.part,
-                        flip: hit.flip,
                     },
                 ))
             }
@@ -185,11 +176,10 @@ impl World {
         }
         let (distance, pending) = best?;
         let point = ray.at(distance);
-        let normal = pending.leaf.normal(point, pending.part);
         Some(SurfaceHit {
             distance,
             point,
-            normal: if pending.flip { -normal } else { normal },
+            normal: pending.leaf.normal(point, pending.part),
             material: pending.leaf.material(),
         })
     }
