@@ -71,10 +71,10 @@ impl CsgNode {
             Combination::Union | Combination::Merge => NodeBounds {
                 surface: child_bounds
                     .iter()
-                    .fold(Some(Aabb::EMPTY), |all, b| join(all, b.surface)),
+                    .try_fold(Aabb::EMPTY, |all, b| Some(all.union(&b.surface?))),
                 inside: child_bounds
                     .iter()
-                    .fold(Some(Aabb::EMPTY), |all, b| join(all, b.inside)),
+                    .try_fold(Aabb::EMPTY, |all, b| Some(all.union(&b.inside?))),
             },
             Combination::Intersection => {
                 // A child's surface survives only inside every other child.
