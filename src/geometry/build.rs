@@ -5,11 +5,14 @@
 //! Holds: transforms compose down the tree (a child's transform maps into its parent's local
 //! space); texture, interior and `no_shadow` are inherited from the nearest ancestor that sets
 //! them; each owning object's texture is converted to world space once and shared by every leaf
-//! that inherits it; top-level unions are flattened into their children (an inverted union
-//! passes the inversion down), other CSG nodes become trees.
+//! that inherits it; top-level unions that are not inverted are flattened into their children,
+//! other CSG objects become trees. Inversion (by `inverse`, an inverted ancestor or being
+//! subtracted) is pushed down to the leaves and changes the kind of each CSG node on the way, as
+//! POV-Ray does: union becomes intersection, intersection becomes merge, merge becomes
+//! intersection; triangles ignore inversion.
 
 use super::csg::{Combination, CsgNode, CsgTree, NodeBounds};
-use super::leaf::Leaf;
+use super::leaf::{Leaf, LocalShape};
 use super::Material;
 use crate::accel::Aabb;
 use crate::scene::{
@@ -64,6 +67,15 @@ enum InteriorKey {
     Owned(usize),
 }
 
+/// The inversions applied to a CSG subtree from above.
+#[derive(Clone, Copy, Debug)]
+struct Inversion {
+    /// An odd number of inversions: the subtree's inside and outside are swapped.
+    odd: bool,
+    /// Inverted at least once (a union inverted twice becomes a merge, not a union again).
+    any: bool,
+}
+
 /// The appearance an object passes down to its children.
 #[derive(Clone, Debug)]
 struct Appearance {
@@ -99,13 +111,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
     };
     let mut primitives = Vec::new();
     for object in objects {
-        builder.add_top_level(
-            object,
-            &Transform::IDENTITY,
-            &appearance,
-            false,
-            &mut primitives,
-        );
+        builder.add_top_level(object, &Transform::IDENTITY, &appearance, &mut primitives);
     }
     BuiltScene {
         primitives,
@@ -144,6 +150,57 @@ fn pigment_to_world(pigment: &Pigment, world_from_owner: &Transform) -> Pigment 
     } else {
         pigment.clone()
     }
+}
+
+/// POV-Ray's bounding box of `object` in world space; `None` when infinite.
+///
+/// The rules, inferred from POV-Ray's output: an inverted shape has an infinite box (triangles
+/// cannot be inverted and keep theirs); a union or merge has the union of its children's
+/// boxes; an intersection or difference has the overlap of the boxes of its children that are
+/// not inverted (so a difference is bounded by its first child). Inverting a CSG object later does not change its box, so an
+/// inverted CSG object is cut off at the box of the object it came from: rays that miss the
+/// box miss the object.
+fn pov_bounding_box(object: &Object, world_from_parent: &Transform) -> Option<Aabb> {
+    let world_from_local = object.transform.then(world_from_parent);
+    let bounds = match &object.shape {
+        Shape::Csg {
+            operation: CsgOperation::Union | CsgOperation::Merge,
+            children,
+        } => children.iter().try_fold(Aabb::EMPTY, |all, child| {
+            pov_bounding_box(child, &world_from_local).map(|b| all.union(&b))
+        })?,
+        Shape::Csg {
+            operation,
+            children,
+        } => {
+            let subtract = *operation == CsgOperation::Difference;
+            let mut common: Option<Aabb> = None;
+            for (position, child) in children.iter().enumerate() {
+                let subtracted = subtract && position > 0;
+                if (child.inverse || subtracted) && invertible(&child.shape) {
+                    continue;
+                }
+                if let Some(bounds) = pov_bounding_box(child, &world_from_local) {
+                    common = Some(common.map_or(bounds, |common| common.intersection(&bounds)));
+                }
+            }
+            common?
+        }
+        shape if object.inverse && invertible(shape) => return None,
+        shape => LocalShape::from_scene(shape)
+            .bounds()?
+            .transformed(&world_from_local.outer_from_inner),
+    };
+    Some(if bounds.is_empty() {
+        Aabb::EMPTY
+    } else {
+        bounds
+    })
+}
+
+/// False for shapes POV-Ray cannot invert (triangles): `inverse` leaves them unchanged.
+fn invertible(shape: &Shape) -> bool {
+    !matches!(shape, Shape::Triangle { .. })
 }
 
 /// Pads bounds so box tests are conservative; non-finite bounds become unbounded.
@@ -211,45 +268,50 @@ impl Builder {
     }
 
     /// Adds a top-level object (or a child of a flattened top-level union).
+    ///
+    /// A union that is not inverted is split into its children (like POV-Ray's
+    /// `split_union`); everything else that is CSG becomes one tree.
     fn add_top_level(
         &mut self,
         object: &Object,
         world_from_parent: &Transform,
         inherited: &Appearance,
-        extra_inverse: bool,
         out: &mut Vec<(Primitive, Option<Aabb>)>,
     ) {
         let world_from_local = object.transform.then(world_from_parent);
-        let inverse = object.inverse != extra_inverse;
         match &object.shape {
             Shape::Csg {
                 operation: CsgOperation::Union,
                 children,
-            } => {
+            } if !object.inverse => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 for child in children {
-                    self.add_top_level(child, &world_from_local, &appearance, inverse, out);
+                    self.add_top_level(child, &world_from_local, &appearance, out);
                 }
             }
             Shape::Csg { .. } => {
                 let mut leaves = Vec::new();
-                let root = self.csg_node(
-                    object,
-                    world_from_parent,
-                    inherited,
-                    extra_inverse,
-                    &mut leaves,
-                );
-                let surface = root.bounds().surface;
+                let inversion = Inversion {
+                    odd: false,
+                    any: false,
+                };
+                let root =
+                    self.csg_node(object, world_from_parent, inherited, inversion, &mut leaves);
+                let clip = pov_bounding_box(object, world_from_parent).filter(Aabb::is_finite);
+                let surface = match (root.bounds().surface, clip.and_then(|b| padded(Some(b)))) {
+                    (Some(surface), Some(clip)) => Some(surface.intersection(&clip)),
+                    (surface, clip) => surface.or(clip),
+                };
                 if surface.is_some_and(|bounds| bounds.is_empty()) {
                     return;
                 }
-                out.push((Primitive::Csg(Box::new(CsgTree { leaves, root })), surface));
+                let tree = CsgTree { leaves, root, clip };
+                out.push((Primitive::Csg(Box::new(tree)), surface));
             }
             shape => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 let material = self.material(&appearance);
-                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inverse);
+                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, object.inverse);
                 let surface = padded(bounds.surface);
                 if leaf.is_empty() || surface.is_some_and(|bounds| bounds.is_empty()) {
                     return;
@@ -261,27 +323,41 @@ impl Builder {
     }
 
     /// Builds the CSG subtree for `object`, appending its leaves to `leaves`.
+    ///
+    /// `inherited_inversion` describes the inversions applied from above (an inverted ancestor,
+    /// or being a subtracted child of a difference).
     fn csg_node(
         &mut self,
         object: &Object,
         world_from_parent: &Transform,
         inherited: &Appearance,
-        extra_inverse: bool,
+        inherited_inversion: Inversion,
         leaves: &mut Vec<Leaf>,
     ) -> CsgNode {
         let world_from_local = object.transform.then(world_from_parent);
         let appearance = self.appearance(object, &world_from_local, inherited);
-        let inverse = object.inverse != extra_inverse;
+        let inversion = Inversion {
+            odd: inherited_inversion.odd != object.inverse,
+            any: inherited_inversion.any || object.inverse,
+        };
         match &object.shape {
             Shape::Csg {
                 operation,
                 children,
             } => {
-                let combination = match operation {
-                    CsgOperation::Union => Combination::Union,
-                    CsgOperation::Merge => Combination::Merge,
-                    CsgOperation::Intersection | CsgOperation::Difference => {
+                // Like POV-Ray, inverting a CSG node inverts its children and changes its kind:
+                // union to intersection, intersection to merge, merge to intersection.
+                let combination = match (operation, inversion.odd, inversion.any) {
+                    (CsgOperation::Union, _, false) => Combination::Union,
+                    (CsgOperation::Union, true, true) => Combination::Intersection,
+                    (CsgOperation::Union, false, true) => Combination::Merge,
+                    (CsgOperation::Merge, false, _) => Combination::Merge,
+                    (CsgOperation::Merge, true, _) => Combination::Intersection,
+                    (CsgOperation::Intersection | CsgOperation::Difference, false, _) => {
                         Combination::Intersection
+                    }
+                    (CsgOperation::Intersection | CsgOperation::Difference, true, _) => {
+                        Combination::Merge
                     }
                 };
                 let subtract = *operation == CsgOperation::Difference;
@@ -289,15 +365,19 @@ impl Builder {
                     .iter()
                     .enumerate()
                     .map(|(position, child)| {
-                        let invert_child = subtract && position > 0;
-                        self.csg_node(child, &world_from_local, &appearance, invert_child, leaves)
+                        let subtracted = subtract && position > 0;
+                        let passed_down = Inversion {
+                            odd: inversion.odd != subtracted,
+                            any: inversion.any || subtracted,
+                        };
+                        self.csg_node(child, &world_from_local, &appearance, passed_down, leaves)
                     })
                     .collect();
-                CsgNode::combine(combination, inverse, nodes)
+                CsgNode::combine(combination, nodes)
             }
             shape => {
                 let material = self.material(&appearance);
-                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inverse);
+                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inversion.odd);
                 let index = leaves.len() as u32;
                 leaves.push(leaf);
                 self.leaf_count += 1;

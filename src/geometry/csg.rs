@@ -1,13 +1,13 @@
 //! CSG trees evaluated per ray over their children's hit lists.
 //!
-//! In: a tree of [`Leaf`] primitives under union, intersection and merge nodes (a difference
-//! arrives as an intersection whose later children are inverted). Out: the nearest surviving
-//! surface hit of a ray, tagged with the leaf it lies on and whether the normal is flipped, and
-//! inside tests for whole subtrees.
+//! In: a tree of [`Leaf`] primitives under union, intersection and merge nodes, with every
+//! inversion already pushed down to the leaves (a difference arrives as an intersection whose
+//! later children are inverted). Out: the nearest surviving surface hit of a ray, tagged with
+//! the leaf it lies on, and inside tests for whole subtrees.
 //! Holds: a node's hits are its children's hits filtered by the inside tests of the siblings
 //! (intersection keeps hits inside all siblings, merge drops hits inside any sibling, union
-//! keeps all); an inverted node flips the normals of all its hits. Hits are gathered into one
-//! per-thread scratch vector, so no ray allocates once the vector has grown.
+//! keeps all). Hits are gathered into one per-thread scratch vector, so no ray allocates once
+//! the vector has grown.
 
 use super::leaf::Leaf;
 use super::Ray;
@@ -49,11 +49,9 @@ pub enum CsgNode {
     Combine {
         /// How the children combine.
         combination: Combination,
-        /// Inside and outside swapped, normals flipped.
-        inverse: bool,
         /// The child subtrees.
         children: Vec<CsgNode>,
-        /// The node's bounds (inverse already applied).
+        /// The node's bounds.
         bounds: NodeBounds,
     },
 }
@@ -67,51 +65,65 @@ impl CsgNode {
     }
 
     /// A combination node, computing its bounds from the children.
-    pub fn combine(combination: Combination, inverse: bool, children: Vec<CsgNode>) -> CsgNode {
-        let mut child_bounds = children.iter().map(CsgNode::bounds);
-        let surfaces_union = child_bounds.clone().try_fold(Aabb::EMPTY, |all, bounds| {
-            bounds.surface.map(|b| all.union(&b))
-        });
+    pub fn combine(combination: Combination, children: Vec<CsgNode>) -> CsgNode {
+        let child_bounds: Vec<NodeBounds> = children.iter().map(CsgNode::bounds).collect();
         let bounds = match combination {
             Combination::Union | Combination::Merge => NodeBounds {
-                surface: surfaces_union,
-                inside: child_bounds.try_fold(Aabb::EMPTY, |all, bounds| {
-                    bounds.inside.map(|b| all.union(&b))
-                }),
+                surface: child_bounds
+                    .iter()
+                    .try_fold(Aabb::EMPTY, |all, b| Some(all.union(&b.surface?))),
+                inside: child_bounds
+                    .iter()
+                    .try_fold(Aabb::EMPTY, |all, b| Some(all.union(&b.inside?))),
             },
             Combination::Intersection => {
-                let inside = child_bounds.fold(None, |common: Option<Aabb>, bounds| {
-                    match (common, bounds.inside) {
-                        (Some(common), Some(inside)) => Some(common.intersection(&inside)),
-                        (common, inside) => common.or(inside),
-                    }
-                });
-                let surface = match (surfaces_union, inside) {
-                    (Some(surface), Some(inside)) => Some(surface.intersection(&inside)),
-                    (surface, inside) => surface.or(inside),
-                };
-                NodeBounds { surface, inside }
+                // A child's surface survives only inside every other child.
+                let mut inside_before = Vec::with_capacity(child_bounds.len() + 1);
+                inside_before.push(None);
+                for bounds in &child_bounds {
+                    let last = *inside_before.last().unwrap_or(&None);
+                    inside_before.push(overlap(last, bounds.inside));
+                }
+                let mut inside_after = None;
+                let mut surface = Some(Aabb::EMPTY);
+                for (position, bounds) in child_bounds.iter().enumerate().rev() {
+                    let others = overlap(inside_before[position], inside_after);
+                    surface = join(surface, overlap(bounds.surface, others));
+                    inside_after = overlap(inside_after, bounds.inside);
+                }
+                NodeBounds {
+                    surface,
+                    inside: inside_after,
+                }
             }
         };
         let bounds = NodeBounds {
-            surface: bounds.surface.map(empty_if_inverted),
-            inside: if inverse {
-                None
-            } else {
-                bounds.inside.map(empty_if_inverted)
-            },
+            surface: bounds.surface.map(canonical_empty),
+            inside: bounds.inside.map(canonical_empty),
         };
         CsgNode::Combine {
             combination,
-            inverse,
             children,
             bounds,
         }
     }
 }
 
+/// The overlap of two regions, where `None` stands for all of space.
+fn overlap(first: Option<Aabb>, second: Option<Aabb>) -> Option<Aabb> {
+    match (first, second) {
+        (Some(first), Some(second)) => Some(first.intersection(&second)),
+        (first, second) => first.or(second),
+    }
+}
+
+/// The union of two regions, where `None` stands for all of space.
+fn join(first: Option<Aabb>, second: Option<Aabb>) -> Option<Aabb> {
+    Some(first?.union(&second?))
+}
+
 /// A box whose min exceeds its max on some axis, made canonical so it reads as empty.
-fn empty_if_inverted(bounds: Aabb) -> Aabb {
+fn canonical_empty(bounds: Aabb) -> Aabb {
     if bounds.is_empty() {
         Aabb::EMPTY
     } else {
@@ -128,8 +140,6 @@ pub struct CsgHit {
     pub leaf: u32,
     /// Surface part tag from the leaf's shape.
     pub part: u8,
-    /// True when an odd number of inverted ancestors flip the leaf's normal.
-    pub flip: bool,
 }
 
 thread_local! {
@@ -144,6 +154,9 @@ pub struct CsgTree {
     pub leaves: Vec<Leaf>,
     /// The root node.
     pub root: CsgNode,
+    /// POV-Ray's bounding box of the whole object: rays missing it miss the object, even where
+    /// the box is smaller than the surface (inverted CSG). `None` when infinite.
+    pub clip: Option<Aabb>,
 }
 
 /// What a ray query needs beyond the ray itself.
@@ -167,6 +180,9 @@ impl CsgTree {
         max_distance: f64,
         keep: impl Fn(&Leaf) -> bool,
     ) -> Option<CsgHit> {
+        if let Some(clip) = self.clip {
+            clip.ray_entry(ray.origin, inverse_direction, 0.0, f64::INFINITY)?;
+        }
         let query = Query {
             ray,
             inverse_direction,
@@ -177,8 +193,9 @@ impl CsgTree {
             hits.clear();
             self.gather(&self.root, &query, hits);
             let mut best: Option<CsgHit> = None;
+            // Among hits at exactly the same distance the later child wins, as in POV-Ray.
             for hit in hits.iter() {
-                if best.is_none_or(|nearest| hit.distance < nearest.distance)
+                if best.is_none_or(|nearest| hit.distance <= nearest.distance)
                     && keep(&self.leaves[hit.leaf as usize])
                 {
                     best = Some(*hit);
@@ -216,18 +233,15 @@ impl CsgTree {
                             distance,
                             leaf: *index,
                             part,
-                            flip: false,
                         });
                     }
                 }
             }
             CsgNode::Combine {
                 combination,
-                inverse,
                 children,
                 ..
             } => {
-                let start = hits.len();
                 for (position, child) in children.iter().enumerate() {
                     let child_start = hits.len();
                     self.gather(child, query, hits);
@@ -256,11 +270,6 @@ impl CsgTree {
                     }
                     hits.truncate(kept);
                 }
-                if *inverse {
-                    for hit in &mut hits[start..] {
-                        hit.flip = !hit.flip;
-                    }
-                }
             }
         }
     }
@@ -276,20 +285,16 @@ impl CsgTree {
             CsgNode::Leaf { index, .. } => self.leaves[*index as usize].inside(point),
             CsgNode::Combine {
                 combination,
-                inverse,
                 children,
                 ..
-            } => {
-                let inside = match combination {
-                    Combination::Intersection => {
-                        children.iter().all(|child| self.inside_node(child, point))
-                    }
-                    Combination::Union | Combination::Merge => {
-                        children.iter().any(|child| self.inside_node(child, point))
-                    }
-                };
-                inside != *inverse
-            }
+            } => match combination {
+                Combination::Intersection => {
+                    children.iter().all(|child| self.inside_node(child, point))
+                }
+                Combination::Union | Combination::Merge => {
+                    children.iter().any(|child| self.inside_node(child, point))
+                }
+            },
         }
     }
 }

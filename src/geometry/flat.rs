@@ -9,6 +9,9 @@ use super::roots::Roots;
 use crate::accel::Aabb;
 use glam::{DAffine3, DVec3};
 
+/// How far outside a plane a point may be and still count as inside it.
+pub const INSIDE_TOLERANCE: f64 = 1e-10;
+
 /// The plane `dot(point, normal) = distance` (unit normal); inside is the side opposite the
 /// normal.
 #[derive(Clone, Copy, Debug)]
@@ -44,9 +47,10 @@ impl Plane {
         }
     }
 
-    /// True when `point` is strictly on the inner side.
+    /// True when `point` is on the inner side or within [`INSIDE_TOLERANCE`] of the plane
+    /// (POV-Ray counts points on a plane as inside).
     pub fn inside(&self, point: DVec3) -> bool {
-        self.normal.dot(point) < self.distance
+        self.normal.dot(point) - self.distance < INSIDE_TOLERANCE
     }
 
     /// The outward unit normal.
@@ -264,9 +268,9 @@ impl Cuboid {
         }
     }
 
-    /// True when `point` is strictly inside.
+    /// True when `point` is inside or on the box (POV-Ray counts the faces as inside).
     pub fn inside(&self, point: DVec3) -> bool {
-        point.cmpgt(self.min).all() && point.cmplt(self.max).all()
+        point.cmpge(self.min).all() && point.cmple(self.max).all()
     }
 
     /// Outward unit normal of the face with tag `part`.

@@ -254,6 +254,8 @@ impl Leaf {
         inverse: bool,
     ) -> (Leaf, LeafBounds) {
         let local = LocalShape::from_scene(shape);
+        // POV-Ray cannot invert a triangle: it has no inside either way.
+        let inverse = inverse && !matches!(local, LocalShape::Triangle(_));
         let (shape, local_from_world, world_from_shape) = if !usable(world_from_local) {
             (LocalShape::Empty, None, DAffine3::IDENTITY)
         } else if world_from_local.outer_from_inner == DAffine3::IDENTITY {

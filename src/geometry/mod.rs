@@ -19,6 +19,10 @@ mod torus;
 mod world;
 
 #[cfg(test)]
+mod shape_tests;
+#[cfg(test)]
+mod test_support;
+#[cfg(test)]
 mod tests;
 
 pub use world::World;

@@ -17,6 +17,9 @@ const BASE_CAP: u8 = 1;
 /// Surface part tag of the cap at the far end.
 const END_CAP: u8 = 2;
 
+/// Relative margin by which a point must lie inside a cylinder or cone to count as inside.
+const INSIDE_TOLERANCE: f64 = 1e-10;
+
 /// A sphere given by its centre and radius.
 #[derive(Clone, Copy, Debug)]
 pub struct Sphere {
@@ -217,13 +220,15 @@ impl Cone {
         }
     }
 
-    /// True when `point` is strictly inside the solid (open ones included).
+    /// True when `point` is inside the solid (open ones included) by more than a relative
+    /// [`INSIDE_TOLERANCE`]: POV-Ray counts the surface of cylinders and cones as outside.
     pub fn inside(&self, point: DVec3) -> bool {
         let local = self.frame.point(point);
         let radius = self.radius_at(local.z);
-        local.z > 0.0
-            && local.z < self.frame.length
-            && local.x * local.x + local.y * local.y < radius * radius
+        let length = self.frame.length;
+        local.z > length * INSIDE_TOLERANCE
+            && local.z < length * (1.0 - INSIDE_TOLERANCE)
+            && local.x * local.x + local.y * local.y < radius * radius * (1.0 - INSIDE_TOLERANCE)
     }
 
     /// Outward normal (not normalised) at a surface point on surface part `part`.

@@ -32,11 +32,10 @@ pub struct World {
 struct PendingHit<'a> {
     leaf: &'a Leaf,
     part: u8,
-    flip: bool,
 }
 
 impl Primitive {
-    /// The nearest hit strictly between the limits; `shadows_only` skips shadowless leaves.
+    /// The nearest hit strictly between the limits, ignoring leaves for which `skip` is true.
     #[inline]
     fn nearest<'a>(
         &'a self,
@@ -52,14 +51,7 @@ impl Primitive {
                     return None;
                 }
                 let (distance, part) = leaf.nearest(ray, min_distance, max_distance)?;
-                Some((
-                    distance,
-                    PendingHit {
-                        leaf,
-                        part,
-                        flip: false,
-                    },
-                ))
+                Some((distance, PendingHit { leaf, part }))
             }
             Primitive::Csg(tree) => {
                 let hit =
@@ -72,7 +64,6 @@ impl Primitive {
                     PendingHit {
                         leaf,
                         part: hit.part,
-                        flip: hit.flip,
                     },
                 ))
             }
@@ -153,11 +144,7 @@ impl World {
         max_distance: f64,
         skip: &impl Fn(&Leaf) -> bool,
     ) -> Option<SurfaceHit> {
-        let usable = ray.origin.is_finite()
-            && ray.direction.is_finite()
-            && ray.direction != DVec3::ZERO
-            && min_distance < max_distance;
-        if !usable {
+        if !usable(ray, min_distance, max_distance) {
             return None;
         }
         let inverse_direction = DVec3::ONE / ray.direction;
@@ -180,17 +167,51 @@ impl World {
                 self.primitives[at].nearest(ray, inverse_direction, min_distance, limit, skip)
             },
         );
-        if from_bvh.is_some() {
-            best = from_bvh;
-        }
-        let (distance, pending) = best?;
-        let point = ray.at(distance);
-        let normal = pending.leaf.normal(point, pending.part);
-        Some(SurfaceHit {
-            distance,
-            point,
-            normal: if pending.flip { -normal } else { normal },
-            material: pending.leaf.material(),
-        })
+        finish(ray, from_bvh.or(best))
     }
+
+    /// The nearest hit found by testing every primitive, without the BVH (for tests).
+    #[cfg(test)]
+    pub(crate) fn first_hit_brute_force(
+        &self,
+        ray: &Ray,
+        min_distance: f64,
+        max_distance: f64,
+    ) -> Option<SurfaceHit> {
+        if !usable(ray, min_distance, max_distance) {
+            return None;
+        }
+        let inverse_direction = DVec3::ONE / ray.direction;
+        let mut closest = max_distance;
+        let mut best = None;
+        for primitive in self.unbounded.iter().chain(&self.primitives) {
+            if let Some(found) =
+                primitive.nearest(ray, inverse_direction, min_distance, closest, &|_| false)
+            {
+                closest = found.0;
+                best = Some(found);
+            }
+        }
+        finish(ray, best)
+    }
+}
+
+/// True when a query can be answered: finite ray, non-zero direction, non-empty range.
+fn usable(ray: &Ray, min_distance: f64, max_distance: f64) -> bool {
+    ray.origin.is_finite()
+        && ray.direction.is_finite()
+        && ray.direction != DVec3::ZERO
+        && min_distance < max_distance
+}
+
+/// The world-space hit for the nearest pending hit, computing its normal.
+fn finish(ray: &Ray, nearest: Option<(f64, PendingHit)>) -> Option<SurfaceHit> {
+    let (distance, pending) = nearest?;
+    let point = ray.at(distance);
+    Some(SurfaceHit {
+        distance,
+        point,
+        normal: pending.leaf.normal(point, pending.part),
+        material: pending.leaf.material(),
+    })
 }
