@@ -1,0 +1,199 @@
+//! Light arriving at a surface point: distance fading, spotlight cones and shadows.
+//!
+//! In: a [`LightSource`], a world point and the [`World`]. Out: the light's colour as it
+//! arrives at the point (black when blocked). Holds: no allocation; shadow rays run
+//! straight (refraction is ignored, as POV-Ray does without photons).
+//!
+//! Rules measured against POV-Ray 3.7 renders (16-bit output, errors below 2e-5):
+//! - fading: with `fade_distance` d₀ > 0 and `fade_power` p > 0 the light is multiplied by
+//!   `2 / (1 + (d/d₀)^p)`; otherwise it does not weaken with distance.
+//! - spotlight: with c = cos(angle between the axis and the direction to the point),
+//!   cr = cos(radius), cf = cos(falloff) (cf raised to cr when falloff < radius): zero when
+//!   c < cf; `c^tightness` when c ≥ cr; between, `c^tightness · s²(3 − 2s)` with
+//!   s = (c − cf)/(cr − cf). A negative radius acts through its cosine.
+//! - shadows: every surface between the point and the light that is not `no_shadow`
+//!   multiplies the light by `filter · pigment + transmit` of its pigment at the crossing
+//!   (no clamping; so a sphere of `rgbf <0.8,0.5,0.2,1>` passes 0.64, 0.25, 0.04); an
+//!   opaque surface gives zero. The number of surfaces is not limited by
+//!   `max_trace_level`. `shadowless` lights are never blocked. Surfaces closer than 1e-3 to
+//!   the lit point are ignored.
+
+use super::pattern::pigment_colour;
+use crate::geometry::{Ray, World};
+use crate::scene::{Colour, LightSource, Spotlight};
+use glam::DVec3;
+
+/// Shadow rays ignore surfaces closer than this to the lit point (measured in POV-Ray 3.7
+/// with thin boxes and small spheres just off a lit plane: hits below 1e-3 do not shadow).
+const SHADOW_EPSILON: f64 = 1e-3;
+
+/// At most this many transparent surfaces are followed along one shadow ray.
+const MAX_SHADOW_SURFACES: u32 = 10_000;
+
+/// Light from one source arriving at a surface point, before shadows.
+#[derive(Clone, Copy, Debug)]
+pub struct Incoming {
+    /// Unit vector from the surface point towards the light.
+    pub direction: DVec3,
+    /// Distance from the point to the light.
+    pub distance: f64,
+    /// Light colour after fading and the spotlight cone.
+    pub colour: DVec3,
+}
+
+/// The light `light` sends towards `point`, ignoring shadows; `None` when none arrives.
+pub fn incoming(light: &LightSource, point: DVec3) -> Option<Incoming> {
+    let offset = light.position - point;
+    let distance = offset.length();
+    if !(distance > 0.0 && distance.is_finite()) {
+        return None;
+    }
+    let direction = offset / distance;
+    let mut strength = fade_factor(light, distance);
+    if let Some(spot) = &light.spotlight {
+        strength *= spotlight_factor(spot, light.position, direction);
+    }
+    if strength.is_nan() || strength <= 0.0 {
+        return None;
+    }
+    let colour = light.colour * strength;
+    colour.is_finite().then_some(Incoming {
+        direction,
+        distance,
+        colour,
+    })
+}
+
+/// POV-Ray's distance attenuation `2 / (1 + (d / fade_distance)^fade_power)`.
+pub fn fade_factor(light: &LightSource, distance: f64) -> f64 {
+    if light.fade_distance > 0.0 && light.fade_power > 0.0 {
+        2.0 / (1.0 + (distance / light.fade_distance).powf(light.fade_power))
+    } else {
+        1.0
+    }
+}
+
+/// The spotlight's intensity multiplier for light leaving towards `-to_light`.
+pub fn spotlight_factor(spot: &Spotlight, position: DVec3, to_light: DVec3) -> f64 {
+    let Some(axis) = (spot.point_at - position).try_normalize() else {
+        return 0.0;
+    };
+    let cosine = -to_light.dot(axis);
+    let cos_radius = spot.radius.to_radians().cos();
+    let cos_falloff = spot.falloff.to_radians().cos().min(cos_radius);
+    if cosine.is_nan() || cosine < cos_falloff {
+        return 0.0;
+    }
+    let tight = if spot.tightness != 0.0 {
+        cosine.max(0.0).powf(spot.tightness)
+    } else {
+        1.0
+    };
+    if cosine >= cos_radius {
+        return tight;
+    }
+    let s = (cosine - cos_falloff) / (cos_radius - cos_falloff);
+    tight * s * s * (3.0 - 2.0 * s)
+}
+
+/// The part of a light that passes a surface with this pigment: `filter · rgb + transmit`.
+pub fn transmission(pigment: Colour) -> DVec3 {
+    pigment.rgb_vec() * pigment.filter + DVec3::splat(pigment.transmit)
+}
+
+/// What fraction of the light from `distance` away along `direction` reaches `point`.
+pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f64) -> DVec3 {
+    let ray = Ray {
+        origin: point,
+        direction,
+    };
+    let mut filter = DVec3::ONE;
+    let mut start = SHADOW_EPSILON;
+    for _ in 0..MAX_SHADOW_SURFACES {
+        let Some(hit) = world.first_shadow_hit(&ray, start, distance) else {
+            return filter;
+        };
+        let Some(material) = world.materials.get(hit.material as usize) else {
+            return DVec3::ZERO;
+        };
+        let pigment = pigment_colour(&material.texture.pigment, hit.point);
+        filter *= transmission(pigment);
+        if !filter.is_finite() || filter.abs().max_element() < 1e-12 {
+            return DVec3::ZERO;
+        }
+        start = hit.distance + SHADOW_EPSILON;
+    }
+    DVec3::ZERO
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spot(radius: f64, falloff: f64, tightness: f64) -> Spotlight {
+        Spotlight {
+            point_at: DVec3::new(0.0, -1.0, 0.0),
+            radius,
+            falloff,
+            tightness,
+        }
+    }
+
+    /// The spotlight factor at `degrees` off the axis of a light at the origin aiming down.
+    fn at_angle(spot: &Spotlight, degrees: f64) -> f64 {
+        let a = degrees.to_radians();
+        let towards_point = DVec3::new(a.sin(), -a.cos(), 0.0);
+        spotlight_factor(spot, DVec3::ZERO, -towards_point)
+    }
+
+    #[test]
+    fn spotlight_curve_matches_povray_samples() {
+        // (radius, falloff, tightness, angle, value read from a POV-Ray 3.7 render)
+        let samples = [
+            (30.0, 45.0, 0.0, 11.3, 1.0),
+            (30.0, 45.0, 0.0, 35.7, 0.7328),
+            (30.0, 45.0, 0.0, 42.0, 0.1329),
+            (20.0, 40.0, 3.0, 11.3, 0.9430),
+            (20.0, 40.0, 3.0, 30.2, 0.3875),
+            (0.0, 50.0, 10.0, 21.3, 0.4465),
+            (-10.0, 50.0, 5.0, 40.2, 0.0749),
+            (30.0, 20.0, 0.0, 28.8, 1.0),
+            (30.0, 20.0, 0.0, 30.2, 0.0),
+        ];
+        for (radius, falloff, tightness, angle, expected) in samples {
+            let got = at_angle(&spot(radius, falloff, tightness), angle);
+            // The sample angles are rounded to 0.1 degree, hence the loose tolerance.
+            assert!(
+                (got - expected).abs() < 3e-3,
+                "{radius} {falloff} {angle}: {got}"
+            );
+        }
+        assert_eq!(at_angle(&spot(30.0, 45.0, 0.0), 120.0), 0.0);
+    }
+
+    #[test]
+    fn fading() {
+        let light = LightSource {
+            position: DVec3::ZERO,
+            colour: DVec3::ONE,
+            shadowless: false,
+            spotlight: None,
+            fade_distance: 2.0,
+            fade_power: 2.0,
+        };
+        assert_eq!(fade_factor(&light, 2.0), 1.0);
+        assert!((fade_factor(&light, 4.0) - 0.4).abs() < 1e-15);
+        let unfaded = LightSource {
+            fade_power: 0.0,
+            ..light
+        };
+        assert_eq!(fade_factor(&unfaded, 100.0), 1.0);
+    }
+
+    #[test]
+    fn transmission_of_pigments() {
+        let t = transmission(Colour::rgbft(0.8, 0.5, 0.2, 0.5, 0.3));
+        assert!((t - DVec3::new(0.7, 0.55, 0.4)).length() < 1e-15);
+        assert_eq!(transmission(Colour::rgb(0.8, 0.5, 0.2)), DVec3::ZERO);
+    }
+}

@@ -1,0 +1,156 @@
+//! Local illumination at a surface point: ambient, emission, diffuse and highlights.
+//!
+//! In: a [`SurfaceSample`] (point, normal facing the viewer, pigment, finish), the scene's
+//! lights and the [`World`] for shadow rays. Out: [`LocalLight`], split into the part that
+//! the pigment's opacity scales and the highlights, which it does not. Holds: no
+//! allocation; lights on the far side of the surface contribute nothing.
+//!
+//! Formulas measured against POV-Ray 3.7 renders (16-bit output, errors below 2e-5):
+//! - ambient: `pigment · (ambient · ambient_light + emission)`.
+//! - diffuse, per light with N·L > 0: `diffuse · (N·L)^brilliance · pigment · light`.
+//! - phong: `phong · (R·L)^phong_size · light`, R the mirror direction of the viewing ray.
+//! - specular: `specular · (N·H)^(1/roughness) · light`, H = normalize(L + V).
+//! - metallic m tints both highlights: `light · (1 + m (1 − F) (pigment − 1))` with
+//!   F = clamp(0.014567225 / (x − 1.12)² − 0.011612903, 0, 1), x = acos(N·L) / (π/2).
+//! - light here is the light colour after fading, the spotlight cone and shadow filtering.
+
+use super::lights::{incoming, shadow_filter};
+use crate::geometry::World;
+use crate::scene::{Colour, Finish, LightSource};
+use glam::DVec3;
+use std::f64::consts::FRAC_PI_2;
+
+/// What the shading of one surface point needs to know.
+#[derive(Clone, Copy, Debug)]
+pub struct SurfaceSample<'a> {
+    /// The point in world space.
+    pub point: DVec3,
+    /// Unit surface normal, turned to face the incoming ray.
+    pub normal: DVec3,
+    /// Unit direction of the ray that hit the point.
+    pub ray_direction: DVec3,
+    /// The pigment at the point.
+    pub pigment: Colour,
+    /// The surface finish.
+    pub finish: &'a Finish,
+}
+
+/// Light leaving a surface point towards the viewer, before transparency and reflection.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LocalLight {
+    /// Ambient, emission and diffuse light: the part weighted by `1 − filter − transmit`.
+    pub body: DVec3,
+    /// Phong and specular highlights, which transparency does not weaken.
+    pub highlights: DVec3,
+}
+
+/// The light a surface sends to the viewer from ambient, emission and the light sources.
+pub fn local_light(
+    sample: &SurfaceSample,
+    lights: &[LightSource],
+    ambient_light: DVec3,
+    world: &World,
+) -> LocalLight {
+    let finish = sample.finish;
+    let pigment = sample.pigment.rgb_vec();
+    let mut body = pigment * (finish.ambient * ambient_light + finish.emission);
+    let mut highlights = DVec3::ZERO;
+    let has_highlights = finish.phong != 0.0 || finish.specular != 0.0;
+    if finish.diffuse == 0.0 && !has_highlights {
+        return LocalLight { body, highlights };
+    }
+    let reflected_view = mirror(sample.ray_direction, sample.normal);
+    for light in lights {
+        let Some(arriving) = incoming(light, sample.point) else {
+            continue;
+        };
+        let to_light = arriving.direction;
+        let cos_incidence = sample.normal.dot(to_light);
+        if cos_incidence.is_nan() || cos_incidence <= 0.0 {
+            continue;
+        }
+        let mut colour = arriving.colour;
+        if !light.shadowless {
+            colour *= shadow_filter(world, sample.point, to_light, arriving.distance);
+            if colour == DVec3::ZERO {
+                continue;
+            }
+        }
+        if finish.diffuse != 0.0 {
+            let falloff = if finish.brilliance == 1.0 {
+                cos_incidence
+            } else {
+                cos_incidence.powf(finish.brilliance)
+            };
+            body += finish.diffuse * falloff * pigment * colour;
+        }
+        if !has_highlights {
+            continue;
+        }
+        let tint = highlight_tint(finish.metallic, cos_incidence, pigment);
+        if finish.phong != 0.0 {
+            let cosine = reflected_view.dot(to_light);
+            if cosine > 0.0 {
+                highlights += finish.phong * cosine.powf(finish.phong_size) * colour * tint;
+            }
+        }
+        if finish.specular != 0.0 {
+            if let Some(half) = (to_light - sample.ray_direction).try_normalize() {
+                let cosine = half.dot(sample.normal);
+                if cosine > 0.0 {
+                    let exponent = 1.0 / finish.roughness;
+                    highlights += finish.specular * cosine.powf(exponent) * colour * tint;
+                }
+            }
+        }
+    }
+    LocalLight { body, highlights }
+}
+
+/// `direction` mirrored about the plane with unit normal `normal`.
+pub fn mirror(direction: DVec3, normal: DVec3) -> DVec3 {
+    direction - 2.0 * direction.dot(normal) * normal
+}
+
+/// The factor `metallic` applies to highlight colours for light at this incidence.
+fn highlight_tint(metallic: f64, cos_incidence: f64, pigment: DVec3) -> DVec3 {
+    if metallic == 0.0 {
+        return DVec3::ONE;
+    }
+    let x = cos_incidence.clamp(-1.0, 1.0).acos() / FRAC_PI_2;
+    let fresnel = (0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903).clamp(0.0, 1.0);
+    DVec3::ONE + metallic * (1.0 - fresnel) * (pigment - DVec3::ONE)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn metallic_tint_matches_povray_samples() {
+        // Ratio of the metallic to the plain phong highlight read from POV-Ray 3.7 renders
+        // of pigment <0.9, 0.5, 0.2>, at N·L = 0.764 (metallic 1) and 0.9952 (metallic 0.5).
+        let pigment = DVec3::new(0.9, 0.5, 0.2);
+        let tint = highlight_tint(1.0, 0.7639342218884229, pigment);
+        assert!(
+            (tint - DVec3::new(0.90204395, 0.51025608, 0.21641104))
+                .abs()
+                .max_element()
+                < 1e-4
+        );
+        let tint = highlight_tint(0.5, 0.9951868832137065, pigment);
+        assert!(
+            (tint - DVec3::new(0.95006992, 0.750368, 0.60057197))
+                .abs()
+                .max_element()
+                < 1e-4
+        );
+        assert_eq!(highlight_tint(0.0, 0.5, pigment), DVec3::ONE);
+    }
+
+    #[test]
+    fn mirror_reverses_normal_component() {
+        let reflected = mirror(DVec3::new(1.0, -1.0, 0.0), DVec3::Y);
+        assert_eq!(reflected, DVec3::new(1.0, 1.0, 0.0));
+    }
+}
