@@ -267,40 +267,14 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
         }
         "dimensions" => {
             arity(ev, 1)?;
-            match ev.argument(call, 0)? {
-                Value::Array(a) => Value::Float(a.sizes.len() as f64),
-                other => {
-                    return Err(ev
-                        .error(
-                            call.span,
-                            format!("expected an array, found {}", other.type_name()),
-                        )
-                        .into())
-                }
-            }
+            Value::Float(array_argument(ev, call, 0)?.sizes.len() as f64)
         }
         "dimension_size" => {
             arity(ev, 2)?;
-            let array = ev.argument(call, 0)?;
-            let d = ev.argument_float(call, 1)?;
-            match array {
-                Value::Array(a) => {
-                    let i = d as usize;
-                    Value::Float(if i >= 1 && i <= a.sizes.len() {
-                        a.sizes[i - 1] as f64
-                    } else {
-                        0.0
-                    })
-                }
-                other => {
-                    return Err(ev
-                        .error(
-                            call.span,
-                            format!("expected an array, found {}", other.type_name()),
-                        )
-                        .into())
-                }
-            }
+            let array = array_argument(ev, call, 0)?;
+            let dimension = ev.argument_float(call, 1)? as usize;
+            let size = dimension.checked_sub(1).and_then(|d| array.sizes.get(d));
+            Value::Float(size.map_or(0.0, |s| *s as f64))
         }
         "str" => {
             arity(ev, 3)?;
@@ -424,6 +398,18 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
 fn next_random(state: &mut u32) -> f64 {
     *state = state.wrapping_mul(1_812_433_253).wrapping_add(12_345);
     f64::from(*state) / f64::from(u32::MAX)
+}
+
+fn array_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<Rc<super::Array>> {
+    match ev.argument(call, index)? {
+        Value::Array(array) => Ok(array),
+        other => Err(ev
+            .error(
+                call.arguments[index].span(),
+                format!("expected an array, found {}", other.type_name()),
+            )
+            .into()),
+    }
 }
 
 fn string_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<String> {

@@ -225,7 +225,8 @@ impl Evaluator {
         Ok(())
     }
 
-    fn undefine(&mut self, name: &str) {
+    /// Removes the innermost version of an identifier (`#undef`).
+    pub(crate) fn undefine(&mut self, name: &str) {
         if let Some(scope) = self.scopes.iter_mut().rev().find(|s| s.contains_key(name)) {
             scope.remove(name);
         }

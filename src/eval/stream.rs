@@ -263,23 +263,8 @@ impl Evaluator {
                 }
                 self.assign(*local, target, value)?;
             }
-            DirectiveKind::Undef(name, _) => {
-                if let Some(scope) = self.scopes.iter_mut().rev().find(|s| s.contains_key(name)) {
-                    scope.remove(name);
-                }
-            }
-            DirectiveKind::If { branches, .. } => {
-                for branch in branches {
-                    let chosen = match &branch.condition {
-                        Some(condition) => self.eval_condition(condition)?,
-                        None => true,
-                    };
-                    if chosen {
-                        stream.push(branch.body.clone(), FrameKind::Plain);
-                        break;
-                    }
-                }
-            }
+            DirectiveKind::Undef(name, _) => self.undefine(name),
+            DirectiveKind::If { branches, .. } => self.run_first_true_branch(branches, stream)?,
             DirectiveKind::IfDefined {
                 negate,
                 target,
@@ -290,16 +275,7 @@ impl Evaluator {
                 if defined != *negate {
                     stream.push(then.clone(), FrameKind::Plain);
                 } else {
-                    for branch in rest {
-                        let chosen = match &branch.condition {
-                            Some(condition) => self.eval_condition(condition)?,
-                            None => true,
-                        };
-                        if chosen {
-                            stream.push(branch.body.clone(), FrameKind::Plain);
-                            break;
-                        }
-                    }
+                    self.run_first_true_branch(rest, stream)?;
                 }
             }
             DirectiveKind::While { condition, body } => {
@@ -384,6 +360,25 @@ impl Evaluator {
             DirectiveKind::FileClose(handle) => self.file_close(handle, span)?,
             DirectiveKind::FileRead { handle, targets } => self.file_read(handle, targets, span)?,
             DirectiveKind::FileWrite { handle, values } => self.file_write(handle, values, span)?,
+        }
+        Ok(())
+    }
+
+    /// Streams the body of the first branch whose condition holds (`#else` always holds).
+    fn run_first_true_branch(
+        &mut self,
+        branches: &[crate::syntax::ast::Branch],
+        stream: &mut Stream,
+    ) -> EvalResult<()> {
+        for branch in branches {
+            let chosen = match &branch.condition {
+                Some(condition) => self.eval_condition(condition)?,
+                None => true,
+            };
+            if chosen {
+                stream.push(branch.body.clone(), FrameKind::Plain);
+                break;
+            }
         }
         Ok(())
     }
