@@ -161,13 +161,21 @@ impl Evaluator {
                             format!("`{word}` is not supported yet; it is ignored"),
                         );
                     }
-                    "filter" | "transmit" => {
+                    "red" | "green" | "blue" | "filter" | "transmit" | "gray" | "grey" => {
+                        // Colour components given straight in the pigment modify its colour.
                         let amount = self.expect_float(stream, "a float")?;
                         if let Pigment::Solid(colour) = &mut pigment {
-                            if &**word == "filter" {
-                                colour.filter = amount;
-                            } else {
-                                colour.transmit = amount;
+                            match &**word {
+                                "red" => colour.red = amount,
+                                "green" => colour.green = amount,
+                                "blue" => colour.blue = amount,
+                                "filter" => colour.filter = amount,
+                                "transmit" => colour.transmit = amount,
+                                _ => {
+                                    colour.red = amount;
+                                    colour.green = amount;
+                                    colour.blue = amount;
+                                }
                             }
                         }
                     }

@@ -120,9 +120,12 @@ impl Evaluator {
         }
     }
 
-    /// `#fclose Handle`.
+    /// `#fclose Handle`; like POV-Ray, closing a handle that is not open (for example one
+    /// already undefined at the end of a read) does nothing.
     pub(crate) fn file_close(&mut self, handle: &Rc<str>, span: Span) -> EvalResult<()> {
-        let index = self.file_index(handle, span)?;
+        let Ok(index) = self.file_index(handle, span) else {
+            return Ok(());
+        };
         if let Some(DataFile::Writing(mut writer)) = self.files[index].take() {
             if let Err(e) = writer.flush() {
                 return Err(self

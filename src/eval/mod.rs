@@ -436,6 +436,10 @@ impl Evaluator {
         }
     }
 
+    pub(crate) fn add_light(&mut self, light: LightSource) {
+        self.lights.push(light);
+    }
+
     pub(crate) fn set_version(&mut self, version: f64) {
         if !self.version_declared {
             self.version_declared = true;

@@ -52,6 +52,13 @@ impl Evaluator {
                     let child = match &item {
                         Item::Block(b) => match self.eval_block(b)? {
                             Value::Object(o) => Some(o),
+                            Value::Light(light) => {
+                                // POV-Ray moves such lights with the CSG; durer keeps them
+                                // where they are written for now.
+                                self.warn(b.span, "light sources inside CSG do not follow its transformations yet");
+                                self.add_light(Rc::unwrap_or_clone(light));
+                                None
+                            }
                             other => {
                                 self.object_modifier_value(&mut object, other, item.span())?;
                                 None

@@ -458,22 +458,19 @@ impl Evaluator {
                 )
                 .into());
         };
+        let values = self.macro_arguments(call)?;
         let required = definition.parameters.iter().filter(|p| !p.optional).count();
-        if call.arguments.len() < required || call.arguments.len() > definition.parameters.len() {
+        if values.len() < required || values.len() > definition.parameters.len() {
             let names: Vec<&str> = definition.parameters.iter().map(|p| &*p.name).collect();
+            let count = definition.parameters.len();
             return Err(self
                 .error(
                     call.span,
                     format!(
-                        "macro `{}` takes {} argument{}, found {}",
+                        "macro `{}` takes {count} argument{}, found {}",
                         definition.name,
-                        definition.parameters.len(),
-                        if definition.parameters.len() == 1 {
-                            ""
-                        } else {
-                            "s"
-                        },
-                        call.arguments.len()
+                        if count == 1 { "" } else { "s" },
+                        values.len()
                     ),
                 )
                 .with_label("called here")
@@ -483,30 +480,8 @@ impl Evaluator {
                 )
                 .into());
         }
-        // Evaluate arguments in the caller's scope; plain identifiers are passed by reference.
-        let mut scope =
-            Scope::with_capacity_and_hasher(definition.parameters.len(), Default::default());
-        let caller_scope = self.scopes.len() - 1;
-        for (parameter, argument) in definition.parameters.iter().zip(&call.arguments) {
-            let value = match argument {
-                crate::syntax::ast::Argument::Expr(Expr::Ident(name, span)) => {
-                    match self.scopes.iter().rposition(|s| s.contains_key(name)) {
-                        Some(_) => Value::Reference {
-                            scope: caller_scope,
-                            name: name.clone(),
-                        },
-                        None if self.is_builtin_name(name) => {
-                            self.eval_expr(&Expr::Ident(name.clone(), *span))?
-                        }
-                        None => Value::Reference {
-                            scope: 0,
-                            name: name.clone(),
-                        },
-                    }
-                }
-                crate::syntax::ast::Argument::Expr(expr) => self.eval_expr(expr)?,
-                crate::syntax::ast::Argument::Block(block) => self.eval_block(block)?,
-            };
+        let mut scope = Scope::with_capacity_and_hasher(values.len(), Default::default());
+        for (parameter, value) in definition.parameters.iter().zip(values) {
             scope.insert(parameter.name.clone(), value);
         }
         self.enter_nesting(call.span)?;
@@ -517,6 +492,59 @@ impl Evaluator {
         self.scopes.push(scope);
         stream.push(body, FrameKind::Macro);
         Ok(())
+    }
+
+    /// Evaluates a macro call's arguments in the caller's scope. Plain identifiers are passed
+    /// by reference. As in POV-Ray, commas are optional, so `Obj -y` is two arguments when
+    /// `Obj` is not a number: such a sum or difference is split in two.
+    fn macro_arguments(&mut self, call: &Call) -> EvalResult<Vec<Value>> {
+        use crate::syntax::ast::{Argument, BinaryOp};
+        let caller_scope = self.scopes.len() - 1;
+        let mut values = Vec::with_capacity(call.arguments.len());
+        for argument in &call.arguments {
+            match argument {
+                Argument::Expr(Expr::Ident(name, span)) => {
+                    let value = if self.scopes.iter().any(|s| s.contains_key(name)) {
+                        Value::Reference {
+                            scope: caller_scope,
+                            name: name.clone(),
+                        }
+                    } else if self.is_builtin_name(name) {
+                        self.eval_expr(&Expr::Ident(name.clone(), *span))?
+                    } else {
+                        Value::Reference {
+                            scope: 0,
+                            name: name.clone(),
+                        }
+                    };
+                    values.push(value);
+                }
+                Argument::Expr(Expr::Binary(
+                    op @ (BinaryOp::Add | BinaryOp::Subtract),
+                    lhs,
+                    rhs,
+                    span,
+                )) => {
+                    let left = self.eval_expr(lhs)?;
+                    let right = self.eval_expr(rhs)?;
+                    if matches!(left, Value::Float(_) | Value::Vector(_) | Value::Colour(_)) {
+                        values.push(self.binary(*op, left, right, *span)?);
+                    } else {
+                        values.push(left);
+                        let negate = *op == BinaryOp::Subtract;
+                        let zero = Value::Float(0.0);
+                        values.push(if negate {
+                            self.binary(BinaryOp::Subtract, zero, right, *span)?
+                        } else {
+                            right
+                        });
+                    }
+                }
+                Argument::Expr(expr) => values.push(self.eval_expr(expr)?),
+                Argument::Block(block) => values.push(self.eval_block(block)?),
+            }
+        }
+        Ok(values)
     }
 
     /// Evaluates a macro call used as a value: its body must yield exactly one value.

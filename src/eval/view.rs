@@ -144,6 +144,11 @@ impl Evaluator {
                 self.expect_end(stream, "background")?;
                 Ok(Value::Colour(colour))
             }
+            "default" => {
+                // POV-Ray 1.0 syntax for `#default`.
+                self.run_default(block.body.clone())?;
+                Ok(Value::Nothing)
+            }
             "global_settings" => {
                 self.eval_global_settings(stream)?;
                 Ok(Value::Nothing)

@@ -83,3 +83,9 @@ Check(("abc" < "abd") & ("b" = "b"), "string comparison")
 #undef A
 #ifdef (A) #error "#undef did not remove A" #end
 /* nested /* comments */ are allowed */
+// Commas between macro arguments are optional: `Obj -y` is two arguments when Obj is an object.
+#macro Pick(Thing, Offset) Offset #end
+#declare Thing = sphere { 0, 1 }
+#declare Picked = Pick(Thing -y);
+Check(Picked.y = -1, "an object followed by -y is two arguments")
+Check(Pick(1, 2 -1) = 1, "numbers still subtract")

@@ -12,6 +12,7 @@ Check(V.y = 2, "read a vector")
 Check(strcmp(S, "word") = 0, "read a string")
 Check(B = 7, "read the last float")
 Check(!defined(In), "the handle is undefined at the end of the file")
+#fclose In // closing an already undefined handle is allowed, as in POV-Ray
 #fopen Again "files_data.tmp" append
 #write (Again, 8)
 #fclose Again
