@@ -4,6 +4,7 @@ mod cli;
 mod diagnostics;
 mod language;
 mod reference_images;
+mod robustness;
 
 use std::path::{Path, PathBuf};
 
