@@ -8,6 +8,8 @@ mod appearance;
 mod builtins;
 mod expr;
 mod files;
+mod literals;
+mod macros;
 mod objects;
 mod stream;
 mod value;

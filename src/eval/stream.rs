@@ -2,9 +2,9 @@
 //! as they are reached, the way POV-Ray reads its token stream.
 
 use super::value::Value;
-use super::{EvalResult, Evaluator, Scope, LOOP_ITERATION_LIMIT};
-use crate::diag::{Span, TraceEntry};
-use crate::syntax::ast::{Call, Directive, DirectiveKind, Expr, Item, MessageLevel, SwitchLabel};
+use super::{EvalResult, Evaluator, LOOP_ITERATION_LIMIT};
+use crate::diag::Span;
+use crate::syntax::ast::{Directive, DirectiveKind, Expr, Item, MessageLevel, SwitchLabel};
 use std::rc::Rc;
 
 /// A stack of item lists being read; the top frame is read first.
@@ -74,6 +74,24 @@ impl Stream {
 
     pub(crate) fn push_include(&mut self, items: Rc<[Item]>) {
         self.push(items, FrameKind::Include);
+    }
+
+    /// Starts a macro body (its scope and trace entry are pushed by the caller).
+    pub(crate) fn push_macro(&mut self, items: Rc<[Item]>) {
+        self.push(items, FrameKind::Macro);
+    }
+
+    /// A stream with nothing to read yet.
+    pub(crate) fn empty() -> Stream {
+        Stream {
+            frames: Vec::new(),
+            pushed_back: None,
+        }
+    }
+
+    /// Whether every frame has been read.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.frames.is_empty()
     }
 }
 
@@ -443,155 +461,9 @@ impl Evaluator {
         }
     }
 
-    /// Expands a macro call in place: binds the arguments in a new scope and streams the body.
-    pub(crate) fn enter_macro(&mut self, call: &Rc<Call>, stream: &mut Stream) -> EvalResult<()> {
-        let Some(Value::Macro(definition)) = self.lookup(&call.name).cloned() else {
-            return Err(self.undefined(&call.name, call.name_span).into());
-        };
-        let Some(body) = definition.body.clone() else {
-            return Err(self
-                .error(call.span, format!("cannot run macro `{}`", definition.name))
-                .with_label("called here")
-                .with_secondary(
-                    definition.header_span,
-                    "its body mixes directives and braces in a way durer cannot follow",
-                )
-                .into());
-        };
-        let values = self.macro_arguments(call)?;
-        let required = definition.parameters.iter().filter(|p| !p.optional).count();
-        if values.len() < required || values.len() > definition.parameters.len() {
-            let names: Vec<&str> = definition.parameters.iter().map(|p| &*p.name).collect();
-            let count = definition.parameters.len();
-            return Err(self
-                .error(
-                    call.span,
-                    format!(
-                        "macro `{}` takes {count} argument{}, found {}",
-                        definition.name,
-                        if count == 1 { "" } else { "s" },
-                        values.len()
-                    ),
-                )
-                .with_label("called here")
-                .with_secondary(
-                    definition.header_span,
-                    format!("parameters: ({})", names.join(", ")),
-                )
-                .into());
-        }
-        let mut scope = Scope::with_capacity_and_hasher(values.len(), Default::default());
-        for (parameter, value) in definition.parameters.iter().zip(values) {
-            scope.insert(parameter.name.clone(), value);
-        }
-        self.enter_nesting(call.span)?;
-        self.trace.push(TraceEntry {
-            what: format!("macro `{}`", definition.name),
-            span: call.span,
-        });
-        self.scopes.push(scope);
-        stream.push(body, FrameKind::Macro);
-        Ok(())
-    }
-
-    /// Evaluates a macro call's arguments in the caller's scope. Plain identifiers are passed
-    /// by reference. As in POV-Ray, commas are optional, so `Obj -y` is two arguments when
-    /// `Obj` is not a number: such a sum or difference is split in two.
-    fn macro_arguments(&mut self, call: &Call) -> EvalResult<Vec<Value>> {
-        use crate::syntax::ast::{Argument, BinaryOp};
-        let caller_scope = self.scopes.len() - 1;
-        let mut values = Vec::with_capacity(call.arguments.len());
-        for argument in &call.arguments {
-            match argument {
-                Argument::Expr(Expr::Ident(name, span)) => {
-                    let value = if self.scopes.iter().any(|s| s.contains_key(name)) {
-                        Value::Reference {
-                            scope: caller_scope,
-                            name: name.clone(),
-                        }
-                    } else if self.is_builtin_name(name) {
-                        self.eval_expr(&Expr::Ident(name.clone(), *span))?
-                    } else {
-                        Value::Reference {
-                            scope: 0,
-                            name: name.clone(),
-                        }
-                    };
-                    values.push(value);
-                }
-                Argument::Expr(Expr::Binary(
-                    op @ (BinaryOp::Add | BinaryOp::Subtract),
-                    lhs,
-                    rhs,
-                    span,
-                )) => {
-                    let left = self.eval_expr(lhs)?;
-                    let right = self.eval_expr(rhs)?;
-                    if matches!(left, Value::Float(_) | Value::Vector(_) | Value::Colour(_)) {
-                        values.push(self.binary(*op, left, right, *span)?);
-                    } else {
-                        values.push(left);
-                        let negate = *op == BinaryOp::Subtract;
-                        let zero = Value::Float(0.0);
-                        values.push(if negate {
-                            self.binary(BinaryOp::Subtract, zero, right, *span)?
-                        } else {
-                            right
-                        });
-                    }
-                }
-                Argument::Expr(expr) => values.push(self.eval_expr(expr)?),
-                Argument::Block(block) => values.push(self.eval_block(block)?),
-            }
-        }
-        Ok(values)
-    }
-
-    /// Evaluates a macro call used as a value: its body must yield exactly one value.
-    pub(crate) fn call_macro_value(&mut self, call: &Rc<Call>) -> EvalResult<Value> {
-        let mut stream = Stream {
-            frames: Vec::new(),
-            pushed_back: None,
-        };
-        self.enter_macro(call, &mut stream)?;
-        let depth = self.scopes.len();
-        let mut result: Option<Value> = None;
-        while let Some(item) = self.next_item(&mut stream)? {
-            if matches!(item, Item::Comma(_)) {
-                continue;
-            }
-            let span = item.span();
-            let value = self.item_value(&item)?;
-            if result.is_some() {
-                // Unwind what is left of the macro so scopes stay balanced.
-                while !stream.frames.is_empty() {
-                    self.unwind_frame(&mut stream);
-                }
-                return Err(self
-                    .error(
-                        span,
-                        format!(
-                            "macro `{}` used as a value produced more than one value",
-                            call.name
-                        ),
-                    )
-                    .with_label("extra value")
-                    .into());
-            }
-            result = Some(value);
-            let _ = depth;
-        }
-        result.ok_or_else(|| {
-            self.error(
-                call.span,
-                format!("macro `{}` produced no value", call.name),
-            )
-            .with_label("used as a value here")
-            .into()
-        })
-    }
-
-    fn unwind_frame(&mut self, stream: &mut Stream) {
+    /// Drops the top frame, leaving its scope if it has one (used when a value-mode macro
+    /// call fails part-way).
+    pub(crate) fn unwind_frame(&mut self, stream: &mut Stream) {
         if let Some(frame) = stream.frames.pop() {
             if matches!(frame.kind, FrameKind::Macro | FrameKind::Include) {
                 self.scopes.pop();
