@@ -160,14 +160,14 @@ fn pigment_to_world(pigment: &Pigment, world_from_owner: &Transform) -> Pigment 
 /// not inverted (so a difference is bounded by its first child). Inverting a CSG object later does not change its box, so an
 /// inverted CSG object is cut off at the box of the object it came from: rays that miss the
 /// box miss the object.
-fn pov_bounding_box(object: &Object, world_from_parent: &Transform) -> Option<Aabb> {
-    let world_from_local = object.transform.then(world_from_parent);
-    let bounds = match &object.shape {
+fn pov_bounding_box(object: &Object) -> Option<Aabb> {
+    let parent_from_local = &object.transform.outer_from_inner;
+    let local = match &object.shape {
         Shape::Csg {
             operation: CsgOperation::Union | CsgOperation::Merge,
             children,
         } => children.iter().try_fold(Aabb::EMPTY, |all, child| {
-            pov_bounding_box(child, &world_from_local).map(|b| all.union(&b))
+            pov_bounding_box(child).map(|b| all.union(&b))
         })?,
         Shape::Csg {
             operation,
@@ -180,22 +180,19 @@ fn pov_bounding_box(object: &Object, world_from_parent: &Transform) -> Option<Aa
                 if (child.inverse || subtracted) && invertible(&child.shape) {
                     continue;
                 }
-                if let Some(bounds) = pov_bounding_box(child, &world_from_local) {
+                if let Some(bounds) = pov_bounding_box(child) {
                     common = Some(common.map_or(bounds, |common| common.intersection(&bounds)));
                 }
             }
             common?
         }
         shape if object.inverse && invertible(shape) => return None,
-        shape => LocalShape::from_scene(shape)
-            .bounds()?
-            .transformed(&world_from_local.outer_from_inner),
+        shape => return LocalShape::from_scene(shape).pov_bounds(parent_from_local),
     };
-    Some(if bounds.is_empty() {
-        Aabb::EMPTY
-    } else {
-        bounds
-    })
+    if local.is_empty() {
+        return Some(Aabb::EMPTY);
+    }
+    Some(local.transformed(parent_from_local))
 }
 
 /// False for shapes POV-Ray cannot invert (triangles): `inverse` leaves them unchanged.
@@ -297,7 +294,9 @@ impl Builder {
                 };
                 let root =
                     self.csg_node(object, world_from_parent, inherited, inversion, &mut leaves);
-                let clip = pov_bounding_box(object, world_from_parent).filter(Aabb::is_finite);
+                let clip = pov_bounding_box(object)
+                    .map(|bounds| bounds.transformed(&world_from_parent.outer_from_inner))
+                    .filter(Aabb::is_finite);
                 let surface = match (root.bounds().surface, clip.and_then(|b| padded(Some(b)))) {
                     (Some(surface), Some(clip)) => Some(surface.intersection(&clip)),
                     (surface, clip) => surface.or(clip),
