@@ -1,6 +1,6 @@
 //! Leaf primitives: one shape placed in the world with its material.
 //!
-//! In: a [`scene::Shape`] (not CSG), the object's world-from-local transform, a material index
+//! In: a [`Shape`] (not CSG), the object's world-from-local transform, a material index
 //! and the inverse flag. Out: a compact [`Leaf`] answering ray intersections, inside tests and
 //! world-space outward normals, plus its world bounds.
 //! Holds: transforms that a shape can absorb (any affine map for planes and triangles, a
