@@ -18,6 +18,7 @@ use crate::accel::Aabb;
 use crate::scene::{
     CsgOperation, Interior, Object, Pigment, PigmentMap, Shape, Texture, Transform,
 };
+use glam::DAffine3;
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -111,7 +112,13 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
     };
     let mut primitives = Vec::new();
     for object in objects {
-        builder.add_top_level(object, &Transform::IDENTITY, &appearance, &mut primitives);
+        builder.add_top_level(
+            object,
+            &Transform::IDENTITY,
+            &appearance,
+            &mut Vec::new(),
+            &mut primitives,
+        );
     }
     BuiltScene {
         primitives,
@@ -152,22 +159,24 @@ fn pigment_to_world(pigment: &Pigment, world_from_owner: &Transform) -> Pigment 
     }
 }
 
-/// POV-Ray's bounding box of `object` in world space; `None` when infinite.
+/// POV-Ray's bounding box of `object` in its parent's space; `None` when infinite.
 ///
-/// The rules, inferred from POV-Ray's output: an inverted shape has an infinite box (triangles
-/// cannot be inverted and keep theirs); a union or merge has the union of its children's
-/// boxes; an intersection or difference has the overlap of the boxes of its children that are
-/// not inverted (so a difference is bounded by its first child). Inverting a CSG object later does not change its box, so an
-/// inverted CSG object is cut off at the box of the object it came from: rays that miss the
-/// box miss the object.
-fn pov_bounding_box(object: &Object, world_from_parent: &Transform) -> Option<Aabb> {
-    let world_from_local = object.transform.then(world_from_parent);
-    let bounds = match &object.shape {
+/// The rules, inferred from POV-Ray's output: a shape's box is its own box mapped through the
+/// shape's transform ([`LocalShape::pov_bounds`]), infinite once the shape is inverted
+/// (triangles cannot be inverted and keep theirs); a union or merge has the union of its
+/// children's boxes; an intersection or difference has the overlap of the boxes of its children
+/// that are not inverted (so a difference is bounded by its first child); a CSG object's box is
+/// then mapped through its own transform as a box (all eight corners). Inverting a CSG object
+/// later does not change its box, so an inverted CSG object is cut off at the box of the object
+/// it came from: rays that miss the box miss the object.
+fn pov_bounding_box(object: &Object) -> Option<Aabb> {
+    let parent_from_local = &object.transform.outer_from_inner;
+    let local = match &object.shape {
         Shape::Csg {
             operation: CsgOperation::Union | CsgOperation::Merge,
             children,
         } => children.iter().try_fold(Aabb::EMPTY, |all, child| {
-            pov_bounding_box(child, &world_from_local).map(|b| all.union(&b))
+            pov_bounding_box(child).map(|b| all.union(&b))
         })?,
         Shape::Csg {
             operation,
@@ -180,22 +189,19 @@ fn pov_bounding_box(object: &Object, world_from_parent: &Transform) -> Option<Aa
                 if (child.inverse || subtracted) && invertible(&child.shape) {
                     continue;
                 }
-                if let Some(bounds) = pov_bounding_box(child, &world_from_local) {
+                if let Some(bounds) = pov_bounding_box(child) {
                     common = Some(common.map_or(bounds, |common| common.intersection(&bounds)));
                 }
             }
             common?
         }
         shape if object.inverse && invertible(shape) => return None,
-        shape => LocalShape::from_scene(shape)
-            .bounds()?
-            .transformed(&world_from_local.outer_from_inner),
+        shape => return LocalShape::from_scene(shape).pov_bounds(parent_from_local),
     };
-    Some(if bounds.is_empty() {
-        Aabb::EMPTY
-    } else {
-        bounds
-    })
+    if local.is_empty() {
+        return Some(Aabb::EMPTY);
+    }
+    Some(local.transformed(parent_from_local))
 }
 
 /// False for shapes POV-Ray cannot invert (triangles): `inverse` leaves them unchanged.
@@ -270,12 +276,14 @@ impl Builder {
     /// Adds a top-level object (or a child of a flattened top-level union).
     ///
     /// A union that is not inverted is split into its children (like POV-Ray's
-    /// `split_union`); everything else that is CSG becomes one tree.
+    /// `split_union`); everything else that is CSG becomes one tree. `enclosing_unions` holds
+    /// the transforms of the split unions around the object, outermost first.
     fn add_top_level(
         &mut self,
         object: &Object,
         world_from_parent: &Transform,
         inherited: &Appearance,
+        enclosing_unions: &mut Vec<DAffine3>,
         out: &mut Vec<(Primitive, Option<Aabb>)>,
     ) {
         let world_from_local = object.transform.then(world_from_parent);
@@ -285,9 +293,17 @@ impl Builder {
                 children,
             } if !object.inverse => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
+                enclosing_unions.push(object.transform.outer_from_inner);
                 for child in children {
-                    self.add_top_level(child, &world_from_local, &appearance, out);
+                    self.add_top_level(
+                        child,
+                        &world_from_local,
+                        &appearance,
+                        enclosing_unions,
+                        out,
+                    );
                 }
+                enclosing_unions.pop();
             }
             Shape::Csg { .. } => {
                 let mut leaves = Vec::new();
@@ -297,7 +313,15 @@ impl Builder {
                 };
                 let root =
                     self.csg_node(object, world_from_parent, inherited, inversion, &mut leaves);
-                let clip = pov_bounding_box(object, world_from_parent).filter(Aabb::is_finite);
+                // Each enclosing union maps the box on, innermost first, as POV-Ray does.
+                let clip = pov_bounding_box(object)
+                    .map(|bounds| {
+                        enclosing_unions
+                            .iter()
+                            .rev()
+                            .fold(bounds, |bounds, map| bounds.transformed(map))
+                    })
+                    .filter(Aabb::is_finite);
                 let surface = match (root.bounds().surface, clip.and_then(|b| padded(Some(b)))) {
                     (Some(surface), Some(clip)) => Some(surface.intersection(&clip)),
                     (surface, clip) => surface.or(clip),

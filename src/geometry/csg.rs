@@ -6,10 +6,12 @@
 //! the leaf it lies on, and inside tests for whole subtrees.
 //! Holds: a node's hits are its children's hits filtered by the inside tests of the siblings
 //! (intersection keeps hits inside all siblings, merge drops hits inside any sibling, union
-//! keeps all). Hits are gathered into one per-thread scratch vector, so no ray allocates once
-//! the vector has grown.
+//! keeps all); among hits at the same distance the later child's wins. An object may carry
+//! POV-Ray's bounding box as a clip: rays missing it miss the object. Hits are gathered into
+//! one per-thread scratch vector, so no ray allocates once the vector has grown.
 
 use super::leaf::Leaf;
+use super::roots::Roots;
 use super::Ray;
 use crate::accel::Aabb;
 use glam::DVec3;
@@ -225,7 +227,7 @@ impl CsgTree {
         match node {
             CsgNode::Leaf { index, .. } => {
                 let leaf = &self.leaves[*index as usize];
-                let mut roots = super::roots::Roots::new();
+                let mut roots = Roots::new();
                 leaf.intersect(query.ray, &mut roots);
                 for (distance, part) in roots.iter() {
                     if distance > query.min_distance && distance < query.max_distance {

@@ -112,6 +112,12 @@ impl Disc {
         self.normal
     }
 
+    /// Corners of POV-Ray's bounding box of the disc: the square of half-width `radius` in the
+    /// disc's plane, oriented like [`pov_frame`].
+    pub fn pov_box_corners(&self) -> [DVec3; 8] {
+        pov_box_corners(self.centre, self.normal, self.radius_squared.sqrt(), 0.0)
+    }
+
     /// Bounding box of the ring.
     pub fn bounds(&self) -> Aabb {
         let reach = disc_reach(self.normal, self.radius_squared.sqrt());
@@ -127,6 +133,40 @@ pub fn disc_reach(normal: DVec3, radius: f64) -> DVec3 {
         across.y.max(0.0).sqrt(),
         across.z.max(0.0).sqrt(),
     ) * radius
+}
+
+/// Two unit vectors across the unit `axis`: the images of x and y under the smallest rotation
+/// taking the z axis to `axis`, which is how POV-Ray orients the boxes around discs, cylinders
+/// and cones.
+pub fn pov_frame(axis: DVec3) -> (DVec3, DVec3) {
+    if 1.0 + axis.z <= 1e-12 {
+        return (DVec3::X, -DVec3::Y);
+    }
+    let k = 1.0 / (1.0 + axis.z);
+    (
+        DVec3::new(1.0 - axis.x * axis.x * k, -axis.x * axis.y * k, -axis.x),
+        DVec3::new(-axis.x * axis.y * k, 1.0 - axis.y * axis.y * k, -axis.y),
+    )
+}
+
+/// Corners of the box reaching `half_width` across the unit `axis` (oriented by
+/// [`pov_frame`]) and from `start` to `start + length * axis` along it.
+pub fn pov_box_corners(start: DVec3, axis: DVec3, half_width: f64, length: f64) -> [DVec3; 8] {
+    let (across, across_too) = pov_frame(axis);
+    std::array::from_fn(|index| {
+        let a = if index & 1 == 0 {
+            -half_width
+        } else {
+            half_width
+        };
+        let b = if index & 2 == 0 {
+            -half_width
+        } else {
+            half_width
+        };
+        let c = if index & 4 == 0 { 0.0 } else { length };
+        start + across * a + across_too * b + axis * c
+    })
 }
 
 /// A triangle, stored as one corner and the two edges leaving it.

@@ -1,6 +1,6 @@
 //! Leaf primitives: one shape placed in the world with its material.
 //!
-//! In: a [`scene::Shape`] (not CSG), the object's world-from-local transform, a material index
+//! In: a [`Shape`] (not CSG), the object's world-from-local transform, a material index
 //! and the inverse flag. Out: a compact [`Leaf`] answering ray intersections, inside tests and
 //! world-space outward normals, plus its world bounds.
 //! Holds: transforms that a shape can absorb (any affine map for planes and triangles, a
@@ -150,6 +150,22 @@ impl LocalShape {
             LocalShape::Torus(shape) => Some(shape.bounds()),
             LocalShape::Disc(shape) => Some(shape.bounds()),
             LocalShape::Triangle(shape) => Some(shape.bounds()),
+        }
+    }
+
+    /// POV-Ray's bounding box of the shape once mapped by `world_from_local`; `None` when
+    /// unbounded. POV-Ray bounds discs, cylinders and cones with boxes oriented along their
+    /// axis, and a triangle by its mapped corners; the difference shows where such a box cuts
+    /// off an inverted CSG object or a disc's half-space.
+    pub fn pov_bounds(&self, world_from_local: &DAffine3) -> Option<Aabb> {
+        let map = |corner: DVec3| world_from_local.transform_point3(corner);
+        match self {
+            LocalShape::Disc(disc) => Some(Aabb::from_points(disc.pov_box_corners().map(map))),
+            LocalShape::Cone(cone) => Some(Aabb::from_points(cone.pov_box_corners().map(map))),
+            LocalShape::Triangle(triangle) => Some(Aabb::from_points(triangle.corners().map(map))),
+            _ => self
+                .bounds()
+                .map(|bounds| bounds.transformed(world_from_local)),
         }
     }
 

@@ -5,7 +5,7 @@
 //! normals, bounds. Holds: constructors return `None` for degenerate input (zero or non-finite
 //! radius, zero-length axis), which the caller turns into an empty shape.
 
-use super::flat::disc_reach;
+use super::flat::{disc_reach, pov_box_corners};
 use super::roots::{solve_quadratic, Roots};
 use crate::accel::Aabb;
 use glam::{DMat3, DVec3};
@@ -251,6 +251,18 @@ impl Cone {
                 }
             }
         }
+    }
+
+    /// Corners of POV-Ray's bounding box: the larger radius across the axis, oriented like
+    /// [`pov_frame`](super::flat::pov_frame), from base to cap along it.
+    pub fn pov_box_corners(&self) -> [DVec3; 8] {
+        let half_width = self.base_radius.max(self.end_radius);
+        pov_box_corners(
+            self.frame.origin,
+            self.frame.along(),
+            half_width,
+            self.frame.length,
+        )
     }
 
     /// Bounding box of the two end discs.

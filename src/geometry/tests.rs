@@ -472,3 +472,21 @@ fn degenerate_scenes_never_panic() {
     assert!(empty.first_hit(&along_x(), 0.0, f64::INFINITY).is_none());
     assert_eq!(empty.object_count(), 0);
 }
+
+#[test]
+fn world_can_be_shared_between_threads() {
+    fn shareable<T: Send + Sync>() {}
+    shareable::<World>();
+    let world = World::build(&scene_of(vec![csg(
+        CsgOperation::Intersection,
+        vec![sphere_a(), sphere_b()],
+    )]));
+    std::thread::scope(|scope| {
+        for _ in 0..4 {
+            scope.spawn(|| {
+                let hit = world.first_hit(&along_x(), 0.0, f64::INFINITY).unwrap();
+                assert_eq!(hit.distance, 4.5);
+            });
+        }
+    });
+}
