@@ -399,7 +399,7 @@ impl Evaluator {
         };
         match value {
             Value::Object(object) => {
-                let mut object = Rc::unwrap_or_clone(object);
+                let mut object = Arc::unwrap_or_clone(object);
                 if object.texture.is_none() && self.default_texture_set {
                     object.texture = Some(Arc::new(self.default_texture.clone()));
                 }

@@ -24,7 +24,7 @@ impl Evaluator {
             "object" => {
                 let (value, span) = self.expect_value(stream, "an object")?;
                 match value {
-                    Value::Object(o) => Rc::unwrap_or_clone(o),
+                    Value::Object(o) => Arc::unwrap_or_clone(o),
                     Value::Nothing => return Ok(None),
                     other => {
                         return Err(self
@@ -71,7 +71,7 @@ impl Evaluator {
                     };
                     if let Some(child) = child {
                         if let Shape::Csg { children, .. } = &mut object.shape {
-                            children.push(Rc::unwrap_or_clone(child));
+                            children.push(Arc::unwrap_or_clone(child));
                         }
                     }
                 }

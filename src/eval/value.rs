@@ -20,8 +20,8 @@ pub enum Value {
     String(Rc<str>),
     /// An array (copied on write).
     Array(Rc<Array>),
-    /// An object (shape or CSG).
-    Object(Rc<Object>),
+    /// An object (shape or CSG), shared so instances need not copy it.
+    Object(Arc<Object>),
     /// A texture.
     Texture(Arc<Texture>),
     /// A pigment.

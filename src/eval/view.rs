@@ -132,7 +132,7 @@ impl Evaluator {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "object" | "union" | "intersection" | "difference" | "merge" => {
                 Ok(match self.eval_object(head, block, stream)? {
-                    Some(object) => Value::Object(Rc::new(object)),
+                    Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,
                 })
             }
