@@ -2,6 +2,7 @@
 
 mod cli;
 mod diagnostics;
+mod includes;
 mod language;
 mod reference_images;
 mod robustness;
@@ -15,10 +16,15 @@ pub fn tests_folder() -> PathBuf {
 
 /// Evaluates a scene file on a thread with a large stack, as the CLI does.
 pub fn evaluate(path: &Path) -> durer::eval::Evaluated {
+    evaluate_with(path, durer::eval::EvalOptions::default())
+}
+
+/// Evaluates a scene file with the given options on a thread with a large stack.
+pub fn evaluate_with(path: &Path, options: durer::eval::EvalOptions) -> durer::eval::Evaluated {
     let path = path.to_path_buf();
     std::thread::Builder::new()
         .stack_size(1 << 30)
-        .spawn(move || durer::eval::evaluate_file(&path, &durer::eval::EvalOptions::default()))
+        .spawn(move || durer::eval::evaluate_file(&path, &options))
         .expect("spawn evaluator")
         .join()
         .expect("evaluator thread")
