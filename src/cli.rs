@@ -83,6 +83,7 @@ fn eval_options(args: &SceneArgs, output: Option<&Path>) -> EvalOptions {
         image_height: args.height,
         clock: 0.0,
         output_folder: output.and_then(Path::parent).map(Path::to_path_buf),
+        search_installed_povray: true,
     }
 }
 

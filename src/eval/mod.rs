@@ -49,6 +49,8 @@ pub struct EvalOptions {
     pub clock: f64,
     /// Folder of the output image: scenes may read and write data files there.
     pub output_folder: Option<PathBuf>,
+    /// Search POV-Ray's installed include folder (before durer's own standard library).
+    pub search_installed_povray: bool,
 }
 
 impl Default for EvalOptions {
@@ -59,6 +61,7 @@ impl Default for EvalOptions {
             image_height: 240,
             clock: 0.0,
             output_folder: None,
+            search_installed_povray: true,
         }
     }
 }
@@ -95,6 +98,13 @@ pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
         sources: evaluator.sources,
     }
 }
+
+/// durer's own small standard library, used when an include file is found nowhere else
+/// (for example on a machine without POV-Ray installed).
+const EMBEDDED_INCLUDES: &[(&str, &str)] = &[("colors.inc", include_str!("stdlib/colors.inc"))];
+
+/// Folder name under which embedded include files appear in diagnostics.
+const EMBEDDED_FOLDER: &str = "<durer standard library>";
 
 /// One symbol table: the global one, an include file's or a macro call's.
 pub(crate) type Scope = HashMap<Rc<str>, Value, BuildHasherDefault<NameHasher>>;
@@ -207,7 +217,16 @@ impl Evaluator {
         if let Some((_, items)) = self.parsed.get(&key) {
             return Ok(items.clone());
         }
-        let bytes = std::fs::read(path).map_err(|e| {
+        let embedded = path
+            .strip_prefix(EMBEDDED_FOLDER)
+            .ok()
+            .and_then(|name| EMBEDDED_INCLUDES.iter().find(|(n, _)| Path::new(n) == name))
+            .map(|(_, text)| text.as_bytes().to_vec());
+        let bytes = match embedded {
+            Some(bytes) => Ok(bytes),
+            None => std::fs::read(path),
+        };
+        let bytes = bytes.map_err(|e| {
             let span = from.unwrap_or_default();
             let mut d = self.error(span, format!("cannot read `{}`: {e}", path.display()));
             if from.is_none() {
@@ -245,17 +264,22 @@ impl Evaluator {
         if let Some(paths) = std::env::var_os("DURER_INCLUDE_PATH") {
             folders.extend(std::env::split_paths(&paths));
         }
-        for installed in [
-            "/usr/share/povray-3.7/include",
-            "/usr/local/share/povray-3.7/include",
-        ] {
-            folders.push(PathBuf::from(installed));
+        if self.options.search_installed_povray {
+            for installed in [
+                "/usr/share/povray-3.7/include",
+                "/usr/local/share/povray-3.7/include",
+            ] {
+                folders.push(PathBuf::from(installed));
+            }
         }
         for folder in &folders {
             let candidate = folder.join(name);
             if candidate.is_file() {
                 return Ok(candidate);
             }
+        }
+        if EMBEDDED_INCLUDES.iter().any(|(n, _)| *n == name) {
+            return Ok(Path::new(EMBEDDED_FOLDER).join(name));
         }
         Err(folders)
     }

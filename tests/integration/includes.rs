@@ -65,3 +65,71 @@ fn every_standard_include_file_loads() {
         failures.join("\n")
     );
 }
+
+/// Names declared by durer's embedded colors.inc.
+fn embedded_colour_names() -> Vec<String> {
+    let text = include_str!("../../src/eval/stdlib/colors.inc");
+    text.lines()
+        .filter_map(|l| l.strip_prefix("#declare "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|n| *n != "Colors_Inc_Temp")
+        .map(str::to_string)
+        .collect()
+}
+
+/// Evaluates a scene that includes colors.inc and writes every colour's components to a file.
+fn dump_colours(dir: &std::path::Path, installed: bool) -> String {
+    let mut scene = String::from("#include \"colors.inc\"\n#fopen Out \"colours.txt\" write\n");
+    for name in embedded_colour_names() {
+        scene.push_str(&format!(
+            "#write (Out, \"{name} \", {name}.red, \" \", {name}.green, \" \", {name}.blue, \" \", {name}.filter, \" \", {name}.transmit, \"\\n\")\n"
+        ));
+    }
+    scene.push_str("#fclose Out\n");
+    let path = dir.join("colours.pov");
+    std::fs::write(&path, scene).expect("write scene");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: installed,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(&path, options);
+    let errors: Vec<String> = evaluated
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Error)
+        .map(|d| durer::report::render_plain(d, &evaluated.sources))
+        .collect();
+    assert!(errors.is_empty(), "{}", errors.join("\n"));
+    std::fs::read_to_string(dir.join("colours.txt")).expect("colours written")
+}
+
+#[test]
+fn embedded_colours_work_without_povray() {
+    let dir = scratch("embedded-colours");
+    let dump = dump_colours(&dir, false);
+    assert!(dump.lines().count() >= 100, "expected the colour table");
+    assert!(dump.contains("Red 1 0 0 0 0"), "{dump}");
+    assert!(dump.contains("Clear 1 1 1 1 0"), "{dump}");
+}
+
+#[test]
+fn embedded_colours_have_povray_values() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    let ours = dump_colours(&scratch("colours-ours"), false);
+    let theirs = dump_colours(&scratch("colours-theirs"), true);
+    for (a, b) in ours.lines().zip(theirs.lines()) {
+        let parse = |l: &str| -> Vec<f64> {
+            l.split_whitespace()
+                .skip(1)
+                .map(|v| v.parse().unwrap())
+                .collect()
+        };
+        let (x, y) = (parse(a), parse(b));
+        let same = x.iter().zip(&y).all(|(p, q)| (p - q).abs() < 1e-6);
+        assert!(same, "embedded `{a}` differs from POV-Ray's `{b}`");
+    }
+    assert_eq!(ours.lines().count(), theirs.lines().count());
+}
