@@ -541,7 +541,7 @@ fn builtin_constant(name: &str, evaluator: &Evaluator) -> Option<Value> {
         "image_width" => Value::Float(f64::from(evaluator.options.image_width)),
         "image_height" => Value::Float(f64::from(evaluator.options.image_height)),
         "version" => Value::Float(evaluator.version),
-        "input_file_name" => Value::String(Rc::from("")),
+        "input_file_name" => Value::String(Rc::from(evaluator.input_file_name.as_str())),
         _ => return None,
     })
 }

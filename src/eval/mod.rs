@@ -139,6 +139,8 @@ pub(crate) struct Evaluator {
     pub(crate) scopes: Vec<Scope>,
     parsed: HashMap<PathBuf, (FileId, Rc<[Item]>)>,
     pub(crate) scene_folder: PathBuf,
+    /// The scene file's name, for `input_file_name`.
+    pub(crate) input_file_name: String,
     pub(crate) trace: Vec<TraceEntry>,
     pub(crate) warnings: Vec<Diagnostic>,
     pub(crate) nesting: usize,
@@ -166,6 +168,7 @@ impl Evaluator {
             scopes: vec![Scope::default()],
             parsed: HashMap::new(),
             scene_folder: PathBuf::from("."),
+            input_file_name: String::new(),
             trace: Vec::new(),
             warnings: Vec::new(),
             nesting: 0,
@@ -203,6 +206,10 @@ impl Evaluator {
 
     fn run_main(&mut self, path: &Path) -> EvalResult<()> {
         self.scene_folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        self.input_file_name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
         let items = self.load_file(path, None)?;
         let mut stream = Stream::new(items);
         while let Some(item) = self.next_item(&mut stream)? {

@@ -89,3 +89,4 @@ Check(("abc" < "abd") & ("b" = "b"), "string comparison")
 #declare Picked = Pick(Thing -y);
 Check(Picked.y = -1, "an object followed by -y is two arguments")
 Check(Pick(1, 2 -1) = 1, "numbers still subtract")
+Check(strcmp(input_file_name, "directives.pov") = 0, "input_file_name is the scene's file name")
