@@ -10,6 +10,9 @@ use std::rc::Rc;
 /// Names of every built-in function, for suggestions.
 pub(crate) const FUNCTIONS: &[&str] = &[
     "abs",
+    "max_extent",
+    "min_extent",
+    "trace",
     "rand",
     "seed",
     "acos",
@@ -135,6 +138,40 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
                 .with_label("called here")
                 .with_help("functions.inc defines its f_* functions with these; they arrive with isosurfaces")
                 .into());
+        }
+        "min_extent" | "max_extent" => {
+            arity(ev, 1)?;
+            let world = object_world(ev, call, 0)?;
+            // POV-Ray reports unbounded objects as reaching 1e10 in every direction.
+            let corner = match (world.bounds(), name) {
+                (Some(bounds), "min_extent") => bounds.min,
+                (Some(bounds), _) => bounds.max,
+                (None, "min_extent") => DVec3::splat(-UNBOUNDED_EXTENT),
+                (None, _) => DVec3::splat(UNBOUNDED_EXTENT),
+            };
+            v3(corner)
+        }
+        "trace" => {
+            if !(3..=4).contains(&call.arguments.len()) {
+                return Err(ev.error(call.span, "`trace` takes 3 or 4 arguments").into());
+            }
+            let world = object_world(ev, call, 0)?;
+            let origin = vector(ev, 1)?;
+            let direction = vector(ev, 2)?.normalize_or_zero();
+            let ray = crate::geometry::Ray::new(origin, direction);
+            // A miss gives <0, 0, 0> and a zero normal, as in POV-Ray.
+            let (point, normal) = match world.first_hit(&ray, 0.0, f64::INFINITY) {
+                Some(hit) if direction != DVec3::ZERO => (hit.point, hit.normal),
+                _ => (DVec3::ZERO, DVec3::ZERO),
+            };
+            if let Some(crate::syntax::ast::Argument::Expr(crate::syntax::ast::Expr::Ident(
+                variable,
+                _,
+            ))) = call.arguments.get(3)
+            {
+                ev.assign_declare_name(variable, v3(normal));
+            }
+            v3(point)
         }
         "seed" => {
             arity(ev, 1)?;
@@ -407,6 +444,35 @@ fn array_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<R
             .error(
                 call.arguments[index].span(),
                 format!("expected an array, found {}", other.type_name()),
+            )
+            .into()),
+    }
+}
+
+/// Extent reported for objects without finite bounds.
+const UNBOUNDED_EXTENT: f64 = 1e10;
+
+/// The geometry of an object argument, prepared for bounds and ray queries.
+fn object_world(
+    ev: &mut Evaluator,
+    call: &Call,
+    index: usize,
+) -> EvalResult<crate::geometry::World> {
+    match ev.argument(call, index)? {
+        Value::Object(object) => {
+            let scene = crate::scene::Scene {
+                camera: Default::default(),
+                lights: Vec::new(),
+                objects: vec![(*object).clone()],
+                background: crate::scene::Colour::BLACK,
+                settings: Default::default(),
+            };
+            Ok(crate::geometry::World::build(&scene))
+        }
+        other => Err(ev
+            .error(
+                call.arguments[index].span(),
+                format!("expected an object, found {}", other.type_name()),
             )
             .into()),
     }

@@ -250,6 +250,12 @@ impl Evaluator {
         .into()
     }
 
+    /// `#declare`-style assignment of a plain name (the innermost existing version, else global).
+    pub(crate) fn assign_declare_name(&mut self, name: &Rc<str>, value: Value) {
+        let (scope, name) = self.declare_slot(name);
+        self.scopes[scope].insert(name, value);
+    }
+
     /// `#local`-style assignment of a plain name in the innermost scope.
     pub(crate) fn assign_local(&mut self, name: &Rc<str>, value: Value) {
         if let Some(scope) = self.scopes.last_mut() {

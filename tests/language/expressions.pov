@@ -54,3 +54,16 @@ Check(Dist(3, 4, 0) = 5, "function with the default x, y, z parameters")
 Check(Both(1, 2) = 5, "functions call functions")
 #declare Step = function(A) { select(A, 0, 1) }
 Check(Step(-2) = 0 & Step(2) = 1, "select inside a function")
+// Geometry queries (values printed by povray 3.7 for the same objects).
+#declare Ball = sphere { <1, 2, 3>, 1 scale 2 }
+#declare Low = min_extent(Ball);
+#declare High = max_extent(Ball);
+Check(vlength(Low - <0, 2, 4>) < 1e-6 & vlength(High - <4, 6, 8>) < 1e-6, "min_extent and max_extent (bounds are padded by a tiny epsilon)")
+#declare Turned = box { 0, 1 rotate 45*y }
+Check(abs(max_extent(Turned).x - sqrt(2)) < 1e-6 & abs(max_extent(Turned).z - sqrt(0.5)) < 1e-6, "extent of a rotated box")
+Check(max_extent(plane { y, 0 }).x = 1e10, "unbounded objects reach 1e10")
+#declare Normal = <9, 9, 9>;
+#declare Hit = trace(Ball, <2, 4, -10>, z, Normal);
+Check(vlength(Hit - <2, 4, 4>) < 1e-9 & vlength(Normal - <0, 0, -1>) < 1e-9, "trace returns the hit and its normal")
+#declare Miss = trace(Ball, <20, 4, -10>, z, Normal);
+Check(vlength(Miss) = 0 & vlength(Normal) = 0, "a missed trace gives zero vectors")
