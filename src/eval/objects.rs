@@ -87,8 +87,12 @@ impl Evaluator {
 
     /// Reads a shape's required parameters.
     fn eval_shape(&mut self, head: &str, block: &Block, stream: &mut Stream) -> EvalResult<Shape> {
-        let _ = block;
         Ok(match head {
+            "smooth_triangle" => self.eval_smooth_triangle(stream)?,
+            "polygon" => self.eval_polygon(block.head_span, stream)?,
+            "mesh" => self.eval_mesh(stream)?,
+            "mesh2" => self.eval_mesh2(block.head_span, stream)?,
+            "poly" | "cubic" | "quartic" => self.eval_poly(head, block.head_span, stream)?,
             "sphere" => {
                 let centre = self.expect_vector(stream, "the centre")?;
                 let radius = self.expect_float(stream, "the radius")?;
@@ -192,6 +196,19 @@ impl Evaluator {
                     _ => return Err(self.unexpected_in(&item, head)),
                 },
                 "sturm" => {
+                    let sturm = self.optional_bool(stream)?;
+                    if let Shape::Poly(poly) = &mut object.shape {
+                        Arc::make_mut(poly).sturm = sturm;
+                    }
+                }
+                "inside_vector" => {
+                    let vector = self.expect_vector(stream, "the inside vector")?;
+                    match &mut object.shape {
+                        Shape::Mesh(mesh) => Arc::make_mut(mesh).inside_vector = Some(vector),
+                        _ => return Err(self.unexpected_in(&item, head)),
+                    }
+                }
+                "hierarchy" => {
                     let _ = self.optional_bool(stream)?;
                 }
                 "double_illuminate" | "no_image" | "no_reflection" | "no_radiosity" => {

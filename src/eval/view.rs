@@ -39,6 +39,13 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "transform",
     "triangle",
     "union",
+    "smooth_triangle",
+    "polygon",
+    "mesh",
+    "mesh2",
+    "poly",
+    "cubic",
+    "quartic",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -65,23 +72,16 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "julia_fractal",
     "lathe",
     "media",
-    "mesh",
-    "mesh2",
     "parametric",
     "photons",
-    "poly",
-    "polygon",
     "prism",
     "rainbow",
     "sky_sphere",
-    "smooth_triangle",
     "sor",
     "sphere_sweep",
     "spline",
     "superellipsoid",
     "text",
-    "cubic",
-    "quartic",
     "ovus",
     "lemon",
     "density",
@@ -130,7 +130,8 @@ impl Evaluator {
         let stream = &mut stream;
         match head {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
-            | "triangle" | "object" | "union" | "intersection" | "difference" | "merge" => {
+            | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
+            | "quartic" | "object" | "union" | "intersection" | "difference" | "merge" => {
                 Ok(match self.eval_object(head, block, stream)? {
                     Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,

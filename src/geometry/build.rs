@@ -196,7 +196,15 @@ fn pov_bounding_box(object: &Object) -> Option<Aabb> {
             common?
         }
         shape if object.inverse && invertible(shape) => return None,
-        shape => return LocalShape::from_scene(shape).pov_bounds(parent_from_local),
+        shape => {
+            return LocalShape::pieces(shape)
+                .iter()
+                .try_fold(Aabb::EMPTY, |all, piece| {
+                    piece
+                        .pov_bounds(parent_from_local)
+                        .map(|bounds| all.union(&bounds))
+                })
+        }
     };
     if local.is_empty() {
         return Some(Aabb::EMPTY);
@@ -204,9 +212,13 @@ fn pov_bounding_box(object: &Object) -> Option<Aabb> {
     Some(local.transformed(parent_from_local))
 }
 
-/// False for shapes POV-Ray cannot invert (triangles): `inverse` leaves them unchanged.
+/// False for shapes POV-Ray cannot invert (triangles, polygons, meshes without an inside):
+/// `inverse` leaves them unchanged.
 fn invertible(shape: &Shape) -> bool {
-    !matches!(shape, Shape::Triangle { .. })
+    !matches!(
+        shape,
+        Shape::Triangle { .. } | Shape::SmoothTriangle { .. } | Shape::Polygon(_) | Shape::Mesh(_)
+    )
 }
 
 /// Pads bounds so box tests are conservative; non-finite bounds become unbounded.
@@ -335,13 +347,16 @@ impl Builder {
             shape => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 let material = self.material(&appearance);
-                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, object.inverse);
-                let surface = padded(bounds.surface);
-                if leaf.is_empty() || surface.is_some_and(|bounds| bounds.is_empty()) {
-                    return;
+                for piece in LocalShape::pieces(shape) {
+                    let (leaf, bounds) =
+                        Leaf::from_local(piece, &world_from_local, material, object.inverse);
+                    let surface = padded(bounds.surface);
+                    if leaf.is_empty() || surface.is_some_and(|bounds| bounds.is_empty()) {
+                        continue;
+                    }
+                    self.leaf_count += 1;
+                    out.push((Primitive::Leaf(leaf), surface));
                 }
-                self.leaf_count += 1;
-                out.push((Primitive::Leaf(leaf), surface));
             }
         }
     }
@@ -401,15 +416,28 @@ impl Builder {
             }
             shape => {
                 let material = self.material(&appearance);
-                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inversion.odd);
-                let index = leaves.len() as u32;
-                leaves.push(leaf);
-                self.leaf_count += 1;
-                let bounds = NodeBounds {
-                    surface: padded(bounds.surface),
-                    inside: padded(bounds.inside),
-                };
-                CsgNode::Leaf { index, bounds }
+                let mut nodes: Vec<CsgNode> = LocalShape::pieces(shape)
+                    .into_iter()
+                    .map(|piece| {
+                        let (leaf, bounds) =
+                            Leaf::from_local(piece, &world_from_local, material, inversion.odd);
+                        let index = leaves.len() as u32;
+                        leaves.push(leaf);
+                        self.leaf_count += 1;
+                        let bounds = NodeBounds {
+                            surface: padded(bounds.surface),
+                            inside: padded(bounds.inside),
+                        };
+                        CsgNode::Leaf { index, bounds }
+                    })
+                    .collect();
+                if nodes.len() == 1 {
+                    nodes
+                        .pop()
+                        .unwrap_or_else(|| CsgNode::combine(Combination::Union, Vec::new()))
+                } else {
+                    CsgNode::combine(Combination::Union, nodes)
+                }
             }
         }
     }

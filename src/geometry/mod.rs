@@ -12,6 +12,8 @@ mod build;
 mod csg;
 mod flat;
 mod leaf;
+mod poly;
+mod polygon;
 mod quadric;
 mod roots;
 mod round;

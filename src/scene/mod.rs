@@ -200,11 +200,60 @@ pub enum Shape {
     Quadric { coefficients: [f64; 10] },
     /// `triangle { a, b, c }`.
     Triangle { corners: [DVec3; 3] },
+    /// `smooth_triangle { a, na, b, nb, c, nc }`: corners with the normals to interpolate.
+    SmoothTriangle {
+        corners: [DVec3; 3],
+        normals: [DVec3; 3],
+    },
+    /// `polygon { n, p1, .. pn }`: closed outlines in one plane, filled by the even-odd rule.
+    Polygon(Arc<Polygon>),
+    /// `mesh { .. }` or `mesh2 { .. }`: a shared list of triangles.
+    Mesh(Arc<Mesh>),
+    /// `poly`, `cubic` or `quartic`: the zero set of a polynomial in x, y and z.
+    Poly(Arc<Poly>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,
         children: Vec<Object>,
     },
+}
+
+/// The outlines of a `polygon`, already closed.
+#[derive(Clone, Debug)]
+pub struct Polygon {
+    /// Each closed outline (sub-polygon), without repeating its first point at the end.
+    pub outlines: Vec<Vec<DVec3>>,
+}
+
+/// One triangle of a mesh.
+#[derive(Clone, Copy, Debug)]
+pub struct MeshTriangle {
+    /// The three corners.
+    pub corners: [DVec3; 3],
+    /// Normals at the corners for a smooth triangle; `None` for a flat one.
+    pub normals: Option<[DVec3; 3]>,
+}
+
+/// The triangles of a `mesh` or `mesh2`.
+#[derive(Clone, Debug)]
+pub struct Mesh {
+    /// All triangles, in the order written.
+    pub triangles: Vec<MeshTriangle>,
+    /// `inside_vector`: when given, the mesh is a solid (points are inside when a ray along
+    /// this vector crosses the surface an odd number of times).
+    pub inside_vector: Option<DVec3>,
+}
+
+/// A polynomial surface `poly { order, <coefficients> }`.
+#[derive(Clone, Debug)]
+pub struct Poly {
+    /// Total degree (2 to 7).
+    pub order: u32,
+    /// Coefficients of x^i y^j z^k in POV-Ray's order: i from `order` down to 0, then j from
+    /// `order - i` down to 0, then k from `order - i - j` down to 0.
+    pub coefficients: Vec<f64>,
+    /// `sturm` was asked for (durer's root finder is always exact, so this changes nothing).
+    pub sturm: bool,
 }
 
 /// The four CSG operations.

@@ -1,0 +1,31 @@
+// Syntax of polygon, smooth_triangle, mesh, mesh2, poly, cubic and quartic.
+#declare P = polygon { 5, <0,0>, <1,0>, <1,1>, <0,1>, <0,0> }
+#declare P3 = polygon { 4, <0,0,1>, <1,0,1>, <1,1,1>, <0,0,1> pigment { rgb 1 } }
+#declare S = smooth_triangle { <0,0,0>, <0,0,-1>, <1,0,0>, <0,0,-1>, <0,1,0>, <0,0,-1> }
+#declare M = mesh {
+  triangle { <0,0,0>, <1,0,0>, <0,1,0> }
+  smooth_triangle { <0,0,0>, z, <1,0,0>, z, <0,1,0>, z }
+  triangle { <0,0,0>, <1,0,0>, <0,0,1> uv_vectors <0,0>, <1,0>, <0,1> }
+  inside_vector y
+  pigment { rgb <1, 0, 0> }
+  translate x
+}
+#declare M2 = mesh2 {
+  vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }
+  normal_vectors { 2, -z, <0,0.1,-1> }
+  uv_vectors { 2, <0,0>, <1,1> }
+  face_indices { 2, <0,1,2>, <0,2,3> }
+  normal_indices { 2, <0,0,1>, <0,1,1> }
+  scale 2
+}
+#declare M3 = mesh2 {
+  vertex_vectors { 3, <0,0,0>, <1,0,0>, <1,1,0> }
+  face_indices { 1, <0,1,2> }
+}
+#declare Q = quartic {
+  < 1, 0, 0, 0, 2, 0, 0, 2, 0, -5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 2, 0, 4, 0, 0, 0, 0, 1, 0, -5, 0, 4 >
+  sturm
+}
+#declare C = cubic { < 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, -0.3 > }
+#declare Po = poly { 2, < 1, 0, 0, 0, 1, 0, 0, 1, 0, -1 > sturm off }
+union { object { P } object { S } object { M } object { M2 } object { M3 } object { Q } object { C } object { Po } object { P3 } }
