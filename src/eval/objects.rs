@@ -93,6 +93,7 @@ impl Evaluator {
             "mesh" => self.eval_mesh(stream)?,
             "mesh2" => self.eval_mesh2(block.head_span, stream)?,
             "poly" | "cubic" | "quartic" => self.eval_poly(head, block.head_span, stream)?,
+            "text" => self.eval_text(block.head_span, stream)?,
             "sphere" => {
                 let centre = self.expect_vector(stream, "the centre")?;
                 let radius = self.expect_float(stream, "the radius")?;

@@ -6,7 +6,10 @@
 //! Holds: bad counts and indices end in spanned diagnostics, never panics; features that durer
 //! leaves out (per-triangle textures, uv data) are warned about once and ignored.
 
+mod text;
+
 use super::stream::Stream;
+use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::scene::{Mesh, MeshTriangle, Poly, Polygon, Shape};
@@ -245,6 +248,65 @@ impl Evaluator {
         })))
     }
 
+    /// `text { ttf "font.ttf" "string" thickness, offset }`.
+    pub(crate) fn eval_text(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Shape> {
+        match self.next_item(stream)? {
+            Some(Item::Keyword(word, _)) if &*word == "ttf" => {}
+            Some(other) => {
+                return Err(self
+                    .error(other.span(), "expected `ttf` and a font file name")
+                    .with_label("durer reads TrueType fonts only")
+                    .into())
+            }
+            None => {
+                return Err(self
+                    .error(span, "expected `ttf` and a font file name")
+                    .into())
+            }
+        }
+        let (font, font_span) = self.expect_string(stream, "the font file name")?;
+        let (string, _) = self.expect_string(stream, "the text")?;
+        let thickness = self.expect_float(stream, "the thickness")?;
+        let offset = self.expect_vector(stream, "the offset")?;
+        let path = match self.find_include(&font) {
+            Ok(path) => path,
+            Err(_) => {
+                return Err(self
+                    .error(font_span, format!("font file `{font}` not found"))
+                    .with_label("looked next to the scene and on the include path")
+                    .into())
+            }
+        };
+        let bytes = text::font_bytes(&path).map_err(|error| {
+            self.error(
+                font_span,
+                format!("cannot read `{}`: {error}", path.display()),
+            )
+        })?;
+        let glyphs =
+            text::layout_text(&bytes, &string, thickness, offset.truncate()).ok_or_else(|| {
+                self.error(
+                    font_span,
+                    format!("`{}` is not a TrueType font", path.display()),
+                )
+            })?;
+        Ok(Shape::Text(Arc::new(glyphs)))
+    }
+
+    /// Reads a string value.
+    fn expect_string(&mut self, stream: &mut Stream, what: &str) -> EvalResult<(String, Span)> {
+        let (value, span) = self.expect_value(stream, what)?;
+        match value {
+            Value::String(s) => Ok((s.to_string(), span)),
+            other => Err(self
+                .error(
+                    span,
+                    format!("expected {what}, found {}", other.type_name()),
+                )
+                .into()),
+        }
+    }
+
     /// A non-negative whole number such as a list length.
     fn expect_count(&mut self, stream: &mut Stream, what: &str, span: Span) -> EvalResult<usize> {
         let count = self.expect_float(stream, what)?;
@@ -281,12 +343,12 @@ impl Evaluator {
             let item_span = item.span();
             let value = self.item_value(&item)?;
             match value {
-                super::value::Value::Vector(v) => {
+                Value::Vector(v) => {
                     let c = v.to_dvec3();
                     list.push(([c.x, c.y, c.z], item_span));
                 }
                 // Texture indices after a face: ignored with the texture list.
-                super::value::Value::Float(_) => {}
+                Value::Float(_) => {}
                 other => {
                     return Err(self
                         .error(

@@ -46,6 +46,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "poly",
     "cubic",
     "quartic",
+    "text",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -81,7 +82,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "sphere_sweep",
     "spline",
     "superellipsoid",
-    "text",
     "ovus",
     "lemon",
     "density",
@@ -131,7 +131,7 @@ impl Evaluator {
         match head {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
-            | "quartic" | "object" | "union" | "intersection" | "difference" | "merge" => {
+            | "quartic" | "text" | "object" | "union" | "intersection" | "difference" | "merge" => {
                 Ok(match self.eval_object(head, block, stream)? {
                     Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,

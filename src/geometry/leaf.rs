@@ -8,6 +8,7 @@
 //! at build time; otherwise the leaf keeps only the world-to-local map. A degenerate shape or
 //! a singular or non-finite transform gives an empty leaf that nothing hits.
 
+use super::extrusion::ExtrudedOutline;
 use super::flat::{Cuboid, Disc, Plane, Triangle};
 use super::poly::PolySurface;
 use super::polygon::{Polygon, SmoothTriangle};
@@ -47,6 +48,8 @@ pub enum LocalShape {
     Polygon(Box<Polygon>),
     /// A polynomial surface.
     Poly(Box<PolySurface>),
+    /// An extruded outline (a text glyph).
+    Extrusion(Box<ExtrudedOutline>),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -105,7 +108,7 @@ impl LocalShape {
             Shape::Poly(ref poly) => {
                 PolySurface::new(poly.order, &poly.coefficients).map(|p| Self::Poly(Box::new(p)))
             }
-            Shape::Mesh(_) | Shape::Csg { .. } => None,
+            Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
     }
@@ -128,6 +131,11 @@ impl LocalShape {
                 .iter()
                 .map(Self::from_mesh_triangle)
                 .filter(|piece| !matches!(piece, LocalShape::Empty))
+                .collect(),
+            Shape::Text(glyphs) => glyphs
+                .iter()
+                .filter_map(|glyph| ExtrudedOutline::new(&glyph.segments, glyph.depth))
+                .map(|glyph| Self::Extrusion(Box::new(glyph)))
                 .collect(),
             other => vec![Self::from_scene(other)],
         }
@@ -157,6 +165,7 @@ impl LocalShape {
             LocalShape::SmoothTriangle(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Polygon(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Poly(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Extrusion(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -174,6 +183,7 @@ impl LocalShape {
             LocalShape::Triangle(shape) => shape.inside(point),
             LocalShape::SmoothTriangle(_) | LocalShape::Polygon(_) => false,
             LocalShape::Poly(shape) => shape.inside(point),
+            LocalShape::Extrusion(shape) => shape.inside(point),
         }
     }
 
@@ -192,6 +202,7 @@ impl LocalShape {
             LocalShape::SmoothTriangle(shape) => shape.normal(point),
             LocalShape::Polygon(shape) => shape.normal(),
             LocalShape::Poly(shape) => shape.normal(point),
+            LocalShape::Extrusion(shape) => shape.normal(point, part),
         }
     }
 
@@ -208,6 +219,7 @@ impl LocalShape {
             LocalShape::Triangle(shape) => Some(shape.bounds()),
             LocalShape::SmoothTriangle(shape) => Some(shape.bounds()),
             LocalShape::Polygon(shape) => Some(shape.bounds()),
+            LocalShape::Extrusion(shape) => Some(shape.bounds()),
         }
     }
 

@@ -10,6 +10,7 @@
 
 mod build;
 mod csg;
+mod extrusion;
 mod flat;
 mod leaf;
 mod poly;

@@ -211,6 +211,8 @@ pub enum Shape {
     Mesh(Arc<Mesh>),
     /// `poly`, `cubic` or `quartic`: the zero set of a polynomial in x, y and z.
     Poly(Arc<Poly>),
+    /// `text { ttf .. }`: one extruded outline per glyph, already laid out.
+    Text(Arc<Vec<Extrusion>>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,
@@ -254,6 +256,17 @@ pub struct Poly {
     pub coefficients: Vec<f64>,
     /// `sturm` was asked for (durer's root finder is always exact, so this changes nothing).
     pub sturm: bool,
+}
+
+/// A region of the XY plane bounded by closed outlines of quadratic Bézier segments,
+/// extruded along Z. A point is in the region when a line from it crosses the outlines an
+/// odd number of times.
+#[derive(Clone, Debug)]
+pub struct Extrusion {
+    /// Segments as (start, control, end); a straight segment has its control at its middle.
+    pub segments: Vec<[glam::DVec2; 3]>,
+    /// The Z extent: from `depth.0` to `depth.1`.
+    pub depth: (f64, f64),
 }
 
 /// The four CSG operations.

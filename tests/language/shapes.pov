@@ -29,3 +29,7 @@
 #declare C = cubic { < 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, -0.3 > }
 #declare Po = poly { 2, < 1, 0, 0, 0, 1, 0, 0, 1, 0, -1 > sturm off }
 union { object { P } object { S } object { M } object { M2 } object { M3 } object { Q } object { C } object { Po } object { P3 } }
+#declare T1 = text { ttf "../reference/timrom.ttf" "Hello, World!" 0.2, 0 }
+#declare T2 = text { ttf "../reference/cyrvetic.ttf" concat("a", "b") 1, <0.1, 0.2> inverse }
+#declare T3 = text { ttf "../reference/timrom.ttf" "" 1, 0 }
+union { object { T1 } object { T2 } object { T3 } }

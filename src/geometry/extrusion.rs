@@ -1,0 +1,367 @@
+//! Extruded outlines: a region of the XY plane bounded by quadratic Bézier segments, swept
+//! along Z between two depths (text glyphs; later prisms).
+//!
+//! In: segments (start, control, end) forming closed outlines, and the Z extent. Out: every
+//! crossing of a line (caps and side walls), inside test (even-odd rule in XY, within the
+//! depth), outward normals, bounds.
+//! Holds: a side crossing carries its segment number in the part tag when it fits (else the
+//! segment is found again from the point); at most [`MAX_ROOTS`] crossings are reported per
+//! line, nearest ahead first when there are more; nothing allocates per ray.
+
+use super::roots::{solve_quadratic, Roots, MAX_ROOTS};
+use crate::accel::Aabb;
+use glam::{DVec2, DVec3};
+
+/// Part tag of the cap at the smaller depth.
+const FRONT_CAP: u8 = 0;
+/// Part tag of the cap at the larger depth.
+const BACK_CAP: u8 = 1;
+/// Part tag of side walls whose segment number does not fit in a tag.
+const UNKNOWN_SIDE: u8 = u8::MAX;
+/// Crossings collected per line before keeping the nearest.
+const CROSSING_BUFFER: usize = 64;
+
+/// One quadratic segment in power form: `a s² + b s + start` for s in [0, 1].
+#[derive(Clone, Copy, Debug)]
+struct Segment {
+    start: DVec2,
+    b: DVec2,
+    a: DVec2,
+}
+
+impl Segment {
+    fn from_points([start, control, end]: [DVec2; 3]) -> Segment {
+        Segment {
+            start,
+            b: 2.0 * (control - start),
+            a: start - 2.0 * control + end,
+        }
+    }
+
+    #[inline]
+    fn at(&self, s: f64) -> DVec2 {
+        (self.a * s + self.b) * s + self.start
+    }
+
+    #[inline]
+    fn tangent(&self, s: f64) -> DVec2 {
+        2.0 * self.a * s + self.b
+    }
+
+    /// Parameters in [0, 1) where `normal · (point - offset)` is zero.
+    #[inline]
+    fn crossings_with_line(&self, normal: DVec2, offset: f64) -> ([f64; 2], usize) {
+        let qa = normal.dot(self.a);
+        let qb = normal.dot(self.b);
+        let qc = normal.dot(self.start) - offset;
+        let mut found = [0.0; 2];
+        let mut count = 0;
+        let mut keep = |s: f64| {
+            if (0.0..1.0).contains(&s) {
+                found[count] = s;
+                count += 1;
+            }
+        };
+        if qa.abs() <= 1e-12 * (qb.abs() + qc.abs()) {
+            if qb != 0.0 {
+                keep(-qc / qb);
+            }
+        } else if let Some((first, second)) = solve_quadratic(qa, 0.5 * qb, qc) {
+            keep(first);
+            if second != first {
+                keep(second);
+            }
+        }
+        (found, count)
+    }
+}
+
+/// An extruded outline in its local space.
+#[derive(Clone, Debug)]
+pub struct ExtrudedOutline {
+    segments: Vec<Segment>,
+    near_depth: f64,
+    far_depth: f64,
+    /// 2-D bounds of the outline.
+    min: DVec2,
+    max: DVec2,
+}
+
+impl ExtrudedOutline {
+    /// An extrusion; `None` without segments, with non-finite values or zero depth.
+    pub fn new(segments: &[[DVec2; 3]], depth: (f64, f64)) -> Option<ExtrudedOutline> {
+        let (near_depth, far_depth) = (depth.0.min(depth.1), depth.0.max(depth.1));
+        let finite = segments.iter().flatten().all(|p| p.is_finite());
+        let thick = far_depth > near_depth && far_depth.is_finite() && near_depth.is_finite();
+        if segments.is_empty() || !finite || !thick {
+            return None;
+        }
+        let mut min = DVec2::splat(f64::INFINITY);
+        let mut max = DVec2::splat(f64::NEG_INFINITY);
+        for point in segments.iter().flatten() {
+            min = min.min(*point);
+            max = max.max(*point);
+        }
+        Some(ExtrudedOutline {
+            segments: segments.iter().copied().map(Segment::from_points).collect(),
+            near_depth,
+            far_depth,
+            min,
+            max,
+        })
+    }
+
+    /// True when the 2-D point is in the region (even-odd crossings of a line towards +x).
+    pub fn covers(&self, point: DVec2) -> bool {
+        if point.cmplt(self.min).any() || point.cmpgt(self.max).any() {
+            return false;
+        }
+        let mut inside = false;
+        for segment in &self.segments {
+            let (found, count) = segment.crossings_with_line(DVec2::Y, point.y);
+            for &s in &found[..count] {
+                if segment.at(s).x > point.x {
+                    inside = !inside;
+                }
+            }
+        }
+        inside
+    }
+
+    /// Pushes the crossings of the line `origin + t direction`.
+    pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
+        let mut crossings = [(0.0, 0u8); CROSSING_BUFFER];
+        let mut count = 0;
+        let mut record = |t: f64, part: u8| {
+            if t.is_finite() && count < CROSSING_BUFFER {
+                crossings[count] = (t, part);
+                count += 1;
+            }
+        };
+        if direction.z != 0.0 {
+            for (depth, part) in [(self.near_depth, FRONT_CAP), (self.far_depth, BACK_CAP)] {
+                let t = (depth - origin.z) / direction.z;
+                let point = origin.truncate() + direction.truncate() * t;
+                if self.covers(point) {
+                    record(t, part);
+                }
+            }
+        }
+        let flat_direction = direction.truncate();
+        let flat_speed = flat_direction.length_squared();
+        if flat_speed > 0.0 {
+            let flat_origin = origin.truncate();
+            let normal = flat_direction.perp();
+            let offset = normal.dot(flat_origin);
+            for (index, segment) in self.segments.iter().enumerate() {
+                let (found, found_count) = segment.crossings_with_line(normal, offset);
+                for &s in &found[..found_count] {
+                    let t = (segment.at(s) - flat_origin).dot(flat_direction) / flat_speed;
+                    let z = origin.z + direction.z * t;
+                    if z >= self.near_depth && z <= self.far_depth {
+                        let part = if index + 2 < UNKNOWN_SIDE as usize {
+                            index as u8 + 2
+                        } else {
+                            UNKNOWN_SIDE
+                        };
+                        record(t, part);
+                    }
+                }
+            }
+        }
+        let crossings = &mut crossings[..count];
+        if crossings.len() > MAX_ROOTS {
+            // Keep the nearest crossings ahead of the origin.
+            crossings.sort_by(|a, b| {
+                (a.0 < 0.0)
+                    .cmp(&(b.0 < 0.0))
+                    .then(a.0.abs().total_cmp(&b.0.abs()))
+            });
+        }
+        for &(t, part) in crossings.iter() {
+            roots.push(t, part);
+        }
+    }
+
+    /// True when `point` is within the depth and its XY position is in the region.
+    pub fn inside(&self, point: DVec3) -> bool {
+        point.z >= self.near_depth && point.z <= self.far_depth && self.covers(point.truncate())
+    }
+
+    /// Outward normal at the surface `point` of part `part`.
+    pub fn normal(&self, point: DVec3, part: u8) -> DVec3 {
+        match part {
+            FRONT_CAP => -DVec3::Z,
+            BACK_CAP => DVec3::Z,
+            _ => {
+                let flat = point.truncate();
+                let (segment, s) = if part == UNKNOWN_SIDE {
+                    self.closest_segment(flat)
+                } else {
+                    let segment = self
+                        .segments
+                        .get(usize::from(part - 2))
+                        .copied()
+                        .unwrap_or(self.segments[0]);
+                    (segment, closest_parameter(&segment, flat))
+                };
+                let tangent = segment.tangent(s);
+                let mut normal = DVec2::new(tangent.y, -tangent.x);
+                let length = normal.length();
+                if length == 0.0 || !length.is_finite() {
+                    return DVec3::X;
+                }
+                normal /= length;
+                let step = 1e-6 * (self.max - self.min).max_element().max(1e-9);
+                if self.covers(flat + normal * step) {
+                    normal = -normal;
+                }
+                normal.extend(0.0)
+            }
+        }
+    }
+
+    /// The segment passing closest to `point`, with the parameter of the closest point.
+    fn closest_segment(&self, point: DVec2) -> (Segment, f64) {
+        let mut best = (self.segments[0], 0.0, f64::INFINITY);
+        for segment in &self.segments {
+            let s = closest_parameter(segment, point);
+            let distance = segment.at(s).distance_squared(point);
+            if distance < best.2 {
+                best = (*segment, s, distance);
+            }
+        }
+        (best.0, best.1)
+    }
+
+    /// Bounds of the extruded outline.
+    pub fn bounds(&self) -> Aabb {
+        Aabb::from_points([
+            self.min.extend(self.near_depth),
+            self.max.extend(self.far_depth),
+        ])
+    }
+}
+
+/// The parameter in [0, 1] of the point of `segment` closest to `point` (samples, then
+/// Newton steps on the squared distance).
+fn closest_parameter(segment: &Segment, point: DVec2) -> f64 {
+    const SAMPLES: usize = 8;
+    let mut best = 0.0;
+    let mut best_distance = f64::INFINITY;
+    for index in 0..=SAMPLES {
+        let s = index as f64 / SAMPLES as f64;
+        let distance = segment.at(s).distance_squared(point);
+        if distance < best_distance {
+            best = s;
+            best_distance = distance;
+        }
+    }
+    let mut s = best;
+    for _ in 0..8 {
+        let offset = segment.at(s) - point;
+        let tangent = segment.tangent(s);
+        let slope = offset.dot(tangent);
+        let curvature = tangent.dot(tangent) + offset.dot(2.0 * segment.a);
+        if curvature <= 0.0 || !curvature.is_finite() {
+            break;
+        }
+        s = (s - slope / curvature).clamp(0.0, 1.0);
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(a: DVec2, b: DVec2) -> [DVec2; 3] {
+        [a, 0.5 * (a + b), b]
+    }
+
+    fn square_with_hole() -> ExtrudedOutline {
+        let square = |r: f64| {
+            let c = [
+                DVec2::new(-r, -r),
+                DVec2::new(r, -r),
+                DVec2::new(r, r),
+                DVec2::new(-r, r),
+            ];
+            (0..4).map(move |i| line(c[i], c[(i + 1) % 4]))
+        };
+        let segments: Vec<_> = square(2.0).chain(square(1.0)).collect();
+        ExtrudedOutline::new(&segments, (0.0, 1.0)).unwrap()
+    }
+
+    #[test]
+    fn square_frame_crossings_and_normals() {
+        let shape = square_with_hole();
+        let mut roots = Roots::new();
+        shape.intersect(DVec3::new(-5.0, 0.0, 0.5), DVec3::X, &mut roots);
+        let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
+        found.sort_by(f64::total_cmp);
+        assert_eq!(found, vec![3.0, 4.0, 6.0, 7.0]);
+        let (t, part) = roots.nearest_within(0.0, 10.0).unwrap();
+        assert_eq!(t, 3.0);
+        let normal = shape.normal(DVec3::new(-2.0, 0.0, 0.5), part);
+        assert!(normal.abs_diff_eq(-DVec3::X, 1e-9));
+        let (t, part) = roots.nearest_within(3.5, 10.0).unwrap();
+        let normal = shape.normal(DVec3::new(-5.0 + t, 0.0, 0.5), part);
+        assert!(normal.abs_diff_eq(DVec3::X, 1e-9), "{normal}");
+        assert!(shape.inside(DVec3::new(1.5, 0.0, 0.5)));
+        assert!(!shape.inside(DVec3::new(0.0, 0.0, 0.5)));
+        assert!(!shape.inside(DVec3::new(1.5, 0.0, 1.5)));
+        let mut roots = Roots::new();
+        shape.intersect(DVec3::new(1.5, 0.0, -3.0), DVec3::Z, &mut roots);
+        assert_eq!(roots.nearest_within(0.0, 10.0), Some((3.0, FRONT_CAP)));
+    }
+
+    #[test]
+    fn curved_outline_agrees_with_inside_test() {
+        // A closed shape of two arcs.
+        let segments = [
+            [
+                DVec2::new(-1.0, 0.0),
+                DVec2::new(0.0, 2.0),
+                DVec2::new(1.0, 0.0),
+            ],
+            [
+                DVec2::new(1.0, 0.0),
+                DVec2::new(0.0, -2.0),
+                DVec2::new(-1.0, 0.0),
+            ],
+        ];
+        let shape = ExtrudedOutline::new(&segments, (-0.5, 0.5)).unwrap();
+        let mut state = 99u64;
+        let mut random = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for _ in 0..500 {
+            let origin = DVec3::new(random(), random(), random()) * 3.0;
+            let direction = DVec3::new(random(), random(), random());
+            let mut roots = Roots::new();
+            shape.intersect(origin, direction, &mut roots);
+            let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
+            found.sort_by(f64::total_cmp);
+            for pair in found.windows(2) {
+                if pair[1] - pair[0] < 1e-6 {
+                    continue;
+                }
+                let middle = origin + direction * (0.5 * (pair[0] + pair[1]));
+                let before = origin + direction * (pair[0] - 1e-7);
+                assert_ne!(shape.inside(middle), shape.inside(before));
+            }
+        }
+    }
+
+    #[test]
+    fn degenerate_extrusions_are_rejected() {
+        let segment = [line(DVec2::ZERO, DVec2::X)];
+        assert!(ExtrudedOutline::new(&[], (0.0, 1.0)).is_none());
+        assert!(ExtrudedOutline::new(&segment, (1.0, 1.0)).is_none());
+        assert!(ExtrudedOutline::new(&segment, (0.0, f64::NAN)).is_none());
+    }
+}
