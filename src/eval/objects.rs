@@ -94,6 +94,7 @@ impl Evaluator {
             "mesh2" => self.eval_mesh2(block.head_span, stream)?,
             "poly" | "cubic" | "quartic" => self.eval_poly(head, block.head_span, stream)?,
             "text" => self.eval_text(block.head_span, stream)?,
+            "prism" => self.eval_prism(block.head_span, stream)?,
             "sphere" => {
                 let centre = self.expect_vector(stream, "the centre")?;
                 let radius = self.expect_float(stream, "the radius")?;
@@ -194,6 +195,7 @@ impl Evaluator {
                 "hollow" => object.hollow = Some(self.optional_bool(stream)?),
                 "open" => match &mut object.shape {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
+                    Shape::Prism(prism) => Arc::make_mut(prism).open = true,
                     _ => return Err(self.unexpected_in(&item, head)),
                 },
                 "sturm" => {

@@ -47,6 +47,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "cubic",
     "quartic",
     "text",
+    "prism",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -75,7 +76,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "media",
     "parametric",
     "photons",
-    "prism",
     "rainbow",
     "sky_sphere",
     "sor",
@@ -131,12 +131,11 @@ impl Evaluator {
         match head {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
-            | "quartic" | "text" | "object" | "union" | "intersection" | "difference" | "merge" => {
-                Ok(match self.eval_object(head, block, stream)? {
-                    Some(object) => Value::Object(std::sync::Arc::new(object)),
-                    None => Value::Nothing,
-                })
-            }
+            | "quartic" | "text" | "prism" | "object" | "union" | "intersection" | "difference"
+            | "merge" => Ok(match self.eval_object(head, block, stream)? {
+                Some(object) => Value::Object(std::sync::Arc::new(object)),
+                None => Value::Nothing,
+            }),
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
             "background" => {

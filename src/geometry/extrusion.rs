@@ -1,14 +1,16 @@
-//! Extruded outlines: a region of the XY plane bounded by quadratic Bézier segments, swept
-//! along Z between two depths (text glyphs; later prisms).
+//! Extruded outlines: a region of the XY plane bounded by cubic Bézier segments, swept
+//! along Z between two depths (text glyphs; prisms, whose outline is in XZ and sweep along Y).
 //!
-//! In: segments (start, control, end) forming closed outlines, and the Z extent. Out: every
+//! In: segments (start, two controls, end) forming closed outlines, the Z extent, whether the
+//! caps are left out (`open`) and whether the shape is a prism (axes Y and Z swapped). Out: every
 //! crossing of a line (caps and side walls), inside test (even-odd rule in XY, within the
 //! depth), outward normals, bounds.
 //! Holds: a side crossing carries its segment number in the part tag when it fits (else the
 //! segment is found again from the point); at most [`MAX_ROOTS`] crossings are reported per
 //! line, nearest ahead first when there are more; nothing allocates per ray.
 
-use super::roots::{solve_quadratic, Roots, MAX_ROOTS};
+use super::roots::{Roots, MAX_ROOTS};
+use super::torus::real_roots_between;
 use crate::accel::Aabb;
 use glam::{DVec2, DVec3};
 
@@ -21,58 +23,69 @@ const UNKNOWN_SIDE: u8 = u8::MAX;
 /// Crossings collected per line before keeping the nearest.
 const CROSSING_BUFFER: usize = 64;
 
-/// One quadratic segment in power form: `a s² + b s + start` for s in [0, 1].
+/// One cubic segment in power form: `a s³ + b s² + c s + start` for s in [0, 1].
 #[derive(Clone, Copy, Debug)]
 struct Segment {
     start: DVec2,
+    c: DVec2,
     b: DVec2,
     a: DVec2,
 }
 
 impl Segment {
-    fn from_points([start, control, end]: [DVec2; 3]) -> Segment {
+    fn from_points([p0, p1, p2, p3]: [DVec2; 4]) -> Segment {
         Segment {
-            start,
-            b: 2.0 * (control - start),
-            a: start - 2.0 * control + end,
+            start: p0,
+            c: 3.0 * (p1 - p0),
+            b: 3.0 * (p0 - 2.0 * p1 + p2),
+            a: p3 - p0 + 3.0 * (p1 - p2),
         }
     }
 
     #[inline]
     fn at(&self, s: f64) -> DVec2 {
-        (self.a * s + self.b) * s + self.start
+        ((self.a * s + self.b) * s + self.c) * s + self.start
     }
 
     #[inline]
     fn tangent(&self, s: f64) -> DVec2 {
-        2.0 * self.a * s + self.b
+        (3.0 * self.a * s + 2.0 * self.b) * s + self.c
     }
 
-    /// Parameters in [0, 1) where `normal · (point - offset)` is zero.
     #[inline]
-    fn crossings_with_line(&self, normal: DVec2, offset: f64) -> ([f64; 2], usize) {
-        let qa = normal.dot(self.a);
-        let qb = normal.dot(self.b);
-        let qc = normal.dot(self.start) - offset;
-        let mut found = [0.0; 2];
-        let mut count = 0;
-        let mut keep = |s: f64| {
-            if (0.0..1.0).contains(&s) {
-                found[count] = s;
-                count += 1;
-            }
-        };
-        if qa.abs() <= 1e-12 * (qb.abs() + qc.abs()) {
-            if qb != 0.0 {
-                keep(-qc / qb);
-            }
-        } else if let Some((first, second)) = solve_quadratic(qa, 0.5 * qb, qc) {
-            keep(first);
-            if second != first {
-                keep(second);
+    fn second_derivative(&self, s: f64) -> DVec2 {
+        6.0 * self.a * s + 2.0 * self.b
+    }
+
+    /// Parameters in [0, 1) where `normal · point` equals `offset`.
+    #[inline]
+    fn crossings_with_line(&self, normal: DVec2, offset: f64) -> ([f64; 3], usize) {
+        let coefficients = [
+            normal.dot(self.a),
+            normal.dot(self.b),
+            normal.dot(self.c),
+            normal.dot(self.start) - offset,
+        ];
+        // Coefficients that are rounding noise next to the others are dropped, so straight
+        // and quadratic segments are solved at their true degree.
+        let largest = coefficients.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let mut cleaned = coefficients;
+        for value in &mut cleaned[..2] {
+            if value.abs() <= 1e-14 * largest {
+                *value = 0.0;
             }
         }
-        (found, count)
+        let mut roots = [0.0; super::torus::MAX_DEGREE];
+        let count = real_roots_between(&cleaned, 0.0, 1.0, &mut roots);
+        let mut found = [0.0; 3];
+        let mut kept = 0;
+        for &s in &roots[..count] {
+            if s < 1.0 && kept < 3 {
+                found[kept] = s;
+                kept += 1;
+            }
+        }
+        (found, kept)
     }
 }
 
@@ -80,6 +93,10 @@ impl Segment {
 #[derive(Clone, Debug)]
 pub struct ExtrudedOutline {
     segments: Vec<Segment>,
+    /// No caps (a prism's `open`).
+    open: bool,
+    /// A prism: the outline is in local XZ and the sweep runs along Y.
+    along_y: bool,
     near_depth: f64,
     far_depth: f64,
     /// 2-D bounds of the outline.
@@ -89,7 +106,12 @@ pub struct ExtrudedOutline {
 
 impl ExtrudedOutline {
     /// An extrusion; `None` without segments, with non-finite values or zero depth.
-    pub fn new(segments: &[[DVec2; 3]], depth: (f64, f64)) -> Option<ExtrudedOutline> {
+    pub fn new(
+        segments: &[[DVec2; 4]],
+        depth: (f64, f64),
+        open: bool,
+        along_y: bool,
+    ) -> Option<ExtrudedOutline> {
         let (near_depth, far_depth) = (depth.0.min(depth.1), depth.0.max(depth.1));
         let finite = segments.iter().flatten().all(|p| p.is_finite());
         let thick = far_depth > near_depth && far_depth.is_finite() && near_depth.is_finite();
@@ -104,6 +126,8 @@ impl ExtrudedOutline {
         }
         Some(ExtrudedOutline {
             segments: segments.iter().copied().map(Segment::from_points).collect(),
+            open,
+            along_y,
             near_depth,
             far_depth,
             min,
@@ -130,6 +154,7 @@ impl ExtrudedOutline {
 
     /// Pushes the crossings of the line `origin + t direction`.
     pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
+        let (origin, direction) = (self.swizzle(origin), self.swizzle(direction));
         let mut crossings = [(0.0, 0u8); CROSSING_BUFFER];
         let mut count = 0;
         let mut record = |t: f64, part: u8| {
@@ -138,7 +163,7 @@ impl ExtrudedOutline {
                 count += 1;
             }
         };
-        if direction.z != 0.0 {
+        if direction.z != 0.0 && !self.open {
             for (depth, part) in [(self.near_depth, FRONT_CAP), (self.far_depth, BACK_CAP)] {
                 let t = (depth - origin.z) / direction.z;
                 let point = origin.truncate() + direction.truncate() * t;
@@ -185,11 +210,28 @@ impl ExtrudedOutline {
 
     /// True when `point` is within the depth and its XY position is in the region.
     pub fn inside(&self, point: DVec3) -> bool {
+        let point = self.swizzle(point);
         point.z >= self.near_depth && point.z <= self.far_depth && self.covers(point.truncate())
     }
 
     /// Outward normal at the surface `point` of part `part`.
     pub fn normal(&self, point: DVec3, part: u8) -> DVec3 {
+        let normal = self.extrusion_normal(self.swizzle(point), part);
+        self.swizzle(normal)
+    }
+
+    /// Swaps Y and Z for prisms (its own inverse), so the rest works in extrusion space.
+    #[inline]
+    fn swizzle(&self, v: DVec3) -> DVec3 {
+        if self.along_y {
+            DVec3::new(v.x, v.z, v.y)
+        } else {
+            v
+        }
+    }
+
+    /// Outward normal in extrusion space.
+    fn extrusion_normal(&self, point: DVec3, part: u8) -> DVec3 {
         match part {
             FRONT_CAP => -DVec3::Z,
             BACK_CAP => DVec3::Z,
@@ -237,8 +279,8 @@ impl ExtrudedOutline {
     /// Bounds of the extruded outline.
     pub fn bounds(&self) -> Aabb {
         Aabb::from_points([
-            self.min.extend(self.near_depth),
-            self.max.extend(self.far_depth),
+            self.swizzle(self.min.extend(self.near_depth)),
+            self.swizzle(self.max.extend(self.far_depth)),
         ])
     }
 }
@@ -262,7 +304,7 @@ fn closest_parameter(segment: &Segment, point: DVec2) -> f64 {
         let offset = segment.at(s) - point;
         let tangent = segment.tangent(s);
         let slope = offset.dot(tangent);
-        let curvature = tangent.dot(tangent) + offset.dot(2.0 * segment.a);
+        let curvature = tangent.dot(tangent) + offset.dot(segment.second_derivative(s));
         if curvature <= 0.0 || !curvature.is_finite() {
             break;
         }
@@ -275,8 +317,17 @@ fn closest_parameter(segment: &Segment, point: DVec2) -> f64 {
 mod tests {
     use super::*;
 
-    fn line(a: DVec2, b: DVec2) -> [DVec2; 3] {
-        [a, 0.5 * (a + b), b]
+    fn line(a: DVec2, b: DVec2) -> [DVec2; 4] {
+        [a, a + (b - a) / 3.0, a + (b - a) * (2.0 / 3.0), b]
+    }
+
+    fn quadratic([p0, q, p1]: [DVec2; 3]) -> [DVec2; 4] {
+        [
+            p0,
+            p0 + (q - p0) * (2.0 / 3.0),
+            p1 + (q - p1) * (2.0 / 3.0),
+            p1,
+        ]
     }
 
     fn square_with_hole() -> ExtrudedOutline {
@@ -290,7 +341,38 @@ mod tests {
             (0..4).map(move |i| line(c[i], c[(i + 1) % 4]))
         };
         let segments: Vec<_> = square(2.0).chain(square(1.0)).collect();
-        ExtrudedOutline::new(&segments, (0.0, 1.0)).unwrap()
+        ExtrudedOutline::new(&segments, (0.0, 1.0), false, false).unwrap()
+    }
+
+    #[test]
+    fn prism_frame_swaps_axes() {
+        let square = [
+            DVec2::new(-1.0, -1.0),
+            DVec2::new(1.0, -1.0),
+            DVec2::new(1.0, 1.0),
+            DVec2::new(-1.0, 1.0),
+        ];
+        let segments: Vec<_> = (0..4)
+            .map(|i| line(square[i], square[(i + 1) % 4]))
+            .collect();
+        let prism = ExtrudedOutline::new(&segments, (0.0, 2.0), false, true).unwrap();
+        assert!(prism.inside(DVec3::new(0.5, 1.5, 0.5)));
+        assert!(!prism.inside(DVec3::new(0.5, 2.5, 0.5)));
+        let mut roots = Roots::new();
+        prism.intersect(DVec3::new(0.0, 5.0, 0.0), -DVec3::Y, &mut roots);
+        let (t, part) = roots.nearest_within(0.0, 10.0).unwrap();
+        assert_eq!(t, 3.0);
+        assert!(prism
+            .normal(DVec3::new(0.0, 2.0, 0.0), part)
+            .abs_diff_eq(DVec3::Y, 1e-12));
+        let open = ExtrudedOutline::new(&segments, (0.0, 2.0), true, true).unwrap();
+        let mut roots = Roots::new();
+        open.intersect(DVec3::new(0.0, 5.0, 0.0), -DVec3::Y, &mut roots);
+        assert_eq!(roots.iter().count(), 0);
+        assert!(prism
+            .bounds()
+            .max
+            .abs_diff_eq(DVec3::new(1.0, 2.0, 1.0), 1e-12));
     }
 
     #[test]
@@ -320,18 +402,19 @@ mod tests {
     fn curved_outline_agrees_with_inside_test() {
         // A closed shape of two arcs.
         let segments = [
-            [
+            quadratic([
                 DVec2::new(-1.0, 0.0),
                 DVec2::new(0.0, 2.0),
                 DVec2::new(1.0, 0.0),
-            ],
+            ]),
             [
                 DVec2::new(1.0, 0.0),
-                DVec2::new(0.0, -2.0),
+                DVec2::new(0.5, -2.0),
+                DVec2::new(-0.5, -1.0),
                 DVec2::new(-1.0, 0.0),
             ],
         ];
-        let shape = ExtrudedOutline::new(&segments, (-0.5, 0.5)).unwrap();
+        let shape = ExtrudedOutline::new(&segments, (-0.5, 0.5), false, false).unwrap();
         let mut state = 99u64;
         let mut random = || {
             state = state
@@ -360,8 +443,8 @@ mod tests {
     #[test]
     fn degenerate_extrusions_are_rejected() {
         let segment = [line(DVec2::ZERO, DVec2::X)];
-        assert!(ExtrudedOutline::new(&[], (0.0, 1.0)).is_none());
-        assert!(ExtrudedOutline::new(&segment, (1.0, 1.0)).is_none());
-        assert!(ExtrudedOutline::new(&segment, (0.0, f64::NAN)).is_none());
+        assert!(ExtrudedOutline::new(&[], (0.0, 1.0), false, false).is_none());
+        assert!(ExtrudedOutline::new(&segment, (1.0, 1.0), false, false).is_none());
+        assert!(ExtrudedOutline::new(&segment, (0.0, f64::NAN), false, true).is_none());
     }
 }

@@ -48,7 +48,7 @@ pub enum LocalShape {
     Polygon(Box<Polygon>),
     /// A polynomial surface.
     Poly(Box<PolySurface>),
-    /// An extruded outline (a text glyph).
+    /// An extruded outline (a text glyph or a prism).
     Extrusion(Box<ExtrudedOutline>),
 }
 
@@ -108,6 +108,10 @@ impl LocalShape {
             Shape::Poly(ref poly) => {
                 PolySurface::new(poly.order, &poly.coefficients).map(|p| Self::Poly(Box::new(p)))
             }
+            Shape::Prism(ref prism) => {
+                ExtrudedOutline::new(&prism.segments, prism.depth, prism.open, true)
+                    .map(|p| Self::Extrusion(Box::new(p)))
+            }
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -134,7 +138,9 @@ impl LocalShape {
                 .collect(),
             Shape::Text(glyphs) => glyphs
                 .iter()
-                .filter_map(|glyph| ExtrudedOutline::new(&glyph.segments, glyph.depth))
+                .filter_map(|glyph| {
+                    ExtrudedOutline::new(&glyph.segments, glyph.depth, glyph.open, false)
+                })
                 .map(|glyph| Self::Extrusion(Box::new(glyph)))
                 .collect(),
             other => vec![Self::from_scene(other)],

@@ -213,6 +213,9 @@ pub enum Shape {
     Poly(Arc<Poly>),
     /// `text { ttf .. }`: one extruded outline per glyph, already laid out.
     Text(Arc<Vec<Extrusion>>),
+    /// `prism { .. }` with `linear_sweep`: an outline in the XZ plane swept along Y (the
+    /// extrusion's depth is the Y extent; its X and Y are the prism's X and Z).
+    Prism(Arc<Extrusion>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,
@@ -258,15 +261,17 @@ pub struct Poly {
     pub sturm: bool,
 }
 
-/// A region of the XY plane bounded by closed outlines of quadratic Bézier segments,
+/// A region of the XY plane bounded by closed outlines of cubic Bézier segments,
 /// extruded along Z. A point is in the region when a line from it crosses the outlines an
 /// odd number of times.
 #[derive(Clone, Debug)]
 pub struct Extrusion {
-    /// Segments as (start, control, end); a straight segment has its control at its middle.
-    pub segments: Vec<[glam::DVec2; 3]>,
+    /// Segments as (start, control, control, end) of cubic Béziers.
+    pub segments: Vec<[glam::DVec2; 4]>,
     /// The Z extent: from `depth.0` to `depth.1`.
     pub depth: (f64, f64),
+    /// Without caps (a prism's `open`).
+    pub open: bool,
 }
 
 /// The four CSG operations.

@@ -33,3 +33,8 @@ union { object { P } object { S } object { M } object { M2 } object { M3 } objec
 #declare T2 = text { ttf "../reference/cyrvetic.ttf" concat("a", "b") 1, <0.1, 0.2> inverse }
 #declare T3 = text { ttf "../reference/timrom.ttf" "" 1, 0 }
 union { object { T1 } object { T2 } object { T3 } }
+#declare Pr1 = prism { 0, 1, 4, <0,0>, <1,0>, <1,1>, <0,0> open }
+#declare Pr2 = prism { linear_sweep bezier_spline -1, 1, 4, <0,0>, <1,0>, <1,1>, <0,0> sturm }
+#declare Pr3 = prism { conic_sweep linear_spline 0, 1, 3, <0,0>, <1,0>, <1,1> }
+#declare Pr4 = prism { cubic_spline 0, 1, 7, <0,-1>, <0,0>, <1,0>, <1,1>, <0,1>, <0,0>, <-1, 0> pigment { rgb 1 } }
+union { object { Pr1 } object { Pr2 } object { Pr3 } object { Pr4 } }

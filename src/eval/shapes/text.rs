@@ -39,7 +39,7 @@ struct SegmentCollector {
     origin: DVec2,
     start: DVec2,
     current: DVec2,
-    segments: Vec<[DVec2; 3]>,
+    segments: Vec<[DVec2; 4]>,
 }
 
 impl SegmentCollector {
@@ -49,9 +49,19 @@ impl SegmentCollector {
 
     fn line(&mut self, to: DVec2) {
         if to != self.current {
-            self.segments
-                .push([self.current, 0.5 * (self.current + to), to]);
+            self.segments.push(line_segment(self.current, to));
         }
+        self.current = to;
+    }
+
+    fn quadratic(&mut self, control: DVec2, to: DVec2) {
+        let from = self.current;
+        self.segments.push([
+            from,
+            from + (control - from) * (2.0 / 3.0),
+            to + (control - to) * (2.0 / 3.0),
+            to,
+        ]);
         self.current = to;
     }
 }
@@ -70,15 +80,12 @@ impl ttf_parser::OutlineBuilder for SegmentCollector {
     fn quad_to(&mut self, x1: f32, y1: f32, x: f32, y: f32) {
         let control = self.point(x1, y1);
         let to = self.point(x, y);
-        self.segments.push([self.current, control, to]);
-        self.current = to;
+        self.quadratic(control, to);
     }
 
     fn curve_to(&mut self, x1: f32, y1: f32, x2: f32, y2: f32, x: f32, y: f32) {
-        // One quadratic approximating the cubic (fonts with cubic outlines are rare here).
         let (c1, c2, to) = (self.point(x1, y1), self.point(x2, y2), self.point(x, y));
-        let control = 0.25 * (3.0 * (c1 + c2) - (self.current + to));
-        self.segments.push([self.current, control, to]);
+        self.segments.push([self.current, c1, c2, to]);
         self.current = to;
     }
 
@@ -130,6 +137,7 @@ pub(crate) fn layout_text(
             glyphs.push(Extrusion {
                 segments: collector.segments,
                 depth: (0.0, thickness),
+                open: false,
             });
         }
         let advance = face.glyph_hor_advance(glyph).map_or(0.0, f64::from);
@@ -181,4 +189,14 @@ fn kerning(face: &ttf_parser::Face, left: ttf_parser::GlyphId, right: ttf_parser
         start += usize::from(length);
     }
     total
+}
+
+/// A straight segment as a cubic Bézier.
+pub(crate) fn line_segment(from: DVec2, to: DVec2) -> [DVec2; 4] {
+    [
+        from,
+        from + (to - from) / 3.0,
+        from + (to - from) * (2.0 / 3.0),
+        to,
+    ]
 }
