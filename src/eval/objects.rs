@@ -50,6 +50,13 @@ impl Evaluator {
                 });
                 while let Some(item) = self.next_item(stream)? {
                     let child = match &item {
+                        Item::Block(b)
+                            if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
+                                if &**w == "clipped_by" || &**w == "bounded_by") =>
+                        {
+                            self.object_modifier(&mut object, item, stream, head)?;
+                            None
+                        }
                         Item::Block(b) => match self.eval_block(b)? {
                             Value::Object(o) => Some(o),
                             Value::Light(light) => {
@@ -214,7 +221,10 @@ impl Evaluator {
                 "hierarchy" => {
                     let _ = self.optional_bool(stream)?;
                 }
-                "double_illuminate" | "no_image" | "no_reflection" | "no_radiosity" => {
+                "no_image" => object.no_image = self.optional_bool(stream)?,
+                "no_reflection" => object.no_reflection = self.optional_bool(stream)?,
+                "double_illuminate" => object.double_illuminate = self.optional_bool(stream)?,
+                "no_radiosity" => {
                     self.warn(
                         *span,
                         format!("`{word}` is not supported yet; it is ignored"),
@@ -233,6 +243,9 @@ impl Evaluator {
                             object.interior = Some(interior);
                         }
                         return Ok(());
+                    }
+                    if &**w == "clipped_by" || &**w == "bounded_by" {
+                        return self.eval_clip_or_bound(object, w, block);
                     }
                     if &**w == "finish" {
                         let base = self.object_texture(object);
@@ -296,6 +309,45 @@ impl Evaluator {
                     .with_label("not an object modifier")
                     .into())
             }
+        }
+        Ok(())
+    }
+
+    /// `clipped_by { objects | bounded_by }` or `bounded_by { objects | clipped_by }`; the
+    /// objects are stored in the object's local space, so later transformations move them.
+    fn eval_clip_or_bound(
+        &mut self,
+        object: &mut Object,
+        word: &str,
+        block: &Block,
+    ) -> EvalResult<()> {
+        let mut body = Stream::new(block.body.clone());
+        let mut found = Vec::new();
+        while let Some(item) = self.next_item(&mut body)? {
+            match &item {
+                Item::Keyword(other, _) if &**other == "bounded_by" && word == "clipped_by" => {
+                    found.extend(object.bounded_by.iter().cloned());
+                }
+                Item::Keyword(other, _) if &**other == "clipped_by" && word == "bounded_by" => {
+                    found.extend(object.clipped_by.iter().cloned());
+                }
+                Item::Comma(_) => {}
+                Item::Block(_) | Item::Expr(_) => match self.item_value(&item)? {
+                    Value::Object(child) => {
+                        let mut child = Arc::unwrap_or_clone(child);
+                        apply_transform(&mut child, &object.transform.inverse());
+                        found.push(child);
+                    }
+                    Value::Nothing => {}
+                    _ => return Err(self.unexpected_in(&item, word)),
+                },
+                _ => return Err(self.unexpected_in(&item, word)),
+            }
+        }
+        if word == "clipped_by" {
+            object.clipped_by.extend(found);
+        } else {
+            object.bounded_by.extend(found);
         }
         Ok(())
     }

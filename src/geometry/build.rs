@@ -84,13 +84,22 @@ struct Appearance {
     texture_key: TextureKey,
     interior: Interior,
     interior_key: InteriorKey,
+    flags: Flags,
+}
+
+/// The object flags a material carries, inherited from ancestors.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+struct Flags {
     no_shadow: bool,
+    no_image: bool,
+    no_reflection: bool,
+    double_illuminate: bool,
 }
 
 /// Working state of one build.
 struct Builder {
     materials: Vec<Material>,
-    material_of: HashMap<(TextureKey, InteriorKey, bool), u32>,
+    material_of: HashMap<(TextureKey, InteriorKey, Flags), u32>,
     next_owner: usize,
     leaf_count: usize,
 }
@@ -108,7 +117,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
         texture_key: TextureKey::Default,
         interior: Interior::default(),
         interior_key: InteriorKey::Default,
-        no_shadow: false,
+        flags: Flags::default(),
     };
     let mut primitives = Vec::new();
     for object in objects {
@@ -170,6 +179,28 @@ fn pigment_to_world(pigment: &Pigment, world_from_owner: &Transform) -> Pigment 
 /// later does not change its box, so an inverted CSG object is cut off at the box of the object
 /// it came from: rays that miss the box miss the object.
 fn pov_bounding_box(object: &Object) -> Option<Aabb> {
+    let unclipped = unclipped_pov_bounding_box(object);
+    let parent_from_local = &object.transform.outer_from_inner;
+    // A clipped object's box is cut to the boxes of its (not inverted) clipping objects.
+    object
+        .clipped_by
+        .iter()
+        .filter(|clip| !(clip.inverse && invertible(&clip.shape)))
+        .filter_map(pov_bounding_box)
+        .map(|clip| {
+            if clip.is_empty() {
+                Aabb::EMPTY
+            } else {
+                clip.transformed(parent_from_local)
+            }
+        })
+        .fold(unclipped, |all, clip| {
+            Some(all.map_or(clip, |all| all.intersection(&clip)))
+        })
+}
+
+/// [`pov_bounding_box`] ignoring `clipped_by`.
+fn unclipped_pov_bounding_box(object: &Object) -> Option<Aabb> {
     let parent_from_local = &object.transform.outer_from_inner;
     let local = match &object.shape {
         Shape::Csg {
@@ -261,7 +292,10 @@ impl Builder {
             appearance.interior = interior.clone();
             appearance.interior_key = InteriorKey::Owned(self.new_owner());
         }
-        appearance.no_shadow |= object.no_shadow;
+        appearance.flags.no_shadow |= object.no_shadow;
+        appearance.flags.no_image |= object.no_image;
+        appearance.flags.no_reflection |= object.no_reflection;
+        appearance.flags.double_illuminate |= object.double_illuminate;
         appearance
     }
 
@@ -270,7 +304,7 @@ impl Builder {
         let key = (
             appearance.texture_key,
             appearance.interior_key,
-            appearance.no_shadow,
+            appearance.flags,
         );
         if let Some(&index) = self.material_of.get(&key) {
             return index;
@@ -279,7 +313,10 @@ impl Builder {
         self.materials.push(Material {
             texture: Arc::clone(&appearance.texture),
             interior: appearance.interior.clone(),
-            no_shadow: appearance.no_shadow,
+            no_shadow: appearance.flags.no_shadow,
+            no_image: appearance.flags.no_image,
+            no_reflection: appearance.flags.no_reflection,
+            double_illuminate: appearance.flags.double_illuminate,
         });
         self.material_of.insert(key, index);
         index
@@ -303,7 +340,7 @@ impl Builder {
             Shape::Csg {
                 operation: CsgOperation::Union,
                 children,
-            } if !object.inverse => {
+            } if !object.inverse && object.clipped_by.is_empty() => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 enclosing_unions.push(object.transform.outer_from_inner);
                 for child in children {
@@ -317,7 +354,7 @@ impl Builder {
                 }
                 enclosing_unions.pop();
             }
-            Shape::Csg { .. } => {
+            shape if matches!(shape, Shape::Csg { .. }) || !object.clipped_by.is_empty() => {
                 let mut leaves = Vec::new();
                 let inversion = Inversion {
                     odd: false,
@@ -379,6 +416,39 @@ impl Builder {
             odd: inherited_inversion.odd != object.inverse,
             any: inherited_inversion.any || object.inverse,
         };
+        let node = self.unclipped_node(object, &world_from_local, &appearance, inversion, leaves);
+        if object.clipped_by.is_empty() {
+            return node;
+        }
+        // The clipping objects are never inverted with the object: inverting a clipped
+        // object swaps its inside but keeps the same visible surfaces.
+        let upright = Inversion {
+            odd: false,
+            any: false,
+        };
+        let mut nodes = vec![node];
+        for clip in &object.clipped_by {
+            nodes.push(self.csg_node(clip, &world_from_local, &appearance, upright, leaves));
+        }
+        let combination = if inversion.odd {
+            Combination::InvertedClip
+        } else {
+            Combination::Clip
+        };
+        CsgNode::combine(combination, nodes)
+    }
+
+    /// The CSG node of `object` without its `clipped_by`.
+    fn unclipped_node(
+        &mut self,
+        object: &Object,
+        world_from_local: &Transform,
+        appearance: &Appearance,
+        inversion: Inversion,
+        leaves: &mut Vec<Leaf>,
+    ) -> CsgNode {
+        let world_from_local = *world_from_local;
+        let appearance = appearance.clone();
         match &object.shape {
             Shape::Csg {
                 operation,

@@ -22,6 +22,8 @@ mod torus;
 mod world;
 
 #[cfg(test)]
+mod more_shape_tests;
+#[cfg(test)]
 mod shape_tests;
 #[cfg(test)]
 mod test_support;
@@ -79,4 +81,10 @@ pub struct Material {
     pub interior: Interior,
     /// The object casts no shadow.
     pub no_shadow: bool,
+    /// `no_image`: camera rays should pass through (not yet read by the renderer).
+    pub no_image: bool,
+    /// `no_reflection`: reflected rays should pass through (not yet read by the renderer).
+    pub no_reflection: bool,
+    /// `double_illuminate`: lit from both sides (not yet read by the renderer).
+    pub double_illuminate: bool,
 }

@@ -145,6 +145,17 @@ pub struct Object {
     pub no_shadow: bool,
     /// `hollow` as written: `Some(true)` hollow, `Some(false)` `hollow off`, `None` unspecified.
     pub hollow: Option<bool>,
+    /// `clipped_by` objects, in this object's local space: only the parts of the object inside
+    /// all of them remain.
+    pub clipped_by: Vec<Object>,
+    /// `bounded_by` objects, in this object's local space (a hint: durer does not need them).
+    pub bounded_by: Vec<Object>,
+    /// `no_image`: invisible to camera rays (still casts shadows and shows in reflections).
+    pub no_image: bool,
+    /// `no_reflection`: invisible in reflections.
+    pub no_reflection: bool,
+    /// `double_illuminate`: lit from both sides.
+    pub double_illuminate: bool,
 }
 
 impl Object {
@@ -158,6 +169,11 @@ impl Object {
             inverse: false,
             no_shadow: false,
             hollow: None,
+            clipped_by: Vec::new(),
+            bounded_by: Vec::new(),
+            no_image: false,
+            no_reflection: false,
+            double_illuminate: false,
         }
     }
 }

@@ -38,3 +38,7 @@ union { object { T1 } object { T2 } object { T3 } }
 #declare Pr3 = prism { conic_sweep linear_spline 0, 1, 3, <0,0>, <1,0>, <1,1> }
 #declare Pr4 = prism { cubic_spline 0, 1, 7, <0,-1>, <0,0>, <1,0>, <1,1>, <0,1>, <0,0>, <-1, 0> pigment { rgb 1 } }
 union { object { Pr1 } object { Pr2 } object { Pr3 } object { Pr4 } }
+#declare Clipped = sphere { 0, 1 clipped_by { box { -1, 0.5 } plane { x, 0.2 } } bounded_by { sphere { 0, 1.1 } } no_image no_reflection double_illuminate }
+#declare Bounded = sphere { 0, 1 bounded_by { box { -1, 1 } } clipped_by { bounded_by } translate x }
+#declare Reversed = sphere { 0, 1 clipped_by { box { -1, 0.5 } } bounded_by { clipped_by } no_image off }
+union { object { Clipped } object { Bounded } object { Reversed } clipped_by { sphere { 0, 3 } } }
