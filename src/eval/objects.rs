@@ -102,6 +102,7 @@ impl Evaluator {
             "poly" | "cubic" | "quartic" => self.eval_poly(head, block.head_span, stream)?,
             "text" => self.eval_text(block.head_span, stream)?,
             "prism" => self.eval_prism(block.head_span, stream)?,
+            "lathe" => self.eval_lathe(block.head_span, stream)?,
             "sphere" => {
                 let centre = self.expect_vector(stream, "the centre")?;
                 let radius = self.expect_float(stream, "the radius")?;

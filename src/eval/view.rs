@@ -48,6 +48,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "quartic",
     "text",
     "prism",
+    "lathe",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -72,7 +73,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "height_field",
     "isosurface",
     "julia_fractal",
-    "lathe",
     "media",
     "parametric",
     "photons",
@@ -131,8 +131,8 @@ impl Evaluator {
         match head {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
-            | "quartic" | "text" | "prism" | "object" | "union" | "intersection" | "difference"
-            | "merge" => Ok(match self.eval_object(head, block, stream)? {
+            | "quartic" | "text" | "prism" | "lathe" | "object" | "union" | "intersection"
+            | "difference" | "merge" => Ok(match self.eval_object(head, block, stream)? {
                 Some(object) => Value::Object(std::sync::Arc::new(object)),
                 None => Value::Nothing,
             }),

@@ -25,15 +25,15 @@ const CROSSING_BUFFER: usize = 64;
 
 /// One cubic segment in power form: `a s³ + b s² + c s + start` for s in [0, 1].
 #[derive(Clone, Copy, Debug)]
-struct Segment {
-    start: DVec2,
-    c: DVec2,
-    b: DVec2,
-    a: DVec2,
+pub(super) struct Segment {
+    pub(super) start: DVec2,
+    pub(super) c: DVec2,
+    pub(super) b: DVec2,
+    pub(super) a: DVec2,
 }
 
 impl Segment {
-    fn from_points([p0, p1, p2, p3]: [DVec2; 4]) -> Segment {
+    pub(super) fn from_points([p0, p1, p2, p3]: [DVec2; 4]) -> Segment {
         Segment {
             start: p0,
             c: 3.0 * (p1 - p0),
@@ -43,12 +43,12 @@ impl Segment {
     }
 
     #[inline]
-    fn at(&self, s: f64) -> DVec2 {
+    pub(super) fn at(&self, s: f64) -> DVec2 {
         ((self.a * s + self.b) * s + self.c) * s + self.start
     }
 
     #[inline]
-    fn tangent(&self, s: f64) -> DVec2 {
+    pub(super) fn tangent(&self, s: f64) -> DVec2 {
         (3.0 * self.a * s + 2.0 * self.b) * s + self.c
     }
 
@@ -59,7 +59,7 @@ impl Segment {
 
     /// Parameters in [0, 1) where `normal · point` equals `offset`.
     #[inline]
-    fn crossings_with_line(&self, normal: DVec2, offset: f64) -> ([f64; 3], usize) {
+    pub(super) fn crossings_with_line(&self, normal: DVec2, offset: f64) -> ([f64; 3], usize) {
         let coefficients = [
             normal.dot(self.a),
             normal.dot(self.b),

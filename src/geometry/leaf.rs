@@ -10,6 +10,7 @@
 
 use super::extrusion::ExtrudedOutline;
 use super::flat::{Cuboid, Disc, Plane, Triangle};
+use super::lathe::Lathe;
 use super::poly::PolySurface;
 use super::polygon::{Polygon, SmoothTriangle};
 use super::quadric::Quadric;
@@ -50,6 +51,8 @@ pub enum LocalShape {
     Poly(Box<PolySurface>),
     /// An extruded outline (a text glyph or a prism).
     Extrusion(Box<ExtrudedOutline>),
+    /// A surface of revolution.
+    Lathe(Box<Lathe>),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -112,6 +115,7 @@ impl LocalShape {
                 ExtrudedOutline::new(&prism.segments, prism.depth, prism.open, true)
                     .map(|p| Self::Extrusion(Box::new(p)))
             }
+            Shape::Lathe(ref segments) => Lathe::new(segments).map(|l| Self::Lathe(Box::new(l))),
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -172,6 +176,7 @@ impl LocalShape {
             LocalShape::Polygon(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Poly(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Extrusion(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Lathe(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -190,6 +195,7 @@ impl LocalShape {
             LocalShape::SmoothTriangle(_) | LocalShape::Polygon(_) => false,
             LocalShape::Poly(shape) => shape.inside(point),
             LocalShape::Extrusion(shape) => shape.inside(point),
+            LocalShape::Lathe(shape) => shape.inside(point),
         }
     }
 
@@ -209,6 +215,7 @@ impl LocalShape {
             LocalShape::Polygon(shape) => shape.normal(),
             LocalShape::Poly(shape) => shape.normal(point),
             LocalShape::Extrusion(shape) => shape.normal(point, part),
+            LocalShape::Lathe(shape) => shape.normal(point, part),
         }
     }
 
@@ -226,6 +233,7 @@ impl LocalShape {
             LocalShape::SmoothTriangle(shape) => Some(shape.bounds()),
             LocalShape::Polygon(shape) => Some(shape.bounds()),
             LocalShape::Extrusion(shape) => Some(shape.bounds()),
+            LocalShape::Lathe(shape) => Some(shape.bounds()),
         }
     }
 

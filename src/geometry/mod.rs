@@ -12,6 +12,7 @@ mod build;
 mod csg;
 mod extrusion;
 mod flat;
+mod lathe;
 mod leaf;
 mod poly;
 mod polygon;

@@ -232,6 +232,9 @@ pub enum Shape {
     /// `prism { .. }` with `linear_sweep`: an outline in the XZ plane swept along Y (the
     /// extrusion's depth is the Y extent; its X and Y are the prism's X and Z).
     Prism(Arc<Extrusion>),
+    /// `lathe { .. }`: a curve in the (radius, height) plane, as cubic Béziers of `<r, y>`
+    /// points, turned around the Y axis.
+    Lathe(Arc<Vec<[glam::DVec2; 4]>>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,

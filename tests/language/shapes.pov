@@ -42,3 +42,7 @@ union { object { Pr1 } object { Pr2 } object { Pr3 } object { Pr4 } }
 #declare Bounded = sphere { 0, 1 bounded_by { box { -1, 1 } } clipped_by { bounded_by } translate x }
 #declare Reversed = sphere { 0, 1 clipped_by { box { -1, 0.5 } } bounded_by { clipped_by } no_image off }
 union { object { Clipped } object { Bounded } object { Reversed } clipped_by { sphere { 0, 3 } } }
+#declare L1 = lathe { 3, <0,0>, <1,0>, <0,1> sturm }
+#declare L2 = lathe { bezier_spline 4, <0,0>, <1,0>, <1,1>, <0,1> pigment { rgb 1 } }
+#declare L3 = lathe { cubic_spline 4, <0,0>, <1,0>, <1,1>, <0,1> }
+union { object { L1 } object { L2 } object { L3 } }

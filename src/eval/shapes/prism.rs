@@ -1,7 +1,7 @@
-//! `prism { [spline] [sweep] height1, height2, n, points.. [open] }`: outlines in the XZ
-//! plane swept along Y.
+//! `prism { [spline] [sweep] height1, height2, n, points.. [open] }` (outlines in the XZ
+//! plane swept along Y) and `lathe { [spline] n, points.. }` (a curve turned around Y).
 //!
-//! In: the item stream after the brace. Out: [`Shape::Prism`] with every spline turned into
+//! In: the item stream after the brace. Out: [`Shape::Prism`] or [`Shape::Lathe`] with every spline turned into
 //! cubic Bézier segments. Holds: sub-prisms close where their start point repeats (a linear
 //! spline's last one closes itself); `conic_sweep` is not supported yet and leaves the prism
 //! out with a warning.
@@ -68,21 +68,9 @@ fn prism_segments(spline: Spline, points: &[DVec2]) -> Option<Vec<[DVec2; 4]>> {
                 for i in start + 1..end {
                     let (before, from, to) = (points[i - 1], points[i], points[i + 1]);
                     segments.push(if spline == Spline::Quadratic {
-                        // The parabola through `before`, `from` and `to` at t = -1, 0, 1.
-                        power_to_bezier(
-                            DVec2::ZERO,
-                            0.5 * (to - 2.0 * from + before),
-                            0.5 * (to - before),
-                            from,
-                        )
+                        quadratic_segment(before, from, to)
                     } else {
-                        let after = points[i + 2];
-                        power_to_bezier(
-                            0.5 * (-before + 3.0 * from - 3.0 * to + after),
-                            0.5 * (2.0 * before - 5.0 * from + 4.0 * to - after),
-                            0.5 * (to - before),
-                            from,
-                        )
+                        cubic_segment(before, from, to, points[i + 2])
                     });
                 }
                 start = end + 1 + extra;
@@ -100,9 +88,87 @@ fn prism_segments(spline: Spline, points: &[DVec2]) -> Option<Vec<[DVec2; 4]>> {
     Some(segments)
 }
 
+/// Bézier segments of a lathe's open curve for `spline`; `None` when the points do not make
+/// a whole segment.
+fn lathe_segments(spline: Spline, points: &[DVec2]) -> Option<Vec<[DVec2; 4]>> {
+    let mut segments = Vec::new();
+    match spline {
+        Spline::Linear => {
+            for pair in points.windows(2) {
+                segments.push(line_segment(pair[0], pair[1]));
+            }
+        }
+        Spline::Quadratic => {
+            for window in points.windows(3) {
+                let (before, from, to) = (window[0], window[1], window[2]);
+                segments.push(quadratic_segment(before, from, to));
+            }
+        }
+        Spline::Cubic => {
+            for window in points.windows(4) {
+                segments.push(cubic_segment(window[0], window[1], window[2], window[3]));
+            }
+        }
+        Spline::Bezier => {
+            if !points.len().is_multiple_of(4) {
+                return None;
+            }
+            for chunk in points.chunks_exact(4) {
+                segments.push([chunk[0], chunk[1], chunk[2], chunk[3]]);
+            }
+        }
+    }
+    (!segments.is_empty()).then_some(segments)
+}
+
+/// The parabola through `before`, `from` and `to` at t = -1, 0, 1, between `from` and `to`.
+fn quadratic_segment(before: DVec2, from: DVec2, to: DVec2) -> [DVec2; 4] {
+    power_to_bezier(
+        DVec2::ZERO,
+        0.5 * (to - 2.0 * from + before),
+        0.5 * (to - before),
+        from,
+    )
+}
+
+/// The Catmull-Rom segment from `from` to `to`.
+fn cubic_segment(before: DVec2, from: DVec2, to: DVec2, after: DVec2) -> [DVec2; 4] {
+    power_to_bezier(
+        0.5 * (-before + 3.0 * from - 3.0 * to + after),
+        0.5 * (2.0 * before - 5.0 * from + 4.0 * to - after),
+        0.5 * (to - before),
+        from,
+    )
+}
+
 impl Evaluator {
-    /// Reads a prism's spline and sweep keywords, heights and points.
-    pub(crate) fn eval_prism(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Shape> {
+    /// `lathe { [spline] n, points.. }`.
+    pub(crate) fn eval_lathe(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Shape> {
+        let (spline, _) = self.spline_keywords(stream)?;
+        let count = self.expect_float(stream, "the number of points")?;
+        if !(0.0..=1e7).contains(&count) {
+            return Err(self
+                .error(
+                    span,
+                    format!("a lathe needs 0 to 10000000 points, found {count}"),
+                )
+                .into());
+        }
+        let mut points = Vec::with_capacity(count as usize);
+        for _ in 0..count as usize {
+            points.push(self.expect_vector(stream, "a point")?.truncate());
+        }
+        let Some(segments) = lathe_segments(spline, &points) else {
+            return Err(self
+                .error(span, "too few points for the lathe's spline")
+                .with_label("check the spline type and the number of points")
+                .into());
+        };
+        Ok(Shape::Lathe(Arc::new(segments)))
+    }
+
+    /// Reads spline and sweep keywords; returns the spline and whether the sweep is conic.
+    fn spline_keywords(&mut self, stream: &mut Stream) -> EvalResult<(Spline, bool)> {
         let mut spline = Spline::Linear;
         let mut conic = false;
         loop {
@@ -126,6 +192,12 @@ impl Evaluator {
                 None => break,
             }
         }
+        Ok((spline, conic))
+    }
+
+    /// Reads a prism's spline and sweep keywords, heights and points.
+    pub(crate) fn eval_prism(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Shape> {
+        let (spline, conic) = self.spline_keywords(stream)?;
         let first_height = self.expect_float(stream, "the first height")?;
         let second_height = self.expect_float(stream, "the second height")?;
         let count = self.expect_float(stream, "the number of points")?;
