@@ -12,6 +12,7 @@
 //! intersection; triangles ignore inversion.
 
 use super::csg::{Combination, CsgNode, CsgTree, NodeBounds};
+use super::instance::{MeshGeometry, MeshInstance};
 use super::leaf::{Leaf, LocalShape};
 use super::Material;
 use crate::accel::Aabb;
@@ -36,6 +37,8 @@ pub enum Primitive {
     Leaf(Leaf),
     /// A CSG object evaluated as a whole.
     Csg(Box<CsgTree>),
+    /// One placement of a shared mesh.
+    Mesh(Box<MeshInstance>),
 }
 
 /// What the builder produces.
@@ -102,6 +105,8 @@ struct Builder {
     material_of: HashMap<(TextureKey, InteriorKey, Flags), u32>,
     next_owner: usize,
     leaf_count: usize,
+    /// Prepared geometry of each scene mesh placed at top level, by the mesh's address.
+    meshes: HashMap<usize, Arc<MeshGeometry>>,
 }
 
 /// Builds primitives and materials from the scene's top-level objects.
@@ -111,6 +116,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
         material_of: HashMap::new(),
         next_owner: 0,
         leaf_count: 0,
+        meshes: HashMap::new(),
     };
     let appearance = Appearance {
         texture: Arc::new(Texture::default()),
@@ -380,6 +386,22 @@ impl Builder {
                 }
                 let tree = CsgTree { leaves, root, clip };
                 out.push((Primitive::Csg(Box::new(tree)), surface));
+            }
+            Shape::Mesh(mesh) => {
+                let appearance = self.appearance(object, &world_from_local, inherited);
+                let material = self.material(&appearance);
+                let geometry = self
+                    .meshes
+                    .entry(Arc::as_ptr(mesh) as usize)
+                    .or_insert_with(|| Arc::new(MeshGeometry::new(mesh)))
+                    .clone();
+                let triangles = geometry.len();
+                if let Some((instance, bounds)) =
+                    MeshInstance::new(geometry, &world_from_local, material)
+                {
+                    self.leaf_count += triangles;
+                    out.push((Primitive::Mesh(Box::new(instance)), padded(Some(bounds))));
+                }
             }
             shape => {
                 let appearance = self.appearance(object, &world_from_local, inherited);

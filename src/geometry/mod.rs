@@ -12,6 +12,7 @@ mod build;
 mod csg;
 mod extrusion;
 mod flat;
+mod instance;
 mod lathe;
 mod leaf;
 mod poly;

@@ -117,3 +117,46 @@ fn prism_and_poly_in_the_world() {
     let along_x = Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
     assert_eq!(distances(vec![poly], along_x), vec![4.0, 6.0]);
 }
+
+#[test]
+fn mesh_instances_share_geometry_and_keep_their_transforms() {
+    let mesh = Arc::new(Mesh {
+        triangles: vec![MeshTriangle {
+            corners: [
+                DVec3::new(-1.0, -1.0, 0.0),
+                DVec3::new(1.0, -1.0, 0.0),
+                DVec3::new(0.0, 1.0, 0.0),
+            ],
+            normals: None,
+        }],
+        inside_vector: None,
+    });
+    let mut near = Object::new(Shape::Mesh(Arc::clone(&mesh)));
+    near.transform = crate::scene::Transform::translation(DVec3::new(0.0, 0.0, 1.0));
+    let mut far = Object::new(Shape::Mesh(Arc::clone(&mesh)));
+    far.transform = crate::scene::Transform::scaling(DVec3::new(2.0, 2.0, 2.0))
+        .unwrap()
+        .then(&crate::scene::Transform::translation(DVec3::new(
+            0.0, 0.0, 3.0,
+        )));
+    let world = World::build(&scene_of(vec![near, far]));
+    assert_eq!(world.object_count(), 2);
+    let along_z = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+    let hits = all_hits(&world, &along_z);
+    let found: Vec<f64> = hits
+        .iter()
+        .map(|h| (h.distance * 1e9).round() / 1e9)
+        .collect();
+    assert_eq!(found, vec![6.0, 8.0]);
+    assert!(hits
+        .iter()
+        .all(|h| h.normal.abs_diff_eq(DVec3::Z, 1e-12) || h.normal.abs_diff_eq(-DVec3::Z, 1e-12)));
+    // The scaled copy reaches further out than the plain one.
+    let off_axis = Ray::new(DVec3::new(1.5, -1.5, -5.0), DVec3::Z);
+    let found: Vec<f64> = all_hits(&world, &off_axis)
+        .iter()
+        .map(|h| h.distance)
+        .collect();
+    assert_eq!(found.len(), 1);
+    assert!((found[0] - 8.0).abs() < 1e-9);
+}
