@@ -103,6 +103,7 @@ impl Evaluator {
             "text" => self.eval_text(block.head_span, stream)?,
             "prism" => self.eval_prism(block.head_span, stream)?,
             "lathe" => self.eval_lathe(block.head_span, stream)?,
+            "blob" => self.eval_blob(stream)?,
             "sphere" => {
                 let centre = self.expect_vector(stream, "the centre")?;
                 let radius = self.expect_float(stream, "the radius")?;
@@ -210,6 +211,13 @@ impl Evaluator {
                     let sturm = self.optional_bool(stream)?;
                     if let Shape::Poly(poly) = &mut object.shape {
                         Arc::make_mut(poly).sturm = sturm;
+                    }
+                }
+                "threshold" => {
+                    let threshold = self.expect_float(stream, "the threshold")?;
+                    match &mut object.shape {
+                        Shape::Blob(blob) => Arc::make_mut(blob).threshold = threshold,
+                        _ => return Err(self.unexpected_in(&item, head)),
                     }
                 }
                 "inside_vector" => {

@@ -49,12 +49,12 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "text",
     "prism",
     "lathe",
+    "blob",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
 const UNSUPPORTED_BLOCKS: &[&str] = &[
     "bicubic_patch",
-    "blob",
     "fog",
     "bounded_by",
     "clipped_by",
@@ -131,11 +131,13 @@ impl Evaluator {
         match head {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
-            | "quartic" | "text" | "prism" | "lathe" | "object" | "union" | "intersection"
-            | "difference" | "merge" => Ok(match self.eval_object(head, block, stream)? {
-                Some(object) => Value::Object(std::sync::Arc::new(object)),
-                None => Value::Nothing,
-            }),
+            | "quartic" | "text" | "prism" | "lathe" | "blob" | "object" | "union"
+            | "intersection" | "difference" | "merge" => {
+                Ok(match self.eval_object(head, block, stream)? {
+                    Some(object) => Value::Object(std::sync::Arc::new(object)),
+                    None => Value::Nothing,
+                })
+            }
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
             "background" => {

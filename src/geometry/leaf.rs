@@ -8,6 +8,7 @@
 //! at build time; otherwise the leaf keeps only the world-to-local map. A degenerate shape or
 //! a singular or non-finite transform gives an empty leaf that nothing hits.
 
+use super::blob::Blob;
 use super::extrusion::ExtrudedOutline;
 use super::flat::{Cuboid, Disc, Plane, Triangle};
 use super::lathe::Lathe;
@@ -53,6 +54,8 @@ pub enum LocalShape {
     Extrusion(Box<ExtrudedOutline>),
     /// A surface of revolution.
     Lathe(Box<Lathe>),
+    /// A blob.
+    Blob(Box<Blob>),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -116,6 +119,7 @@ impl LocalShape {
                     .map(|p| Self::Extrusion(Box::new(p)))
             }
             Shape::Lathe(ref segments) => Lathe::new(segments).map(|l| Self::Lathe(Box::new(l))),
+            Shape::Blob(ref blob) => Blob::new(blob).map(|b| Self::Blob(Box::new(b))),
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -177,6 +181,7 @@ impl LocalShape {
             LocalShape::Poly(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Extrusion(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Lathe(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Blob(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -196,6 +201,7 @@ impl LocalShape {
             LocalShape::Poly(shape) => shape.inside(point),
             LocalShape::Extrusion(shape) => shape.inside(point),
             LocalShape::Lathe(shape) => shape.inside(point),
+            LocalShape::Blob(shape) => shape.inside(point),
         }
     }
 
@@ -216,6 +222,7 @@ impl LocalShape {
             LocalShape::Poly(shape) => shape.normal(point),
             LocalShape::Extrusion(shape) => shape.normal(point, part),
             LocalShape::Lathe(shape) => shape.normal(point, part),
+            LocalShape::Blob(shape) => shape.normal(point),
         }
     }
 
@@ -234,6 +241,7 @@ impl LocalShape {
             LocalShape::Polygon(shape) => Some(shape.bounds()),
             LocalShape::Extrusion(shape) => Some(shape.bounds()),
             LocalShape::Lathe(shape) => Some(shape.bounds()),
+            LocalShape::Blob(shape) => Some(shape.bounds()),
         }
     }
 
@@ -267,6 +275,7 @@ impl LocalShape {
             | LocalShape::Quadric(_)
             | LocalShape::Poly(_)
             | LocalShape::Disc(_) => InsideReach::Unbounded,
+            LocalShape::Blob(blob) if blob.inside_everywhere_far() => InsideReach::Unbounded,
             _ => InsideReach::Bounded,
         }
     }

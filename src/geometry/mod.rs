@@ -8,6 +8,7 @@
 //! surfaces) and are never turned towards the ray; pattern transforms inside materials map
 //! pattern space to world space.
 
+mod blob;
 mod build;
 mod csg;
 mod extrusion;

@@ -232,6 +232,9 @@ pub enum Shape {
     /// `prism { .. }` with `linear_sweep`: an outline in the XZ plane swept along Y (the
     /// extrusion's depth is the Y extent; its X and Y are the prism's X and Z).
     Prism(Arc<Extrusion>),
+    /// `blob { .. }`: a field of spherical and cylindrical components, surface at the
+    /// threshold.
+    Blob(Arc<Blob>),
     /// `lathe { .. }`: a curve in the (radius, height) plane, as cubic Béziers of `<r, y>`
     /// points, turned around the Y axis.
     Lathe(Arc<Vec<[glam::DVec2; 4]>>),
@@ -291,6 +294,37 @@ pub struct Extrusion {
     pub depth: (f64, f64),
     /// Without caps (a prism's `open`).
     pub open: bool,
+}
+
+/// A `blob`: the surface where the summed component fields equal the threshold.
+#[derive(Clone, Debug)]
+pub struct Blob {
+    /// The field value of the surface (default 1).
+    pub threshold: f64,
+    /// The components, each with its own transform into the blob's space.
+    pub components: Vec<BlobComponent>,
+}
+
+/// One blob component: field `strength * (1 - (d / radius)²)²` within `radius`.
+#[derive(Clone, Debug)]
+pub struct BlobComponent {
+    /// Sphere or cylinder (with hemispherical caps).
+    pub kind: BlobKind,
+    /// Radius of influence.
+    pub radius: f64,
+    /// Field value at the centre (or axis); may be negative.
+    pub strength: f64,
+    /// Maps the component's space into the blob's.
+    pub transform: Transform,
+}
+
+/// The shape of a blob component's field.
+#[derive(Clone, Copy, Debug)]
+pub enum BlobKind {
+    /// Distance to a point.
+    Sphere { centre: DVec3 },
+    /// Distance to a segment.
+    Cylinder { end1: DVec3, end2: DVec3 },
 }
 
 /// The four CSG operations.
