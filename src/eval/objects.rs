@@ -104,6 +104,14 @@ impl Evaluator {
             "prism" => self.eval_prism(block.head_span, stream)?,
             "lathe" => self.eval_lathe(block.head_span, stream)?,
             "blob" => self.eval_blob(stream)?,
+            "superellipsoid" => {
+                let (value, span) = self.expect_value(stream, "<east-west, north-south>")?;
+                let exponents = self.to_vector3(value, span)?;
+                Shape::Superellipsoid {
+                    east_west: exponents.x,
+                    north_south: exponents.y,
+                }
+            }
             "sphere" => {
                 let centre = self.expect_vector(stream, "the centre")?;
                 let radius = self.expect_float(stream, "the radius")?;

@@ -50,6 +50,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "prism",
     "lathe",
     "blob",
+    "superellipsoid",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -81,7 +82,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "sor",
     "sphere_sweep",
     "spline",
-    "superellipsoid",
     "ovus",
     "lemon",
     "density",
@@ -131,8 +131,8 @@ impl Evaluator {
         match head {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
-            | "quartic" | "text" | "prism" | "lathe" | "blob" | "object" | "union"
-            | "intersection" | "difference" | "merge" => {
+            | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "object"
+            | "union" | "intersection" | "difference" | "merge" => {
                 Ok(match self.eval_object(head, block, stream)? {
                     Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,

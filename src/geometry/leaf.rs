@@ -17,6 +17,7 @@ use super::polygon::{Polygon, SmoothTriangle};
 use super::quadric::Quadric;
 use super::roots::Roots;
 use super::round::{Cone, Sphere};
+use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
 use super::Ray;
 use crate::accel::Aabb;
@@ -56,6 +57,8 @@ pub enum LocalShape {
     Lathe(Box<Lathe>),
     /// A blob.
     Blob(Box<Blob>),
+    /// A superellipsoid.
+    Superellipsoid(Superellipsoid),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -120,6 +123,10 @@ impl LocalShape {
             }
             Shape::Lathe(ref segments) => Lathe::new(segments).map(|l| Self::Lathe(Box::new(l))),
             Shape::Blob(ref blob) => Blob::new(blob).map(|b| Self::Blob(Box::new(b))),
+            Shape::Superellipsoid {
+                east_west,
+                north_south,
+            } => Superellipsoid::new(east_west, north_south).map(Self::Superellipsoid),
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -182,6 +189,7 @@ impl LocalShape {
             LocalShape::Extrusion(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Lathe(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Blob(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Superellipsoid(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -202,6 +210,7 @@ impl LocalShape {
             LocalShape::Extrusion(shape) => shape.inside(point),
             LocalShape::Lathe(shape) => shape.inside(point),
             LocalShape::Blob(shape) => shape.inside(point),
+            LocalShape::Superellipsoid(shape) => shape.inside(point),
         }
     }
 
@@ -223,6 +232,7 @@ impl LocalShape {
             LocalShape::Extrusion(shape) => shape.normal(point, part),
             LocalShape::Lathe(shape) => shape.normal(point, part),
             LocalShape::Blob(shape) => shape.normal(point),
+            LocalShape::Superellipsoid(shape) => shape.normal(point),
         }
     }
 
@@ -242,6 +252,7 @@ impl LocalShape {
             LocalShape::Extrusion(shape) => Some(shape.bounds()),
             LocalShape::Lathe(shape) => Some(shape.bounds()),
             LocalShape::Blob(shape) => Some(shape.bounds()),
+            LocalShape::Superellipsoid(shape) => Some(shape.bounds()),
         }
     }
 

@@ -235,6 +235,8 @@ pub enum Shape {
     /// `blob { .. }`: a field of spherical and cylindrical components, surface at the
     /// threshold.
     Blob(Arc<Blob>),
+    /// `superellipsoid { <e, n> }`: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1.
+    Superellipsoid { east_west: f64, north_south: f64 },
     /// `lathe { .. }`: a curve in the (radius, height) plane, as cubic Béziers of `<r, y>`
     /// points, turned around the Y axis.
     Lathe(Arc<Vec<[glam::DVec2; 4]>>),

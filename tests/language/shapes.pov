@@ -49,3 +49,6 @@ union { object { L1 } object { L2 } object { L3 } }
 #declare B1 = blob { threshold 0.5 sphere { 0, 1, 1 pigment { rgb 1 } translate x } cylinder { 0, x, 0.5, strength -1 } component 1, 1, <0, 1, 0> sturm hierarchy off }
 #declare B2 = blob { sphere { 0, 0, 1 } pigment { rgb 1 } threshold 0.2 }
 union { object { B1 } object { B2 } }
+#declare Se = superellipsoid { <0.5, 1> pigment { rgb 1 } }
+#declare Se2 = superellipsoid { <0, -1> }
+union { object { Se } object { Se2 } }
