@@ -104,6 +104,25 @@ impl Evaluator {
             "prism" => self.eval_prism(block.head_span, stream)?,
             "lathe" => self.eval_lathe(block.head_span, stream)?,
             "blob" => self.eval_blob(stream)?,
+            "sor" => {
+                let count = self.expect_float(stream, "the number of points")?;
+                if !(0.0..=1e7).contains(&count) {
+                    return Err(self
+                        .error(
+                            block.head_span,
+                            format!("a sor needs 4 to 10000000 points, found {count}"),
+                        )
+                        .into());
+                }
+                let mut points = Vec::with_capacity(count as usize);
+                for _ in 0..count as usize {
+                    points.push(self.expect_vector(stream, "a point")?.truncate());
+                }
+                Shape::Sor {
+                    points: Arc::new(points),
+                    open: false,
+                }
+            }
             "superellipsoid" => {
                 let (value, span) = self.expect_value(stream, "<east-west, north-south>")?;
                 let exponents = self.to_vector3(value, span)?;
@@ -213,6 +232,7 @@ impl Evaluator {
                 "open" => match &mut object.shape {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
                     Shape::Prism(prism) => Arc::make_mut(prism).open = true,
+                    Shape::Sor { open, .. } => *open = true,
                     _ => return Err(self.unexpected_in(&item, head)),
                 },
                 "sturm" => {

@@ -51,6 +51,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "lathe",
     "blob",
     "superellipsoid",
+    "sor",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -79,7 +80,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "photons",
     "rainbow",
     "sky_sphere",
-    "sor",
     "sphere_sweep",
     "spline",
     "ovus",
@@ -131,8 +131,8 @@ impl Evaluator {
         match head {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
-            | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "object"
-            | "union" | "intersection" | "difference" | "merge" => {
+            | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
+            | "object" | "union" | "intersection" | "difference" | "merge" => {
                 Ok(match self.eval_object(head, block, stream)? {
                     Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,

@@ -17,6 +17,7 @@ use super::polygon::{Polygon, SmoothTriangle};
 use super::quadric::Quadric;
 use super::roots::Roots;
 use super::round::{Cone, Sphere};
+use super::sor::Sor;
 use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
 use super::Ray;
@@ -59,6 +60,8 @@ pub enum LocalShape {
     Blob(Box<Blob>),
     /// A superellipsoid.
     Superellipsoid(Superellipsoid),
+    /// A surface of revolution.
+    Sor(Box<Sor>),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -127,6 +130,9 @@ impl LocalShape {
                 east_west,
                 north_south,
             } => Superellipsoid::new(east_west, north_south).map(Self::Superellipsoid),
+            Shape::Sor { ref points, open } => {
+                Sor::new(points, open).map(|s| Self::Sor(Box::new(s)))
+            }
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -190,6 +196,7 @@ impl LocalShape {
             LocalShape::Lathe(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Blob(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Superellipsoid(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Sor(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -211,6 +218,7 @@ impl LocalShape {
             LocalShape::Lathe(shape) => shape.inside(point),
             LocalShape::Blob(shape) => shape.inside(point),
             LocalShape::Superellipsoid(shape) => shape.inside(point),
+            LocalShape::Sor(shape) => shape.inside(point),
         }
     }
 
@@ -233,6 +241,7 @@ impl LocalShape {
             LocalShape::Lathe(shape) => shape.normal(point, part),
             LocalShape::Blob(shape) => shape.normal(point),
             LocalShape::Superellipsoid(shape) => shape.normal(point),
+            LocalShape::Sor(shape) => shape.normal(point, part),
         }
     }
 
@@ -253,6 +262,7 @@ impl LocalShape {
             LocalShape::Lathe(shape) => Some(shape.bounds()),
             LocalShape::Blob(shape) => Some(shape.bounds()),
             LocalShape::Superellipsoid(shape) => Some(shape.bounds()),
+            LocalShape::Sor(shape) => Some(shape.bounds()),
         }
     }
 

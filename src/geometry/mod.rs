@@ -21,6 +21,7 @@ mod polygon;
 mod quadric;
 mod roots;
 mod round;
+mod sor;
 mod superellipsoid;
 mod torus;
 mod world;

@@ -237,6 +237,11 @@ pub enum Shape {
     Blob(Arc<Blob>),
     /// `superellipsoid { <e, n> }`: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1.
     Superellipsoid { east_west: f64, north_south: f64 },
+    /// `sor { n, <r, h>.. [open] }`: radius² as a cubic spline of the height, turned around Y.
+    Sor {
+        points: Arc<Vec<glam::DVec2>>,
+        open: bool,
+    },
     /// `lathe { .. }`: a curve in the (radius, height) plane, as cubic Béziers of `<r, y>`
     /// points, turned around the Y axis.
     Lathe(Arc<Vec<[glam::DVec2; 4]>>),

@@ -52,3 +52,6 @@ union { object { B1 } object { B2 } }
 #declare Se = superellipsoid { <0.5, 1> pigment { rgb 1 } }
 #declare Se2 = superellipsoid { <0, -1> }
 union { object { Se } object { Se2 } }
+#declare So = sor { 4, <1, -1>, <1, 0>, <1, 1>, <1, 2> open sturm }
+#declare So2 = sor { 4, <1, 0>, <1, 0>, <1, 0>, <1, 0> }
+union { object { So } object { So2 } }
