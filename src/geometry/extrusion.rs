@@ -97,6 +97,8 @@ pub struct ExtrudedOutline {
     open: bool,
     /// A prism: the outline is in local XZ and the sweep runs along Y.
     along_y: bool,
+    /// Conic sweep: at depth z the outline is scaled by z (apex at the origin).
+    conic: bool,
     near_depth: f64,
     far_depth: f64,
     /// 2-D bounds of the outline.
@@ -111,6 +113,7 @@ impl ExtrudedOutline {
         depth: (f64, f64),
         open: bool,
         along_y: bool,
+        conic: bool,
     ) -> Option<ExtrudedOutline> {
         let (near_depth, far_depth) = (depth.0.min(depth.1), depth.0.max(depth.1));
         let finite = segments.iter().flatten().all(|p| p.is_finite());
@@ -128,6 +131,7 @@ impl ExtrudedOutline {
             segments: segments.iter().copied().map(Segment::from_points).collect(),
             open,
             along_y,
+            conic,
             near_depth,
             far_depth,
             min,
@@ -166,7 +170,10 @@ impl ExtrudedOutline {
         if direction.z != 0.0 && !self.open {
             for (depth, part) in [(self.near_depth, FRONT_CAP), (self.far_depth, BACK_CAP)] {
                 let t = (depth - origin.z) / direction.z;
-                let point = origin.truncate() + direction.truncate() * t;
+                let mut point = origin.truncate() + direction.truncate() * t;
+                if self.conic {
+                    point /= depth;
+                }
                 if self.covers(point) {
                     record(t, part);
                 }
@@ -174,7 +181,34 @@ impl ExtrudedOutline {
         }
         let flat_direction = direction.truncate();
         let flat_speed = flat_direction.length_squared();
-        if flat_speed > 0.0 {
+        if self.conic {
+            // The plane through the apex and the line meets the outline's plane z = 1 in a
+            // line; each crossing there gives a ray from the apex to meet.
+            let plane = origin.cross(direction);
+            for (index, segment) in self.segments.iter().enumerate() {
+                let (found, found_count) =
+                    segment.crossings_with_line(DVec2::new(plane.x, plane.y), -plane.z);
+                for &s in &found[..found_count] {
+                    let spot = segment.at(s);
+                    let across_x = direction.x - spot.x * direction.z;
+                    let across_y = direction.y - spot.y * direction.z;
+                    let t = if across_x.abs() >= across_y.abs() {
+                        (spot.x * origin.z - origin.x) / across_x
+                    } else {
+                        (spot.y * origin.z - origin.y) / across_y
+                    };
+                    let z = origin.z + direction.z * t;
+                    if z >= self.near_depth && z <= self.far_depth {
+                        let part = if index + 2 < UNKNOWN_SIDE as usize {
+                            index as u8 + 2
+                        } else {
+                            UNKNOWN_SIDE
+                        };
+                        record(t, part);
+                    }
+                }
+            }
+        } else if flat_speed > 0.0 {
             let flat_origin = origin.truncate();
             let normal = flat_direction.perp();
             let offset = normal.dot(flat_origin);
@@ -211,7 +245,15 @@ impl ExtrudedOutline {
     /// True when `point` is within the depth and its XY position is in the region.
     pub fn inside(&self, point: DVec3) -> bool {
         let point = self.swizzle(point);
-        point.z >= self.near_depth && point.z <= self.far_depth && self.covers(point.truncate())
+        let flat = if self.conic {
+            if point.z == 0.0 {
+                return false;
+            }
+            point.truncate() / point.z
+        } else {
+            point.truncate()
+        };
+        point.z >= self.near_depth && point.z <= self.far_depth && self.covers(flat)
     }
 
     /// Outward normal at the surface `point` of part `part`.
@@ -235,6 +277,28 @@ impl ExtrudedOutline {
         match part {
             FRONT_CAP => -DVec3::Z,
             BACK_CAP => DVec3::Z,
+            _ if self.conic => {
+                let flat = if point.z != 0.0 {
+                    point.truncate() / point.z
+                } else {
+                    point.truncate()
+                };
+                let (segment, s) = self.side_segment(flat, part);
+                let tangent = segment.tangent(s).extend(0.0);
+                let mut normal = tangent.cross(flat.extend(1.0));
+                let length = normal.length();
+                if length == 0.0 || !length.is_finite() {
+                    return DVec3::X;
+                }
+                normal /= length;
+                let step =
+                    1e-6 * (self.max - self.min).max_element().max(1e-9) * point.z.abs().max(1e-9);
+                let probe = point + normal * step;
+                if probe.z != 0.0 && self.covers(probe.truncate() / probe.z) {
+                    normal = -normal;
+                }
+                normal
+            }
             _ => {
                 let flat = point.truncate();
                 let (segment, s) = if part == UNKNOWN_SIDE {
@@ -263,6 +327,19 @@ impl ExtrudedOutline {
         }
     }
 
+    /// The side segment of part `part` (or the closest one) and the parameter nearest `flat`.
+    fn side_segment(&self, flat: DVec2, part: u8) -> (Segment, f64) {
+        if part == UNKNOWN_SIDE {
+            return self.closest_segment(flat);
+        }
+        let segment = self
+            .segments
+            .get(usize::from(part - 2))
+            .copied()
+            .unwrap_or(self.segments[0]);
+        (segment, closest_parameter(&segment, flat))
+    }
+
     /// The segment passing closest to `point`, with the parameter of the closest point.
     fn closest_segment(&self, point: DVec2) -> (Segment, f64) {
         let mut best = (self.segments[0], 0.0, f64::INFINITY);
@@ -278,6 +355,15 @@ impl ExtrudedOutline {
 
     /// Bounds of the extruded outline.
     pub fn bounds(&self) -> Aabb {
+        if self.conic {
+            let corners = [self.near_depth, self.far_depth].map(|depth| {
+                [
+                    self.swizzle((self.min * depth).extend(depth)),
+                    self.swizzle((self.max * depth).extend(depth)),
+                ]
+            });
+            return Aabb::from_points(corners.into_iter().flatten());
+        }
         Aabb::from_points([
             self.swizzle(self.min.extend(self.near_depth)),
             self.swizzle(self.max.extend(self.far_depth)),
@@ -341,7 +427,7 @@ mod tests {
             (0..4).map(move |i| line(c[i], c[(i + 1) % 4]))
         };
         let segments: Vec<_> = square(2.0).chain(square(1.0)).collect();
-        ExtrudedOutline::new(&segments, (0.0, 1.0), false, false).unwrap()
+        ExtrudedOutline::new(&segments, (0.0, 1.0), false, false, false).unwrap()
     }
 
     #[test]
@@ -355,7 +441,7 @@ mod tests {
         let segments: Vec<_> = (0..4)
             .map(|i| line(square[i], square[(i + 1) % 4]))
             .collect();
-        let prism = ExtrudedOutline::new(&segments, (0.0, 2.0), false, true).unwrap();
+        let prism = ExtrudedOutline::new(&segments, (0.0, 2.0), false, true, false).unwrap();
         assert!(prism.inside(DVec3::new(0.5, 1.5, 0.5)));
         assert!(!prism.inside(DVec3::new(0.5, 2.5, 0.5)));
         let mut roots = Roots::new();
@@ -365,7 +451,7 @@ mod tests {
         assert!(prism
             .normal(DVec3::new(0.0, 2.0, 0.0), part)
             .abs_diff_eq(DVec3::Y, 1e-12));
-        let open = ExtrudedOutline::new(&segments, (0.0, 2.0), true, true).unwrap();
+        let open = ExtrudedOutline::new(&segments, (0.0, 2.0), true, true, false).unwrap();
         let mut roots = Roots::new();
         open.intersect(DVec3::new(0.0, 5.0, 0.0), -DVec3::Y, &mut roots);
         assert_eq!(roots.iter().count(), 0);
@@ -373,6 +459,37 @@ mod tests {
             .bounds()
             .max
             .abs_diff_eq(DVec3::new(1.0, 2.0, 1.0), 1e-12));
+    }
+
+    #[test]
+    fn conic_pyramid_grows_with_depth() {
+        let square = [
+            DVec2::new(-1.0, -1.0),
+            DVec2::new(1.0, -1.0),
+            DVec2::new(1.0, 1.0),
+            DVec2::new(-1.0, 1.0),
+        ];
+        let segments: Vec<_> = (0..4)
+            .map(|i| line(square[i], square[(i + 1) % 4]))
+            .collect();
+        let pyramid = ExtrudedOutline::new(&segments, (0.0, 2.0), false, false, true).unwrap();
+        assert!(pyramid.inside(DVec3::new(0.4, 0.0, 0.5)));
+        assert!(!pyramid.inside(DVec3::new(0.6, 0.0, 0.5)));
+        let mut roots = Roots::new();
+        pyramid.intersect(DVec3::new(-5.0, 0.0, 1.0), DVec3::X, &mut roots);
+        let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
+        found.sort_by(f64::total_cmp);
+        assert_eq!(found, vec![4.0, 6.0]);
+        let (t, part) = roots.nearest_within(0.0, 10.0).unwrap();
+        let normal = pyramid.normal(DVec3::new(-5.0 + t, 0.0, 1.0), part);
+        assert!(
+            normal.abs_diff_eq(DVec3::new(-1.0, 0.0, -1.0).normalize(), 1e-9),
+            "{normal}"
+        );
+        assert!(pyramid
+            .bounds()
+            .max
+            .abs_diff_eq(DVec3::new(2.0, 2.0, 2.0), 1e-12));
     }
 
     #[test]
@@ -414,7 +531,7 @@ mod tests {
                 DVec2::new(-1.0, 0.0),
             ],
         ];
-        let shape = ExtrudedOutline::new(&segments, (-0.5, 0.5), false, false).unwrap();
+        let shape = ExtrudedOutline::new(&segments, (-0.5, 0.5), false, false, false).unwrap();
         let mut state = 99u64;
         let mut random = || {
             state = state
@@ -443,8 +560,8 @@ mod tests {
     #[test]
     fn degenerate_extrusions_are_rejected() {
         let segment = [line(DVec2::ZERO, DVec2::X)];
-        assert!(ExtrudedOutline::new(&[], (0.0, 1.0), false, false).is_none());
-        assert!(ExtrudedOutline::new(&segment, (1.0, 1.0), false, false).is_none());
-        assert!(ExtrudedOutline::new(&segment, (0.0, f64::NAN), false, true).is_none());
+        assert!(ExtrudedOutline::new(&[], (0.0, 1.0), false, false, false).is_none());
+        assert!(ExtrudedOutline::new(&segment, (1.0, 1.0), false, false, false).is_none());
+        assert!(ExtrudedOutline::new(&segment, (0.0, f64::NAN), false, true, false).is_none());
     }
 }

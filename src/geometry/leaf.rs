@@ -121,7 +121,7 @@ impl LocalShape {
                 PolySurface::new(poly.order, &poly.coefficients).map(|p| Self::Poly(Box::new(p)))
             }
             Shape::Prism(ref prism) => {
-                ExtrudedOutline::new(&prism.segments, prism.depth, prism.open, true)
+                ExtrudedOutline::new(&prism.segments, prism.depth, prism.open, true, prism.conic)
                     .map(|p| Self::Extrusion(Box::new(p)))
             }
             Shape::Lathe(ref segments) => Lathe::new(segments).map(|l| Self::Lathe(Box::new(l))),
@@ -160,7 +160,7 @@ impl LocalShape {
             Shape::Text(glyphs) => glyphs
                 .iter()
                 .filter_map(|glyph| {
-                    ExtrudedOutline::new(&glyph.segments, glyph.depth, glyph.open, false)
+                    ExtrudedOutline::new(&glyph.segments, glyph.depth, glyph.open, false, false)
                 })
                 .map(|glyph| Self::Extrusion(Box::new(glyph)))
                 .collect(),

@@ -100,6 +100,7 @@ fn prism_and_poly_in_the_world() {
         segments,
         depth: (0.0, 2.0),
         open: false,
+        conic: false,
     })));
     let down = Ray::new(DVec3::new(0.5, 5.0, 0.5), -DVec3::Y);
     assert_eq!(distances(vec![prism], down), vec![3.0, 5.0]);

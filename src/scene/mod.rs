@@ -229,8 +229,8 @@ pub enum Shape {
     Poly(Arc<Poly>),
     /// `text { ttf .. }`: one extruded outline per glyph, already laid out.
     Text(Arc<Vec<Extrusion>>),
-    /// `prism { .. }` with `linear_sweep`: an outline in the XZ plane swept along Y (the
-    /// extrusion's depth is the Y extent; its X and Y are the prism's X and Z).
+    /// `prism { .. }`: an outline in the XZ plane swept along Y (the extrusion's depth is the
+    /// Y extent; its X and Y are the prism's X and Z).
     Prism(Arc<Extrusion>),
     /// `blob { .. }`: a field of spherical and cylindrical components, surface at the
     /// threshold.
@@ -301,6 +301,8 @@ pub struct Extrusion {
     pub depth: (f64, f64),
     /// Without caps (a prism's `open`).
     pub open: bool,
+    /// `conic_sweep`: at depth z the outline is scaled by z (apex at the origin).
+    pub conic: bool,
 }
 
 /// A `blob`: the surface where the summed component fields equal the threshold.

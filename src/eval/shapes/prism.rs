@@ -3,14 +3,13 @@
 //!
 //! In: the item stream after the brace. Out: [`Shape::Prism`] or [`Shape::Lathe`] with every spline turned into
 //! cubic Bézier segments. Holds: sub-prisms close where their start point repeats (a linear
-//! spline's last one closes itself); `conic_sweep` is not supported yet and leaves the prism
-//! out with a warning.
+//! spline's last one closes itself).
 
 use super::super::stream::Stream;
 use super::super::{EvalResult, Evaluator};
 use super::text::line_segment;
 use crate::diag::Span;
-use crate::scene::{CsgOperation, Extrusion, Shape};
+use crate::scene::{Extrusion, Shape};
 use crate::syntax::ast::Item;
 use glam::DVec2;
 use std::sync::Arc;
@@ -219,20 +218,11 @@ impl Evaluator {
                 .with_label("check the spline type and the number of points")
                 .into());
         };
-        if conic {
-            self.warn(
-                span,
-                "`conic_sweep` prisms are not supported yet; it is left out",
-            );
-            return Ok(Shape::Csg {
-                operation: CsgOperation::Union,
-                children: Vec::new(),
-            });
-        }
         Ok(Shape::Prism(Arc::new(Extrusion {
             segments,
             depth: (first_height, second_height),
             open: false,
+            conic,
         })))
     }
 }

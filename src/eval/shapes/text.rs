@@ -138,6 +138,7 @@ pub(crate) fn layout_text(
                 segments: collector.segments,
                 depth: (0.0, thickness),
                 open: false,
+                conic: false,
             });
         }
         let advance = face.glyph_hor_advance(glyph).map_or(0.0, f64::from);
