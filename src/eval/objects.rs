@@ -50,6 +50,13 @@ impl Evaluator {
                 });
                 while let Some(item) = self.next_item(stream)? {
                     let child = match &item {
+                        Item::Block(b)
+                            if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
+                                if &**w == "clipped_by" || &**w == "bounded_by") =>
+                        {
+                            self.object_modifier(&mut object, item, stream, head)?;
+                            None
+                        }
                         Item::Block(b) => match self.eval_block(b)? {
                             Value::Object(o) => Some(o),
                             Value::Light(light) => {
@@ -87,8 +94,43 @@ impl Evaluator {
 
     /// Reads a shape's required parameters.
     fn eval_shape(&mut self, head: &str, block: &Block, stream: &mut Stream) -> EvalResult<Shape> {
-        let _ = block;
         Ok(match head {
+            "smooth_triangle" => self.eval_smooth_triangle(stream)?,
+            "polygon" => self.eval_polygon(block.head_span, stream)?,
+            "mesh" => self.eval_mesh(stream)?,
+            "mesh2" => self.eval_mesh2(block.head_span, stream)?,
+            "poly" | "cubic" | "quartic" => self.eval_poly(head, block.head_span, stream)?,
+            "text" => self.eval_text(block.head_span, stream)?,
+            "prism" => self.eval_prism(block.head_span, stream)?,
+            "lathe" => self.eval_lathe(block.head_span, stream)?,
+            "blob" => self.eval_blob(stream)?,
+            "sor" => {
+                let count = self.expect_float(stream, "the number of points")?;
+                if !(0.0..=1e7).contains(&count) {
+                    return Err(self
+                        .error(
+                            block.head_span,
+                            format!("a sor needs 4 to 10000000 points, found {count}"),
+                        )
+                        .into());
+                }
+                let mut points = Vec::with_capacity(count as usize);
+                for _ in 0..count as usize {
+                    points.push(self.expect_vector(stream, "a point")?.truncate());
+                }
+                Shape::Sor {
+                    points: Arc::new(points),
+                    open: false,
+                }
+            }
+            "superellipsoid" => {
+                let (value, span) = self.expect_value(stream, "<east-west, north-south>")?;
+                let exponents = self.to_vector3(value, span)?;
+                Shape::Superellipsoid {
+                    east_west: exponents.x,
+                    north_south: exponents.y,
+                }
+            }
             "sphere" => {
                 let centre = self.expect_vector(stream, "the centre")?;
                 let radius = self.expect_float(stream, "the radius")?;
@@ -189,12 +231,37 @@ impl Evaluator {
                 "hollow" => object.hollow = Some(self.optional_bool(stream)?),
                 "open" => match &mut object.shape {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
+                    Shape::Prism(prism) => Arc::make_mut(prism).open = true,
+                    Shape::Sor { open, .. } => *open = true,
                     _ => return Err(self.unexpected_in(&item, head)),
                 },
                 "sturm" => {
+                    let sturm = self.optional_bool(stream)?;
+                    if let Shape::Poly(poly) = &mut object.shape {
+                        Arc::make_mut(poly).sturm = sturm;
+                    }
+                }
+                "threshold" => {
+                    let threshold = self.expect_float(stream, "the threshold")?;
+                    match &mut object.shape {
+                        Shape::Blob(blob) => Arc::make_mut(blob).threshold = threshold,
+                        _ => return Err(self.unexpected_in(&item, head)),
+                    }
+                }
+                "inside_vector" => {
+                    let vector = self.expect_vector(stream, "the inside vector")?;
+                    match &mut object.shape {
+                        Shape::Mesh(mesh) => Arc::make_mut(mesh).inside_vector = Some(vector),
+                        _ => return Err(self.unexpected_in(&item, head)),
+                    }
+                }
+                "hierarchy" => {
                     let _ = self.optional_bool(stream)?;
                 }
-                "double_illuminate" | "no_image" | "no_reflection" | "no_radiosity" => {
+                "no_image" => object.no_image = self.optional_bool(stream)?,
+                "no_reflection" => object.no_reflection = self.optional_bool(stream)?,
+                "double_illuminate" => object.double_illuminate = self.optional_bool(stream)?,
+                "no_radiosity" => {
                     self.warn(
                         *span,
                         format!("`{word}` is not supported yet; it is ignored"),
@@ -213,6 +280,9 @@ impl Evaluator {
                             object.interior = Some(interior);
                         }
                         return Ok(());
+                    }
+                    if &**w == "clipped_by" || &**w == "bounded_by" {
+                        return self.eval_clip_or_bound(object, w, block);
                     }
                     if &**w == "finish" {
                         let base = self.object_texture(object);
@@ -276,6 +346,45 @@ impl Evaluator {
                     .with_label("not an object modifier")
                     .into())
             }
+        }
+        Ok(())
+    }
+
+    /// `clipped_by { objects | bounded_by }` or `bounded_by { objects | clipped_by }`; the
+    /// objects are stored in the object's local space, so later transformations move them.
+    fn eval_clip_or_bound(
+        &mut self,
+        object: &mut Object,
+        word: &str,
+        block: &Block,
+    ) -> EvalResult<()> {
+        let mut body = Stream::new(block.body.clone());
+        let mut found = Vec::new();
+        while let Some(item) = self.next_item(&mut body)? {
+            match &item {
+                Item::Keyword(other, _) if &**other == "bounded_by" && word == "clipped_by" => {
+                    found.extend(object.bounded_by.iter().cloned());
+                }
+                Item::Keyword(other, _) if &**other == "clipped_by" && word == "bounded_by" => {
+                    found.extend(object.clipped_by.iter().cloned());
+                }
+                Item::Comma(_) => {}
+                Item::Block(_) | Item::Expr(_) => match self.item_value(&item)? {
+                    Value::Object(child) => {
+                        let mut child = Arc::unwrap_or_clone(child);
+                        apply_transform(&mut child, &object.transform.inverse());
+                        found.push(child);
+                    }
+                    Value::Nothing => {}
+                    _ => return Err(self.unexpected_in(&item, word)),
+                },
+                _ => return Err(self.unexpected_in(&item, word)),
+            }
+        }
+        if word == "clipped_by" {
+            object.clipped_by.extend(found);
+        } else {
+            object.bounded_by.extend(found);
         }
         Ok(())
     }

@@ -39,12 +39,24 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "transform",
     "triangle",
     "union",
+    "smooth_triangle",
+    "polygon",
+    "mesh",
+    "mesh2",
+    "poly",
+    "cubic",
+    "quartic",
+    "text",
+    "prism",
+    "lathe",
+    "blob",
+    "superellipsoid",
+    "sor",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
 const UNSUPPORTED_BLOCKS: &[&str] = &[
     "bicubic_patch",
-    "blob",
     "fog",
     "bounded_by",
     "clipped_by",
@@ -63,25 +75,13 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "height_field",
     "isosurface",
     "julia_fractal",
-    "lathe",
     "media",
-    "mesh",
-    "mesh2",
     "parametric",
     "photons",
-    "poly",
-    "polygon",
-    "prism",
     "rainbow",
     "sky_sphere",
-    "smooth_triangle",
-    "sor",
     "sphere_sweep",
     "spline",
-    "superellipsoid",
-    "text",
-    "cubic",
-    "quartic",
     "ovus",
     "lemon",
     "density",
@@ -130,7 +130,9 @@ impl Evaluator {
         let stream = &mut stream;
         match head {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
-            | "triangle" | "object" | "union" | "intersection" | "difference" | "merge" => {
+            | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
+            | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
+            | "object" | "union" | "intersection" | "difference" | "merge" => {
                 Ok(match self.eval_object(head, block, stream)? {
                     Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,

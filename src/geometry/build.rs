@@ -12,6 +12,7 @@
 //! intersection; triangles ignore inversion.
 
 use super::csg::{Combination, CsgNode, CsgTree, NodeBounds};
+use super::instance::{MeshGeometry, MeshInstance};
 use super::leaf::{Leaf, LocalShape};
 use super::Material;
 use crate::accel::Aabb;
@@ -36,6 +37,8 @@ pub enum Primitive {
     Leaf(Leaf),
     /// A CSG object evaluated as a whole.
     Csg(Box<CsgTree>),
+    /// One placement of a shared mesh.
+    Mesh(Box<MeshInstance>),
 }
 
 /// What the builder produces.
@@ -84,15 +87,26 @@ struct Appearance {
     texture_key: TextureKey,
     interior: Interior,
     interior_key: InteriorKey,
+    flags: Flags,
+}
+
+/// The object flags a material carries, inherited from ancestors.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+struct Flags {
     no_shadow: bool,
+    no_image: bool,
+    no_reflection: bool,
+    double_illuminate: bool,
 }
 
 /// Working state of one build.
 struct Builder {
     materials: Vec<Material>,
-    material_of: HashMap<(TextureKey, InteriorKey, bool), u32>,
+    material_of: HashMap<(TextureKey, InteriorKey, Flags), u32>,
     next_owner: usize,
     leaf_count: usize,
+    /// Prepared geometry of each scene mesh placed at top level, by the mesh's address.
+    meshes: HashMap<usize, Arc<MeshGeometry>>,
 }
 
 /// Builds primitives and materials from the scene's top-level objects.
@@ -102,13 +116,14 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
         material_of: HashMap::new(),
         next_owner: 0,
         leaf_count: 0,
+        meshes: HashMap::new(),
     };
     let appearance = Appearance {
         texture: Arc::new(Texture::default()),
         texture_key: TextureKey::Default,
         interior: Interior::default(),
         interior_key: InteriorKey::Default,
-        no_shadow: false,
+        flags: Flags::default(),
     };
     let mut primitives = Vec::new();
     for object in objects {
@@ -170,6 +185,28 @@ fn pigment_to_world(pigment: &Pigment, world_from_owner: &Transform) -> Pigment 
 /// later does not change its box, so an inverted CSG object is cut off at the box of the object
 /// it came from: rays that miss the box miss the object.
 fn pov_bounding_box(object: &Object) -> Option<Aabb> {
+    let unclipped = unclipped_pov_bounding_box(object);
+    let parent_from_local = &object.transform.outer_from_inner;
+    // A clipped object's box is cut to the boxes of its (not inverted) clipping objects.
+    object
+        .clipped_by
+        .iter()
+        .filter(|clip| !(clip.inverse && invertible(&clip.shape)))
+        .filter_map(pov_bounding_box)
+        .map(|clip| {
+            if clip.is_empty() {
+                Aabb::EMPTY
+            } else {
+                clip.transformed(parent_from_local)
+            }
+        })
+        .fold(unclipped, |all, clip| {
+            Some(all.map_or(clip, |all| all.intersection(&clip)))
+        })
+}
+
+/// [`pov_bounding_box`] ignoring `clipped_by`.
+fn unclipped_pov_bounding_box(object: &Object) -> Option<Aabb> {
     let parent_from_local = &object.transform.outer_from_inner;
     let local = match &object.shape {
         Shape::Csg {
@@ -196,7 +233,15 @@ fn pov_bounding_box(object: &Object) -> Option<Aabb> {
             common?
         }
         shape if object.inverse && invertible(shape) => return None,
-        shape => return LocalShape::from_scene(shape).pov_bounds(parent_from_local),
+        shape => {
+            return LocalShape::pieces(shape)
+                .iter()
+                .try_fold(Aabb::EMPTY, |all, piece| {
+                    piece
+                        .pov_bounds(parent_from_local)
+                        .map(|bounds| all.union(&bounds))
+                })
+        }
     };
     if local.is_empty() {
         return Some(Aabb::EMPTY);
@@ -204,9 +249,13 @@ fn pov_bounding_box(object: &Object) -> Option<Aabb> {
     Some(local.transformed(parent_from_local))
 }
 
-/// False for shapes POV-Ray cannot invert (triangles): `inverse` leaves them unchanged.
+/// False for shapes POV-Ray cannot invert (triangles, polygons, meshes without an inside):
+/// `inverse` leaves them unchanged.
 fn invertible(shape: &Shape) -> bool {
-    !matches!(shape, Shape::Triangle { .. })
+    !matches!(
+        shape,
+        Shape::Triangle { .. } | Shape::SmoothTriangle { .. } | Shape::Polygon(_) | Shape::Mesh(_)
+    )
 }
 
 /// Pads bounds so box tests are conservative; non-finite bounds become unbounded.
@@ -249,7 +298,10 @@ impl Builder {
             appearance.interior = interior.clone();
             appearance.interior_key = InteriorKey::Owned(self.new_owner());
         }
-        appearance.no_shadow |= object.no_shadow;
+        appearance.flags.no_shadow |= object.no_shadow;
+        appearance.flags.no_image |= object.no_image;
+        appearance.flags.no_reflection |= object.no_reflection;
+        appearance.flags.double_illuminate |= object.double_illuminate;
         appearance
     }
 
@@ -258,7 +310,7 @@ impl Builder {
         let key = (
             appearance.texture_key,
             appearance.interior_key,
-            appearance.no_shadow,
+            appearance.flags,
         );
         if let Some(&index) = self.material_of.get(&key) {
             return index;
@@ -267,7 +319,10 @@ impl Builder {
         self.materials.push(Material {
             texture: Arc::clone(&appearance.texture),
             interior: appearance.interior.clone(),
-            no_shadow: appearance.no_shadow,
+            no_shadow: appearance.flags.no_shadow,
+            no_image: appearance.flags.no_image,
+            no_reflection: appearance.flags.no_reflection,
+            double_illuminate: appearance.flags.double_illuminate,
         });
         self.material_of.insert(key, index);
         index
@@ -291,7 +346,7 @@ impl Builder {
             Shape::Csg {
                 operation: CsgOperation::Union,
                 children,
-            } if !object.inverse => {
+            } if !object.inverse && object.clipped_by.is_empty() => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 enclosing_unions.push(object.transform.outer_from_inner);
                 for child in children {
@@ -305,7 +360,7 @@ impl Builder {
                 }
                 enclosing_unions.pop();
             }
-            Shape::Csg { .. } => {
+            shape if matches!(shape, Shape::Csg { .. }) || !object.clipped_by.is_empty() => {
                 let mut leaves = Vec::new();
                 let inversion = Inversion {
                     odd: false,
@@ -332,16 +387,35 @@ impl Builder {
                 let tree = CsgTree { leaves, root, clip };
                 out.push((Primitive::Csg(Box::new(tree)), surface));
             }
+            Shape::Mesh(mesh) => {
+                let appearance = self.appearance(object, &world_from_local, inherited);
+                let material = self.material(&appearance);
+                let geometry = self
+                    .meshes
+                    .entry(Arc::as_ptr(mesh) as usize)
+                    .or_insert_with(|| Arc::new(MeshGeometry::new(mesh)))
+                    .clone();
+                let triangles = geometry.len();
+                if let Some((instance, bounds)) =
+                    MeshInstance::new(geometry, &world_from_local, material)
+                {
+                    self.leaf_count += triangles;
+                    out.push((Primitive::Mesh(Box::new(instance)), padded(Some(bounds))));
+                }
+            }
             shape => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 let material = self.material(&appearance);
-                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, object.inverse);
-                let surface = padded(bounds.surface);
-                if leaf.is_empty() || surface.is_some_and(|bounds| bounds.is_empty()) {
-                    return;
+                for piece in LocalShape::pieces(shape) {
+                    let (leaf, bounds) =
+                        Leaf::from_local(piece, &world_from_local, material, object.inverse);
+                    let surface = padded(bounds.surface);
+                    if leaf.is_empty() || surface.is_some_and(|bounds| bounds.is_empty()) {
+                        continue;
+                    }
+                    self.leaf_count += 1;
+                    out.push((Primitive::Leaf(leaf), surface));
                 }
-                self.leaf_count += 1;
-                out.push((Primitive::Leaf(leaf), surface));
             }
         }
     }
@@ -364,6 +438,39 @@ impl Builder {
             odd: inherited_inversion.odd != object.inverse,
             any: inherited_inversion.any || object.inverse,
         };
+        let node = self.unclipped_node(object, &world_from_local, &appearance, inversion, leaves);
+        if object.clipped_by.is_empty() {
+            return node;
+        }
+        // The clipping objects are never inverted with the object: inverting a clipped
+        // object swaps its inside but keeps the same visible surfaces.
+        let upright = Inversion {
+            odd: false,
+            any: false,
+        };
+        let mut nodes = vec![node];
+        for clip in &object.clipped_by {
+            nodes.push(self.csg_node(clip, &world_from_local, &appearance, upright, leaves));
+        }
+        let combination = if inversion.odd {
+            Combination::InvertedClip
+        } else {
+            Combination::Clip
+        };
+        CsgNode::combine(combination, nodes)
+    }
+
+    /// The CSG node of `object` without its `clipped_by`.
+    fn unclipped_node(
+        &mut self,
+        object: &Object,
+        world_from_local: &Transform,
+        appearance: &Appearance,
+        inversion: Inversion,
+        leaves: &mut Vec<Leaf>,
+    ) -> CsgNode {
+        let world_from_local = *world_from_local;
+        let appearance = appearance.clone();
         match &object.shape {
             Shape::Csg {
                 operation,
@@ -401,15 +508,28 @@ impl Builder {
             }
             shape => {
                 let material = self.material(&appearance);
-                let (leaf, bounds) = Leaf::new(shape, &world_from_local, material, inversion.odd);
-                let index = leaves.len() as u32;
-                leaves.push(leaf);
-                self.leaf_count += 1;
-                let bounds = NodeBounds {
-                    surface: padded(bounds.surface),
-                    inside: padded(bounds.inside),
-                };
-                CsgNode::Leaf { index, bounds }
+                let mut nodes: Vec<CsgNode> = LocalShape::pieces(shape)
+                    .into_iter()
+                    .map(|piece| {
+                        let (leaf, bounds) =
+                            Leaf::from_local(piece, &world_from_local, material, inversion.odd);
+                        let index = leaves.len() as u32;
+                        leaves.push(leaf);
+                        self.leaf_count += 1;
+                        let bounds = NodeBounds {
+                            surface: padded(bounds.surface),
+                            inside: padded(bounds.inside),
+                        };
+                        CsgNode::Leaf { index, bounds }
+                    })
+                    .collect();
+                if nodes.len() == 1 {
+                    nodes
+                        .pop()
+                        .unwrap_or_else(|| CsgNode::combine(Combination::Union, Vec::new()))
+                } else {
+                    CsgNode::combine(Combination::Union, nodes)
+                }
             }
         }
     }

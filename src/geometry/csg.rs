@@ -26,6 +26,12 @@ pub enum Combination {
     Intersection,
     /// Surfaces of each child that lie inside no other child.
     Merge,
+    /// `clipped_by`: the surfaces of the first child that lie inside all later children (the
+    /// clipping objects, whose own surfaces are never seen); inside all children.
+    Clip,
+    /// A clipped object inverted: the same surfaces, but inside where the (already inverted)
+    /// first child is inside or any clipping object is not.
+    InvertedClip,
 }
 
 /// Bounds of a CSG subtree in world space.
@@ -78,6 +84,24 @@ impl CsgNode {
                     .iter()
                     .try_fold(Aabb::EMPTY, |all, b| Some(all.union(&b.inside?))),
             },
+            Combination::Clip | Combination::InvertedClip => {
+                let clips = child_bounds
+                    .iter()
+                    .skip(1)
+                    .fold(None, |all, b| overlap(all, b.inside));
+                let first = child_bounds.first().copied().unwrap_or(NodeBounds {
+                    surface: Some(Aabb::EMPTY),
+                    inside: Some(Aabb::EMPTY),
+                });
+                NodeBounds {
+                    surface: overlap(first.surface, clips),
+                    inside: if combination == Combination::Clip {
+                        overlap(first.inside, clips)
+                    } else {
+                        None
+                    },
+                }
+            }
             Combination::Intersection => {
                 // A child's surface survives only inside every other child.
                 let mut inside_before = Vec::with_capacity(child_bounds.len() + 1);
@@ -244,7 +268,11 @@ impl CsgTree {
                 children,
                 ..
             } => {
+                let clipping = matches!(combination, Combination::Clip | Combination::InvertedClip);
                 for (position, child) in children.iter().enumerate() {
+                    if clipping && position > 0 {
+                        break;
+                    }
                     let child_start = hits.len();
                     self.gather(child, query, hits);
                     if *combination == Combination::Union {
@@ -260,7 +288,9 @@ impl CsgTree {
                             .filter(|&(other, _)| other != position)
                             .map(|(_, sibling)| sibling);
                         let survives = match combination {
-                            Combination::Intersection => {
+                            Combination::Intersection
+                            | Combination::Clip
+                            | Combination::InvertedClip => {
                                 siblings.all(|sibling| self.inside_node(sibling, point))
                             }
                             _ => !siblings.any(|sibling| self.inside_node(sibling, point)),
@@ -290,8 +320,15 @@ impl CsgTree {
                 children,
                 ..
             } => match combination {
-                Combination::Intersection => {
+                Combination::Intersection | Combination::Clip => {
                     children.iter().all(|child| self.inside_node(child, point))
+                }
+                Combination::InvertedClip => {
+                    let mut parts = children.iter();
+                    let first_inside = parts
+                        .next()
+                        .is_some_and(|first| self.inside_node(first, point));
+                    first_inside || !parts.all(|clip| self.inside_node(clip, point))
                 }
                 Combination::Union | Combination::Merge => {
                     children.iter().any(|child| self.inside_node(child, point))

@@ -8,14 +8,21 @@
 //! at build time; otherwise the leaf keeps only the world-to-local map. A degenerate shape or
 //! a singular or non-finite transform gives an empty leaf that nothing hits.
 
+use super::blob::Blob;
+use super::extrusion::ExtrudedOutline;
 use super::flat::{Cuboid, Disc, Plane, Triangle};
+use super::lathe::Lathe;
+use super::poly::PolySurface;
+use super::polygon::{Polygon, SmoothTriangle};
 use super::quadric::Quadric;
 use super::roots::Roots;
 use super::round::{Cone, Sphere};
+use super::sor::Sor;
+use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
 use super::Ray;
 use crate::accel::Aabb;
-use crate::scene::{Shape, Transform};
+use crate::scene::{MeshTriangle, Shape, Transform};
 use glam::{DAffine3, DVec3};
 
 /// A shape in its own local space.
@@ -39,6 +46,22 @@ pub enum LocalShape {
     Quadric(Box<Quadric>),
     /// A triangle.
     Triangle(Triangle),
+    /// A triangle with interpolated normals.
+    SmoothTriangle(Box<SmoothTriangle>),
+    /// A polygon.
+    Polygon(Box<Polygon>),
+    /// A polynomial surface.
+    Poly(Box<PolySurface>),
+    /// An extruded outline (a text glyph or a prism).
+    Extrusion(Box<ExtrudedOutline>),
+    /// A surface of revolution.
+    Lathe(Box<Lathe>),
+    /// A blob.
+    Blob(Box<Blob>),
+    /// A superellipsoid.
+    Superellipsoid(Superellipsoid),
+    /// A surface of revolution.
+    Sor(Box<Sor>),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -88,9 +111,69 @@ impl LocalShape {
                 Quadric::new(coefficients).map(|quadric| Self::Quadric(Box::new(quadric)))
             }
             Shape::Triangle { corners } => Triangle::new(corners).map(Self::Triangle),
-            Shape::Csg { .. } => None,
+            Shape::SmoothTriangle { corners, normals } => {
+                SmoothTriangle::new(corners, normals).map(|t| Self::SmoothTriangle(Box::new(t)))
+            }
+            Shape::Polygon(ref polygon) => {
+                Polygon::new(&polygon.outlines).map(|p| Self::Polygon(Box::new(p)))
+            }
+            Shape::Poly(ref poly) => {
+                PolySurface::new(poly.order, &poly.coefficients).map(|p| Self::Poly(Box::new(p)))
+            }
+            Shape::Prism(ref prism) => {
+                ExtrudedOutline::new(&prism.segments, prism.depth, prism.open, true, prism.conic)
+                    .map(|p| Self::Extrusion(Box::new(p)))
+            }
+            Shape::Lathe(ref segments) => Lathe::new(segments).map(|l| Self::Lathe(Box::new(l))),
+            Shape::Blob(ref blob) => Blob::new(blob).map(|b| Self::Blob(Box::new(b))),
+            Shape::Superellipsoid {
+                east_west,
+                north_south,
+            } => Superellipsoid::new(east_west, north_south).map(Self::Superellipsoid),
+            Shape::Sor { ref points, open } => {
+                Sor::new(points, open).map(|s| Self::Sor(Box::new(s)))
+            }
+            Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
+    }
+
+    /// The shape of one mesh triangle.
+    pub fn from_mesh_triangle(triangle: &MeshTriangle) -> LocalShape {
+        let shape = match triangle.normals {
+            None => Triangle::new(triangle.corners).map(Self::Triangle),
+            Some(normals) => SmoothTriangle::new(triangle.corners, normals)
+                .map(|t| Self::SmoothTriangle(Box::new(t))),
+        };
+        shape.unwrap_or(LocalShape::Empty)
+    }
+
+    /// The leaf shapes a scene shape becomes: one per mesh triangle, else one.
+    pub fn pieces(shape: &Shape) -> Vec<LocalShape> {
+        match shape {
+            Shape::Mesh(mesh) => mesh
+                .triangles
+                .iter()
+                .map(Self::from_mesh_triangle)
+                .filter(|piece| !matches!(piece, LocalShape::Empty))
+                .collect(),
+            Shape::Text(glyphs) => glyphs
+                .iter()
+                .filter_map(|glyph| {
+                    ExtrudedOutline::new(&glyph.segments, glyph.depth, glyph.open, false, false)
+                })
+                .map(|glyph| Self::Extrusion(Box::new(glyph)))
+                .collect(),
+            other => vec![Self::from_scene(other)],
+        }
+    }
+
+    /// True for shapes without an inside, which `inverse` leaves unchanged (as in POV-Ray).
+    pub fn has_no_inside(&self) -> bool {
+        matches!(
+            self,
+            LocalShape::Triangle(_) | LocalShape::SmoothTriangle(_) | LocalShape::Polygon(_)
+        )
     }
 
     /// Pushes every crossing of the line `origin + t direction` (local space).
@@ -106,6 +189,14 @@ impl LocalShape {
             LocalShape::Disc(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Quadric(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Triangle(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::SmoothTriangle(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Polygon(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Poly(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Extrusion(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Lathe(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Blob(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Superellipsoid(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Sor(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -121,6 +212,13 @@ impl LocalShape {
             LocalShape::Disc(shape) => shape.inside(point),
             LocalShape::Quadric(shape) => shape.inside(point),
             LocalShape::Triangle(shape) => shape.inside(point),
+            LocalShape::SmoothTriangle(_) | LocalShape::Polygon(_) => false,
+            LocalShape::Poly(shape) => shape.inside(point),
+            LocalShape::Extrusion(shape) => shape.inside(point),
+            LocalShape::Lathe(shape) => shape.inside(point),
+            LocalShape::Blob(shape) => shape.inside(point),
+            LocalShape::Superellipsoid(shape) => shape.inside(point),
+            LocalShape::Sor(shape) => shape.inside(point),
         }
     }
 
@@ -136,6 +234,14 @@ impl LocalShape {
             LocalShape::Disc(shape) => shape.normal(),
             LocalShape::Quadric(shape) => shape.normal(point),
             LocalShape::Triangle(shape) => shape.normal(),
+            LocalShape::SmoothTriangle(shape) => shape.normal(point),
+            LocalShape::Polygon(shape) => shape.normal(),
+            LocalShape::Poly(shape) => shape.normal(point),
+            LocalShape::Extrusion(shape) => shape.normal(point, part),
+            LocalShape::Lathe(shape) => shape.normal(point, part),
+            LocalShape::Blob(shape) => shape.normal(point),
+            LocalShape::Superellipsoid(shape) => shape.normal(point),
+            LocalShape::Sor(shape) => shape.normal(point, part),
         }
     }
 
@@ -145,11 +251,18 @@ impl LocalShape {
             LocalShape::Empty => Some(Aabb::EMPTY),
             LocalShape::Sphere(shape) => Some(shape.bounds()),
             LocalShape::Cuboid(shape) => Some(shape.bounds()),
-            LocalShape::Plane(_) | LocalShape::Quadric(_) => None,
+            LocalShape::Plane(_) | LocalShape::Quadric(_) | LocalShape::Poly(_) => None,
             LocalShape::Cone(shape) => Some(shape.bounds()),
             LocalShape::Torus(shape) => Some(shape.bounds()),
             LocalShape::Disc(shape) => Some(shape.bounds()),
             LocalShape::Triangle(shape) => Some(shape.bounds()),
+            LocalShape::SmoothTriangle(shape) => Some(shape.bounds()),
+            LocalShape::Polygon(shape) => Some(shape.bounds()),
+            LocalShape::Extrusion(shape) => Some(shape.bounds()),
+            LocalShape::Lathe(shape) => Some(shape.bounds()),
+            LocalShape::Blob(shape) => Some(shape.bounds()),
+            LocalShape::Superellipsoid(shape) => Some(shape.bounds()),
+            LocalShape::Sor(shape) => Some(shape.bounds()),
         }
     }
 
@@ -163,6 +276,9 @@ impl LocalShape {
             LocalShape::Disc(disc) => Some(Aabb::from_points(disc.pov_box_corners().map(map))),
             LocalShape::Cone(cone) => Some(Aabb::from_points(cone.pov_box_corners().map(map))),
             LocalShape::Triangle(triangle) => Some(Aabb::from_points(triangle.corners().map(map))),
+            LocalShape::SmoothTriangle(triangle) => {
+                Some(Aabb::from_points(triangle.corners().map(map)))
+            }
             _ => self
                 .bounds()
                 .map(|bounds| bounds.transformed(world_from_local)),
@@ -172,10 +288,15 @@ impl LocalShape {
     /// Where inside points can be, relative to the surface bounds.
     fn inside_reach(&self) -> InsideReach {
         match self {
-            LocalShape::Empty | LocalShape::Triangle(_) => InsideReach::Nowhere,
-            LocalShape::Plane(_) | LocalShape::Quadric(_) | LocalShape::Disc(_) => {
-                InsideReach::Unbounded
-            }
+            LocalShape::Empty
+            | LocalShape::Triangle(_)
+            | LocalShape::SmoothTriangle(_)
+            | LocalShape::Polygon(_) => InsideReach::Nowhere,
+            LocalShape::Plane(_)
+            | LocalShape::Quadric(_)
+            | LocalShape::Poly(_)
+            | LocalShape::Disc(_) => InsideReach::Unbounded,
+            LocalShape::Blob(blob) if blob.inside_everywhere_far() => InsideReach::Unbounded,
             _ => InsideReach::Bounded,
         }
     }
@@ -194,6 +315,11 @@ impl LocalShape {
                 triangle
                     .transformed(world_from_local)
                     .map_or(LocalShape::Empty, Self::Triangle),
+            ),
+            LocalShape::SmoothTriangle(triangle) => Some(
+                triangle
+                    .transformed(world_from_local)
+                    .map_or(LocalShape::Empty, |t| Self::SmoothTriangle(Box::new(t))),
             ),
             LocalShape::Sphere(sphere) => {
                 let gram = matrix.transpose() * matrix;
@@ -262,6 +388,7 @@ fn usable(transform: &Transform) -> bool {
 }
 
 impl Leaf {
+    #[cfg(test)]
     /// Places `shape` (not CSG) in the world through `world_from_local`.
     pub fn new(
         shape: &Shape,
@@ -269,9 +396,23 @@ impl Leaf {
         material: u32,
         inverse: bool,
     ) -> (Leaf, LeafBounds) {
-        let local = LocalShape::from_scene(shape);
+        Leaf::from_local(
+            LocalShape::from_scene(shape),
+            world_from_local,
+            material,
+            inverse,
+        )
+    }
+
+    /// Places a prepared local shape in the world through `world_from_local`.
+    pub fn from_local(
+        local: LocalShape,
+        world_from_local: &Transform,
+        material: u32,
+        inverse: bool,
+    ) -> (Leaf, LeafBounds) {
         // POV-Ray cannot invert a triangle: it has no inside either way.
-        let inverse = inverse && !matches!(local, LocalShape::Triangle(_));
+        let inverse = inverse && !local.has_no_inside();
         let (shape, local_from_world, world_from_shape) = if !usable(world_from_local) {
             (LocalShape::Empty, None, DAffine3::IDENTITY)
         } else if world_from_local.outer_from_inner == DAffine3::IDENTITY {

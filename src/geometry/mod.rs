@@ -8,16 +8,26 @@
 //! surfaces) and are never turned towards the ray; pattern transforms inside materials map
 //! pattern space to world space.
 
+mod blob;
 mod build;
 mod csg;
+mod extrusion;
 mod flat;
+mod instance;
+mod lathe;
 mod leaf;
+mod poly;
+mod polygon;
 mod quadric;
 mod roots;
 mod round;
+mod sor;
+mod superellipsoid;
 mod torus;
 mod world;
 
+#[cfg(test)]
+mod more_shape_tests;
 #[cfg(test)]
 mod shape_tests;
 #[cfg(test)]
@@ -76,4 +86,10 @@ pub struct Material {
     pub interior: Interior,
     /// The object casts no shadow.
     pub no_shadow: bool,
+    /// `no_image`: camera rays should pass through (not yet read by the renderer).
+    pub no_image: bool,
+    /// `no_reflection`: reflected rays should pass through (not yet read by the renderer).
+    pub no_reflection: bool,
+    /// `double_illuminate`: lit from both sides (not yet read by the renderer).
+    pub double_illuminate: bool,
 }

@@ -1,11 +1,11 @@
 //! Small fixed-size containers and solvers shared by the shapes.
 //!
-//! In: polynomial coefficients, ray parameters. Out: [`Roots`] (up to four ray parameters, each
+//! In: polynomial coefficients, ray parameters. Out: [`Roots`] (up to eight ray parameters, each
 //! tagged with the surface part it belongs to) and sorted real quadratic roots.
 //! Holds: nothing allocates; non-finite parameters are never stored.
 
-/// The most intersections one primitive shape can have along a line.
-pub const MAX_ROOTS: usize = 4;
+/// The most intersections one primitive shape can have along a line (a degree-7 `poly` has 7).
+pub const MAX_ROOTS: usize = 8;
 
 /// Intersections of a ray with one primitive: ray parameters with a surface-part tag each.
 ///

@@ -12,8 +12,8 @@ use super::round::Sphere;
 use crate::accel::Aabb;
 use glam::DVec3;
 
-/// Highest polynomial degree the root finder accepts.
-const MAX_DEGREE: usize = 4;
+/// Highest polynomial degree the root finder accepts (`poly` goes up to 7).
+pub const MAX_DEGREE: usize = 7;
 
 /// Value of the polynomial `coefficients` (highest power first) at `x`.
 #[inline]
@@ -66,7 +66,7 @@ fn refine_root(coefficients: &[f64], mut low: f64, mut high: f64, low_value: f64
 }
 
 /// Writes the real roots of the polynomial `coefficients` (highest power first, degree at most
-/// four) that lie in `[low, high]` into `out`, ascending, and returns how many there are.
+/// seven) that lie in `[low, high]` into `out`, ascending, and returns how many there are.
 ///
 /// Every interval between consecutive critical points is monotonic, so it holds a root
 /// exactly when the polynomial changes sign across it.

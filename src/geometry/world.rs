@@ -6,6 +6,7 @@
 //! allocate (CSG scratch space is per thread and reused).
 
 use super::build::{build_scene, Primitive};
+use super::instance::MeshInstance;
 use super::leaf::Leaf;
 use super::{Material, Ray, SurfaceHit};
 use crate::accel::{Aabb, Bvh};
@@ -32,6 +33,8 @@ pub struct World {
 struct PendingHit<'a> {
     leaf: &'a Leaf,
     part: u8,
+    /// The mesh instance the leaf belongs to (its leaves are in the mesh's local space).
+    instance: Option<&'a MeshInstance>,
 }
 
 impl Primitive {
@@ -43,20 +46,41 @@ impl Primitive {
         inverse_direction: DVec3,
         min_distance: f64,
         max_distance: f64,
-        skip: &impl Fn(&Leaf) -> bool,
+        skip: &impl Fn(u32) -> bool,
     ) -> Option<(f64, PendingHit<'a>)> {
         match self {
             Primitive::Leaf(leaf) => {
-                if skip(leaf) {
+                if skip(leaf.material()) {
                     return None;
                 }
                 let (distance, part) = leaf.nearest(ray, min_distance, max_distance)?;
-                Some((distance, PendingHit { leaf, part }))
+                Some((
+                    distance,
+                    PendingHit {
+                        leaf,
+                        part,
+                        instance: None,
+                    },
+                ))
+            }
+            Primitive::Mesh(instance) => {
+                if skip(instance.material()) {
+                    return None;
+                }
+                let (distance, leaf, part) = instance.nearest(ray, min_distance, max_distance)?;
+                Some((
+                    distance,
+                    PendingHit {
+                        leaf,
+                        part,
+                        instance: Some(instance),
+                    },
+                ))
             }
             Primitive::Csg(tree) => {
                 let hit =
                     tree.nearest(ray, inverse_direction, min_distance, max_distance, |l| {
-                        !skip(l)
+                        !skip(l.material())
                     })?;
                 let leaf = &tree.leaves[hit.leaf as usize];
                 Some((
@@ -64,6 +88,7 @@ impl Primitive {
                     PendingHit {
                         leaf,
                         part: hit.part,
+                        instance: None,
                     },
                 ))
             }
@@ -114,9 +139,9 @@ impl World {
         max_distance: f64,
     ) -> Option<SurfaceHit> {
         let materials = &self.materials;
-        self.search(ray, min_distance, max_distance, &|leaf: &Leaf| {
+        self.search(ray, min_distance, max_distance, &|material: u32| {
             materials
-                .get(leaf.material() as usize)
+                .get(material as usize)
                 .is_some_and(|material| material.no_shadow)
         })
     }
@@ -142,7 +167,7 @@ impl World {
         ray: &Ray,
         min_distance: f64,
         max_distance: f64,
-        skip: &impl Fn(&Leaf) -> bool,
+        skip: &impl Fn(u32) -> bool,
     ) -> Option<SurfaceHit> {
         if !usable(ray, min_distance, max_distance) {
             return None;
@@ -211,7 +236,12 @@ fn finish(ray: &Ray, nearest: Option<(f64, PendingHit)>) -> Option<SurfaceHit> {
     Some(SurfaceHit {
         distance,
         point,
-        normal: pending.leaf.normal(point, pending.part),
-        material: pending.leaf.material(),
+        normal: match pending.instance {
+            Some(instance) => instance.normal(pending.leaf, point, pending.part),
+            None => pending.leaf.normal(point, pending.part),
+        },
+        material: pending
+            .instance
+            .map_or(pending.leaf.material(), MeshInstance::material),
     })
 }

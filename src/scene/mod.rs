@@ -145,6 +145,17 @@ pub struct Object {
     pub no_shadow: bool,
     /// `hollow` as written: `Some(true)` hollow, `Some(false)` `hollow off`, `None` unspecified.
     pub hollow: Option<bool>,
+    /// `clipped_by` objects, in this object's local space: only the parts of the object inside
+    /// all of them remain.
+    pub clipped_by: Vec<Object>,
+    /// `bounded_by` objects, in this object's local space (a hint: durer does not need them).
+    pub bounded_by: Vec<Object>,
+    /// `no_image`: invisible to camera rays (still casts shadows and shows in reflections).
+    pub no_image: bool,
+    /// `no_reflection`: invisible in reflections.
+    pub no_reflection: bool,
+    /// `double_illuminate`: lit from both sides.
+    pub double_illuminate: bool,
 }
 
 impl Object {
@@ -158,6 +169,11 @@ impl Object {
             inverse: false,
             no_shadow: false,
             hollow: None,
+            clipped_by: Vec::new(),
+            bounded_by: Vec::new(),
+            no_image: false,
+            no_reflection: false,
+            double_illuminate: false,
         }
     }
 }
@@ -200,11 +216,124 @@ pub enum Shape {
     Quadric { coefficients: [f64; 10] },
     /// `triangle { a, b, c }`.
     Triangle { corners: [DVec3; 3] },
+    /// `smooth_triangle { a, na, b, nb, c, nc }`: corners with the normals to interpolate.
+    SmoothTriangle {
+        corners: [DVec3; 3],
+        normals: [DVec3; 3],
+    },
+    /// `polygon { n, p1, .. pn }`: closed outlines in one plane, filled by the even-odd rule.
+    Polygon(Arc<Polygon>),
+    /// `mesh { .. }` or `mesh2 { .. }`: a shared list of triangles.
+    Mesh(Arc<Mesh>),
+    /// `poly`, `cubic` or `quartic`: the zero set of a polynomial in x, y and z.
+    Poly(Arc<Poly>),
+    /// `text { ttf .. }`: one extruded outline per glyph, already laid out.
+    Text(Arc<Vec<Extrusion>>),
+    /// `prism { .. }`: an outline in the XZ plane swept along Y (the extrusion's depth is the
+    /// Y extent; its X and Y are the prism's X and Z).
+    Prism(Arc<Extrusion>),
+    /// `blob { .. }`: a field of spherical and cylindrical components, surface at the
+    /// threshold.
+    Blob(Arc<Blob>),
+    /// `superellipsoid { <e, n> }`: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1.
+    Superellipsoid { east_west: f64, north_south: f64 },
+    /// `sor { n, <r, h>.. [open] }`: radius² as a cubic spline of the height, turned around Y.
+    Sor {
+        points: Arc<Vec<glam::DVec2>>,
+        open: bool,
+    },
+    /// `lathe { .. }`: a curve in the (radius, height) plane, as cubic Béziers of `<r, y>`
+    /// points, turned around the Y axis.
+    Lathe(Arc<Vec<[glam::DVec2; 4]>>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,
         children: Vec<Object>,
     },
+}
+
+/// The outlines of a `polygon`, already closed.
+#[derive(Clone, Debug)]
+pub struct Polygon {
+    /// Each closed outline (sub-polygon), without repeating its first point at the end.
+    pub outlines: Vec<Vec<DVec3>>,
+}
+
+/// One triangle of a mesh.
+#[derive(Clone, Copy, Debug)]
+pub struct MeshTriangle {
+    /// The three corners.
+    pub corners: [DVec3; 3],
+    /// Normals at the corners for a smooth triangle; `None` for a flat one.
+    pub normals: Option<[DVec3; 3]>,
+}
+
+/// The triangles of a `mesh` or `mesh2`.
+#[derive(Clone, Debug)]
+pub struct Mesh {
+    /// All triangles, in the order written.
+    pub triangles: Vec<MeshTriangle>,
+    /// `inside_vector`: when given, the mesh is a solid (points are inside when a ray along
+    /// this vector crosses the surface an odd number of times).
+    pub inside_vector: Option<DVec3>,
+}
+
+/// A polynomial surface `poly { order, <coefficients> }`.
+#[derive(Clone, Debug)]
+pub struct Poly {
+    /// Total degree (2 to 7).
+    pub order: u32,
+    /// Coefficients of x^i y^j z^k in POV-Ray's order: i from `order` down to 0, then j from
+    /// `order - i` down to 0, then k from `order - i - j` down to 0.
+    pub coefficients: Vec<f64>,
+    /// `sturm` was asked for (durer's root finder is always exact, so this changes nothing).
+    pub sturm: bool,
+}
+
+/// A region of the XY plane bounded by closed outlines of cubic Bézier segments,
+/// extruded along Z. A point is in the region when a line from it crosses the outlines an
+/// odd number of times.
+#[derive(Clone, Debug)]
+pub struct Extrusion {
+    /// Segments as (start, control, control, end) of cubic Béziers.
+    pub segments: Vec<[glam::DVec2; 4]>,
+    /// The Z extent: from `depth.0` to `depth.1`.
+    pub depth: (f64, f64),
+    /// Without caps (a prism's `open`).
+    pub open: bool,
+    /// `conic_sweep`: at depth z the outline is scaled by z (apex at the origin).
+    pub conic: bool,
+}
+
+/// A `blob`: the surface where the summed component fields equal the threshold.
+#[derive(Clone, Debug)]
+pub struct Blob {
+    /// The field value of the surface (default 1).
+    pub threshold: f64,
+    /// The components, each with its own transform into the blob's space.
+    pub components: Vec<BlobComponent>,
+}
+
+/// One blob component: field `strength * (1 - (d / radius)²)²` within `radius`.
+#[derive(Clone, Debug)]
+pub struct BlobComponent {
+    /// Sphere or cylinder (with hemispherical caps).
+    pub kind: BlobKind,
+    /// Radius of influence.
+    pub radius: f64,
+    /// Field value at the centre (or axis); may be negative.
+    pub strength: f64,
+    /// Maps the component's space into the blob's.
+    pub transform: Transform,
+}
+
+/// The shape of a blob component's field.
+#[derive(Clone, Copy, Debug)]
+pub enum BlobKind {
+    /// Distance to a point.
+    Sphere { centre: DVec3 },
+    /// Distance to a segment.
+    Cylinder { end1: DVec3, end2: DVec3 },
 }
 
 /// The four CSG operations.

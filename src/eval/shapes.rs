@@ -1,0 +1,382 @@
+//! Bodies of the shapes beyond the basic ones: `smooth_triangle`, `polygon`, `mesh`, `mesh2`,
+//! `poly`, `cubic` and `quartic`.
+//!
+//! In: the block's item stream, positioned after the keyword's brace. Out: the [`Shape`], with
+//! the stream left at the object modifiers that follow the shape's own data.
+//! Holds: bad counts and indices end in spanned diagnostics, never panics; features that durer
+//! leaves out (per-triangle textures, uv data) are warned about once and ignored.
+
+mod blob;
+mod prism;
+mod text;
+
+use super::stream::Stream;
+use super::value::Value;
+use super::{EvalResult, Evaluator};
+use crate::diag::Span;
+use crate::scene::{Mesh, MeshTriangle, Poly, Polygon, Shape};
+use crate::syntax::ast::{Block, BlockHead, Expr, Item};
+use glam::DVec3;
+use std::sync::Arc;
+
+/// Most points a `polygon` or entries a `mesh2` list may declare (guards huge allocations).
+const LIST_LIMIT: usize = 50_000_000;
+
+/// Number of coefficients of a polynomial of total degree `order` in three variables.
+pub(crate) fn poly_term_count(order: u32) -> usize {
+    let n = order as usize;
+    (n + 1) * (n + 2) * (n + 3) / 6
+}
+
+impl Evaluator {
+    /// `smooth_triangle { c1, n1, c2, n2, c3, n3 }`.
+    pub(crate) fn eval_smooth_triangle(&mut self, stream: &mut Stream) -> EvalResult<Shape> {
+        let mut corners = [DVec3::ZERO; 3];
+        let mut normals = [DVec3::ZERO; 3];
+        for index in 0..3 {
+            corners[index] = self.expect_vector(stream, "a corner")?;
+            normals[index] = self.expect_vector(stream, "the corner's normal")?;
+        }
+        Ok(Shape::SmoothTriangle { corners, normals })
+    }
+
+    /// `polygon { n, p1, .. pn }`: a sub-polygon closes when a point repeats its first point.
+    pub(crate) fn eval_polygon(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Shape> {
+        let count = self.expect_count(stream, "the number of points", span)?;
+        let mut outlines = Vec::new();
+        let mut current: Vec<DVec3> = Vec::new();
+        for _ in 0..count {
+            let point = self.expect_vector(stream, "a point")?;
+            if current.first() == Some(&point) {
+                outlines.push(std::mem::take(&mut current));
+            } else {
+                current.push(point);
+            }
+        }
+        if !current.is_empty() {
+            if current.len() > 1 {
+                self.warn(span, "polygon outline not closed; closing it");
+            }
+            outlines.push(current);
+        }
+        outlines.retain(|outline| outline.len() >= 3);
+        Ok(Shape::Polygon(Arc::new(Polygon { outlines })))
+    }
+
+    /// `mesh { triangle { .. } smooth_triangle { .. } .. }`; modifiers follow.
+    pub(crate) fn eval_mesh(&mut self, stream: &mut Stream) -> EvalResult<Shape> {
+        let mut triangles = Vec::new();
+        while let Some(item) = self.next_item(stream)? {
+            let Item::Block(block) = &item else {
+                stream.push_back(item);
+                break;
+            };
+            let head = block_word(block);
+            if head != "triangle" && head != "smooth_triangle" {
+                stream.push_back(item);
+                break;
+            }
+            let mut body = Stream::new(block.body.clone());
+            let triangle = if head == "triangle" {
+                let a = self.expect_vector(&mut body, "the first corner")?;
+                let b = self.expect_vector(&mut body, "the second corner")?;
+                let c = self.expect_vector(&mut body, "the third corner")?;
+                MeshTriangle {
+                    corners: [a, b, c],
+                    normals: None,
+                }
+            } else {
+                match self.eval_smooth_triangle(&mut body)? {
+                    Shape::SmoothTriangle { corners, normals } => MeshTriangle {
+                        corners,
+                        normals: Some(normals),
+                    },
+                    _ => continue,
+                }
+            };
+            while let Some(rest) = self.next_item(&mut body)? {
+                match rest {
+                    Item::Comma(_) => {}
+                    Item::Keyword(word, _) if &*word == "uv_vectors" => {
+                        for _ in 0..3 {
+                            self.expect_value(&mut body, "a uv vector")?;
+                        }
+                    }
+                    other => {
+                        self.warn(
+                            other.span(),
+                            "textures of single mesh triangles are not supported yet; they are ignored",
+                        );
+                        break;
+                    }
+                }
+            }
+            triangles.push(triangle);
+        }
+        Ok(Shape::Mesh(Arc::new(Mesh {
+            triangles,
+            inside_vector: None,
+        })))
+    }
+
+    /// `mesh2 { vertex_vectors { .. } normal_vectors { .. } face_indices { .. } .. }`.
+    pub(crate) fn eval_mesh2(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Shape> {
+        let mut vertices = Vec::new();
+        let mut normals = Vec::new();
+        let mut faces: Vec<([f64; 3], Span)> = Vec::new();
+        let mut normal_faces: Vec<([f64; 3], Span)> = Vec::new();
+        while let Some(item) = self.next_item(stream)? {
+            let Item::Block(block) = &item else {
+                stream.push_back(item);
+                break;
+            };
+            let head = block_word(block);
+            let mut body = Stream::new(block.body.clone());
+            match head {
+                "vertex_vectors" => vertices = self.vector_list(&mut body, block.span)?,
+                "normal_vectors" => normals = self.vector_list(&mut body, block.span)?,
+                "face_indices" => faces = self.index_list(&mut body, block.span)?,
+                "normal_indices" => normal_faces = self.index_list(&mut body, block.span)?,
+                "uv_vectors" | "uv_indices" => {}
+                "texture_list" => self.warn(
+                    block.head_span,
+                    "`texture_list` in `mesh2` is not supported yet; it is ignored",
+                ),
+                _ => {
+                    stream.push_back(item);
+                    break;
+                }
+            }
+        }
+        let vertex = |index: f64| -> Option<DVec3> {
+            (index >= 0.0 && index.fract() == 0.0)
+                .then(|| vertices.get(index as usize).copied())
+                .flatten()
+        };
+        let mut triangles = Vec::with_capacity(faces.len());
+        for (position, (face, face_span)) in faces.iter().enumerate() {
+            let corners = face.map(vertex);
+            let [Some(a), Some(b), Some(c)] = corners else {
+                return Err(self
+                    .error(*face_span, "face index out of range")
+                    .with_label(format!("there are {} vertices", vertices.len()))
+                    .into());
+            };
+            let smooth = if normals.is_empty() {
+                None
+            } else {
+                let indices = match normal_faces.get(position) {
+                    Some((indices, _)) => *indices,
+                    None if normal_faces.is_empty() => *face,
+                    None => {
+                        return Err(self
+                            .error(span, "fewer normal_indices than face_indices")
+                            .into())
+                    }
+                };
+                let pick = |index: f64| -> Option<DVec3> {
+                    (index >= 0.0 && index.fract() == 0.0)
+                        .then(|| normals.get(index as usize).copied())
+                        .flatten()
+                };
+                match indices.map(pick) {
+                    [Some(na), Some(nb), Some(nc)] => Some([na, nb, nc]),
+                    _ => {
+                        return Err(self
+                            .error(*face_span, "normal index out of range")
+                            .with_label(format!("there are {} normals", normals.len()))
+                            .into())
+                    }
+                }
+            };
+            triangles.push(MeshTriangle {
+                corners: [a, b, c],
+                normals: smooth,
+            });
+        }
+        Ok(Shape::Mesh(Arc::new(Mesh {
+            triangles,
+            inside_vector: None,
+        })))
+    }
+
+    /// `poly { order, <coefficients> }`, `cubic { <20> }` or `quartic { <35> }`.
+    pub(crate) fn eval_poly(
+        &mut self,
+        head: &str,
+        span: Span,
+        stream: &mut Stream,
+    ) -> EvalResult<Shape> {
+        let order = match head {
+            "cubic" => 3,
+            "quartic" => 4,
+            _ => {
+                let order = self.expect_float(stream, "the order")?;
+                if !(2.0..=7.0).contains(&order) || order.fract() != 0.0 {
+                    return Err(self
+                        .error(span, format!("poly order must be 2 to 7, found {order}"))
+                        .into());
+                }
+                self.skip_comma(stream)?;
+                order as u32
+            }
+        };
+        let wanted = poly_term_count(order);
+        let item = self.next_item(stream)?;
+        let Some(Item::Expr(Expr::Vector(elements, vspan))) = item else {
+            return Err(self
+                .error(span, format!("expected `< {wanted} coefficients >`"))
+                .into());
+        };
+        if elements.len() != wanted {
+            return Err(self
+                .error(
+                    vspan,
+                    format!(
+                        "a polynomial of order {order} has {wanted} coefficients, found {}",
+                        elements.len()
+                    ),
+                )
+                .into());
+        }
+        let coefficients = elements
+            .iter()
+            .map(|e| self.eval_float(e))
+            .collect::<EvalResult<Vec<f64>>>()?;
+        Ok(Shape::Poly(Arc::new(Poly {
+            order,
+            coefficients,
+            sturm: false,
+        })))
+    }
+
+    /// `text { ttf "font.ttf" "string" thickness, offset }`.
+    pub(crate) fn eval_text(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Shape> {
+        match self.next_item(stream)? {
+            Some(Item::Keyword(word, _)) if &*word == "ttf" => {}
+            Some(other) => {
+                return Err(self
+                    .error(other.span(), "expected `ttf` and a font file name")
+                    .with_label("durer reads TrueType fonts only")
+                    .into())
+            }
+            None => {
+                return Err(self
+                    .error(span, "expected `ttf` and a font file name")
+                    .into())
+            }
+        }
+        let (font, font_span) = self.expect_string(stream, "the font file name")?;
+        let (string, _) = self.expect_string(stream, "the text")?;
+        let thickness = self.expect_float(stream, "the thickness")?;
+        let offset = self.expect_vector(stream, "the offset")?;
+        let path = match self.find_include(&font) {
+            Ok(path) => path,
+            Err(_) => {
+                return Err(self
+                    .error(font_span, format!("font file `{font}` not found"))
+                    .with_label("looked next to the scene and on the include path")
+                    .into())
+            }
+        };
+        let bytes = text::font_bytes(&path).map_err(|error| {
+            self.error(
+                font_span,
+                format!("cannot read `{}`: {error}", path.display()),
+            )
+        })?;
+        let glyphs =
+            text::layout_text(&bytes, &string, thickness, offset.truncate()).ok_or_else(|| {
+                self.error(
+                    font_span,
+                    format!("`{}` is not a TrueType font", path.display()),
+                )
+            })?;
+        Ok(Shape::Text(Arc::new(glyphs)))
+    }
+
+    /// Reads a string value.
+    fn expect_string(&mut self, stream: &mut Stream, what: &str) -> EvalResult<(String, Span)> {
+        let (value, span) = self.expect_value(stream, what)?;
+        match value {
+            Value::String(s) => Ok((s.to_string(), span)),
+            other => Err(self
+                .error(
+                    span,
+                    format!("expected {what}, found {}", other.type_name()),
+                )
+                .into()),
+        }
+    }
+
+    /// A non-negative whole number such as a list length.
+    fn expect_count(&mut self, stream: &mut Stream, what: &str, span: Span) -> EvalResult<usize> {
+        let count = self.expect_float(stream, what)?;
+        if !(0.0..=LIST_LIMIT as f64).contains(&count) {
+            return Err(self
+                .error(
+                    span,
+                    format!("{what} must be 0 to {LIST_LIMIT}, found {count}"),
+                )
+                .into());
+        }
+        Ok(count as usize)
+    }
+
+    /// `n, v1, .. vn` of `vertex_vectors` or `normal_vectors`.
+    fn vector_list(&mut self, stream: &mut Stream, span: Span) -> EvalResult<Vec<DVec3>> {
+        let count = self.expect_count(stream, "the number of vectors", span)?;
+        let mut list = Vec::with_capacity(count.min(1 << 20));
+        for _ in 0..count {
+            list.push(self.expect_vector(stream, "a vector")?);
+        }
+        self.expect_end(stream, "vector list")?;
+        Ok(list)
+    }
+
+    /// `n, <a, b, c> [, texture index..] ..` of `face_indices` or `normal_indices`.
+    fn index_list(&mut self, stream: &mut Stream, span: Span) -> EvalResult<Vec<([f64; 3], Span)>> {
+        let count = self.expect_count(stream, "the number of faces", span)?;
+        let mut list = Vec::with_capacity(count.min(1 << 20));
+        while let Some(item) = self.next_item(stream)? {
+            if matches!(item, Item::Comma(_)) {
+                continue;
+            }
+            let item_span = item.span();
+            let value = self.item_value(&item)?;
+            match value {
+                Value::Vector(v) => {
+                    let c = v.to_dvec3();
+                    list.push(([c.x, c.y, c.z], item_span));
+                }
+                // Texture indices after a face: ignored with the texture list.
+                Value::Float(_) => {}
+                other => {
+                    return Err(self
+                        .error(
+                            item_span,
+                            format!("expected an index vector, found {}", other.type_name()),
+                        )
+                        .into())
+                }
+            }
+        }
+        if list.len() != count {
+            return Err(self
+                .error(
+                    span,
+                    format!("{count} entries declared, {} given", list.len()),
+                )
+                .into());
+        }
+        Ok(list)
+    }
+}
+
+/// The keyword of a block ("" for a conditional head).
+fn block_word(block: &Block) -> &str {
+    match &block.head {
+        BlockHead::Word(word) => word,
+        BlockHead::Conditional(_) => "",
+    }
+}

@@ -1,0 +1,417 @@
+//! Blobs: the surface where a sum of component fields equals a threshold.
+//!
+//! In: components (spheres, and cylinders with hemispherical caps) with strength, radius and
+//! a transform into the blob's space. Out: every crossing of a line (per interval where the
+//! same components are active, the field is a quartic in the ray parameter, solved exactly),
+//! inside test (field above the threshold), outward normals (against the field gradient),
+//! bounds. Holds: at most [`MAX_ROOTS`] crossings are reported, the nearest ahead first when
+//! there are more; per-ray work uses a per-thread scratch vector that is reused.
+
+use super::roots::{Roots, MAX_ROOTS};
+use super::torus::{real_roots_between, MAX_DEGREE};
+use crate::accel::Aabb;
+use crate::scene::{Blob as SceneBlob, BlobKind};
+use glam::{DAffine3, DVec3};
+use std::cell::RefCell;
+
+/// Crossings collected per line before keeping the nearest.
+const CROSSING_BUFFER: usize = 64;
+
+/// One field element: a distance measured in the component's space, maybe limited to a slab
+/// along an axis (cylinder body and caps).
+#[derive(Clone, Copy, Debug)]
+struct Element {
+    /// Blob space to component space.
+    component_from_blob: DAffine3,
+    /// The point (sphere, cap) or axis start (cylinder body).
+    centre: DVec3,
+    /// Unit axis for cylinder parts; zero for a sphere.
+    axis: DVec3,
+    /// Distance measured perpendicular to `axis` (cylinder body) or to `centre` (sphere, cap).
+    perpendicular: bool,
+    /// Allowed range of `(q - centre) · axis`.
+    slab: (f64, f64),
+    inverse_radius_squared: f64,
+    strength: f64,
+}
+
+impl Element {
+    /// The squared distance as `a t² + b t + c` along `q0 + t qd`.
+    fn distance_squared(&self, q0: DVec3, qd: DVec3) -> (f64, f64, f64) {
+        let offset = q0 - self.centre;
+        if self.perpendicular {
+            let (oa, da) = (offset.dot(self.axis), qd.dot(self.axis));
+            (
+                qd.length_squared() - da * da,
+                2.0 * (offset.dot(qd) - oa * da),
+                offset.length_squared() - oa * oa,
+            )
+        } else {
+            (
+                qd.length_squared(),
+                2.0 * offset.dot(qd),
+                offset.length_squared(),
+            )
+        }
+    }
+
+    /// The field at blob-space `point`, and its gradient.
+    fn field(&self, point: DVec3) -> (f64, DVec3) {
+        let q = self.component_from_blob.transform_point3(point);
+        let offset = q - self.centre;
+        let along = offset.dot(self.axis);
+        if self.axis != DVec3::ZERO && (along < self.slab.0 || along > self.slab.1) {
+            return (0.0, DVec3::ZERO);
+        }
+        let radial = if self.perpendicular {
+            offset - self.axis * along
+        } else {
+            offset
+        };
+        let falloff = 1.0 - radial.length_squared() * self.inverse_radius_squared;
+        if falloff <= 0.0 {
+            return (0.0, DVec3::ZERO);
+        }
+        let value = self.strength * falloff * falloff;
+        let local_gradient =
+            radial * (-4.0 * self.strength * falloff * self.inverse_radius_squared);
+        let gradient = self.component_from_blob.matrix3.transpose() * local_gradient;
+        (value, gradient)
+    }
+}
+
+/// A prepared blob.
+#[derive(Clone, Debug)]
+pub struct Blob {
+    threshold: f64,
+    elements: Vec<Element>,
+    bounds: Aabb,
+}
+
+/// An interval of the ray where one element is active, with its field as a quartic
+/// (lowest power first).
+#[derive(Clone, Copy, Debug)]
+struct Active {
+    start: f64,
+    end: f64,
+    quartic: [f64; 5],
+}
+
+/// Where an element's interval starts or ends: ray parameter, interval index, entering.
+type Event = (f64, usize, bool);
+
+thread_local! {
+    /// Per-thread scratch: active intervals and sorted interval ends.
+    static SCRATCH: RefCell<(Vec<Active>, Vec<Event>)> =
+        const { RefCell::new((Vec::new(), Vec::new())) };
+}
+
+impl Blob {
+    /// A blob from the scene's description; `None` when no component has a usable radius
+    /// and transform.
+    pub fn new(blob: &SceneBlob) -> Option<Blob> {
+        let mut elements = Vec::new();
+        let mut bounds = Aabb::EMPTY;
+        for component in &blob.components {
+            let radius = component.radius;
+            let forward = component.transform.outer_from_inner;
+            let backward = component.transform.inner_from_outer;
+            let usable = radius > 0.0
+                && radius.is_finite()
+                && component.strength.is_finite()
+                && forward.is_finite()
+                && backward.is_finite()
+                && forward.matrix3.determinant() != 0.0;
+            if !usable {
+                continue;
+            }
+            let base = Element {
+                component_from_blob: backward,
+                centre: DVec3::ZERO,
+                axis: DVec3::ZERO,
+                perpendicular: false,
+                slab: (f64::NEG_INFINITY, f64::INFINITY),
+                inverse_radius_squared: 1.0 / (radius * radius),
+                strength: component.strength,
+            };
+            let reach = DVec3::splat(radius);
+            match component.kind {
+                BlobKind::Sphere { centre } => {
+                    elements.push(Element { centre, ..base });
+                    let local = Aabb::from_points([centre - reach, centre + reach]);
+                    bounds = bounds.union(&local.transformed(&forward));
+                }
+                BlobKind::Cylinder { end1, end2 } => {
+                    let Some(axis) = (end2 - end1).try_normalize() else {
+                        continue;
+                    };
+                    let length = (end2 - end1).length();
+                    elements.push(Element {
+                        centre: end1,
+                        axis,
+                        perpendicular: true,
+                        slab: (0.0, length),
+                        ..base
+                    });
+                    elements.push(Element {
+                        centre: end1,
+                        axis,
+                        slab: (f64::NEG_INFINITY, 0.0),
+                        ..base
+                    });
+                    elements.push(Element {
+                        centre: end2,
+                        axis,
+                        slab: (0.0, f64::INFINITY),
+                        ..base
+                    });
+                    let local =
+                        Aabb::from_points([end1 - reach, end1 + reach, end2 - reach, end2 + reach]);
+                    bounds = bounds.union(&local.transformed(&forward));
+                }
+            }
+        }
+        let usable = !elements.is_empty() && blob.threshold.is_finite();
+        usable.then_some(Blob {
+            threshold: blob.threshold,
+            elements,
+            bounds,
+        })
+    }
+
+    /// The summed field at `point`, and its gradient.
+    fn field(&self, point: DVec3) -> (f64, DVec3) {
+        self.elements
+            .iter()
+            .map(|element| element.field(point))
+            .fold((0.0, DVec3::ZERO), |(v, g), (ev, eg)| (v + ev, g + eg))
+    }
+
+    /// Pushes the crossings of the line `origin + t direction`.
+    pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
+        SCRATCH.with(|scratch| match scratch.try_borrow_mut() {
+            Ok(mut scratch) => {
+                let (active, events) = &mut *scratch;
+                self.intersect_with(origin, direction, roots, active, events);
+            }
+            Err(_) => {
+                self.intersect_with(origin, direction, roots, &mut Vec::new(), &mut Vec::new())
+            }
+        });
+    }
+
+    fn intersect_with(
+        &self,
+        origin: DVec3,
+        direction: DVec3,
+        roots: &mut Roots,
+        active: &mut Vec<Active>,
+        events: &mut Vec<Event>,
+    ) {
+        active.clear();
+        events.clear();
+        for element in &self.elements {
+            let q0 = element.component_from_blob.transform_point3(origin);
+            let qd = element.component_from_blob.transform_vector3(direction);
+            let (a, b, c) = element.distance_squared(q0, qd);
+            let k = element.inverse_radius_squared;
+            // Inside the radius: a t² + b t + c < R².
+            let Some((mut start, mut end)) = super::roots::solve_quadratic(a, 0.5 * b, c - 1.0 / k)
+            else {
+                continue;
+            };
+            if a <= 0.0 {
+                continue;
+            }
+            if element.axis != DVec3::ZERO {
+                let (oa, da) = (
+                    (q0 - element.centre).dot(element.axis),
+                    qd.dot(element.axis),
+                );
+                if da == 0.0 {
+                    if oa < element.slab.0 || oa > element.slab.1 {
+                        continue;
+                    }
+                } else {
+                    let first = (element.slab.0 - oa) / da;
+                    let second = (element.slab.1 - oa) / da;
+                    start = start.max(first.min(second));
+                    end = end.min(first.max(second));
+                }
+            }
+            if start.partial_cmp(&end) != Some(std::cmp::Ordering::Less) {
+                continue;
+            }
+            let (p2, p1, p0) = (-k * a, -k * b, 1.0 - k * c);
+            let s = element.strength;
+            let quartic = [
+                s * p0 * p0,
+                s * 2.0 * p1 * p0,
+                s * (p1 * p1 + 2.0 * p2 * p0),
+                s * 2.0 * p2 * p1,
+                s * p2 * p2,
+            ];
+            events.push((start, active.len(), true));
+            events.push((end, active.len(), false));
+            active.push(Active {
+                start,
+                end,
+                quartic,
+            });
+        }
+        events.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut sum = [0.0; 5];
+        let mut crossings = [(0.0, 0u8); CROSSING_BUFFER];
+        let mut count = 0;
+        for pair in 0..events.len() {
+            let (at, index, entering) = events[pair];
+            let quartic = active[index].quartic;
+            for (total, term) in sum.iter_mut().zip(quartic) {
+                if entering {
+                    *total += term;
+                } else {
+                    *total -= term;
+                }
+            }
+            let Some(&(next, _, _)) = events.get(pair + 1) else {
+                break;
+            };
+            if next <= at {
+                continue;
+            }
+            // Recompute the sum from the active set to avoid drift.
+            let mut exact = [0.0; 5];
+            for interval in active.iter() {
+                if interval.start <= at && interval.end >= next {
+                    for (total, term) in exact.iter_mut().zip(interval.quartic) {
+                        *total += term;
+                    }
+                }
+            }
+            sum = exact;
+            let coefficients = [sum[4], sum[3], sum[2], sum[1], sum[0] - self.threshold];
+            let mut found = [0.0; MAX_DEGREE];
+            let roots_found = real_roots_between(&coefficients, at, next, &mut found);
+            for &t in &found[..roots_found] {
+                if count < CROSSING_BUFFER && (t < next || pair + 2 == events.len()) {
+                    crossings[count] = (t, 0);
+                    count += 1;
+                }
+            }
+        }
+        let crossings = &mut crossings[..count];
+        if crossings.len() > MAX_ROOTS {
+            crossings.sort_by(|a, b| {
+                (a.0 < 0.0)
+                    .cmp(&(b.0 < 0.0))
+                    .then(a.0.abs().total_cmp(&b.0.abs()))
+            });
+        }
+        for &(t, part) in crossings.iter() {
+            roots.push(t, part);
+        }
+    }
+
+    /// True when the field at `point` exceeds the threshold.
+    pub fn inside(&self, point: DVec3) -> bool {
+        self.field(point).0 > self.threshold
+    }
+
+    /// Outward normal: against the field's gradient.
+    pub fn normal(&self, point: DVec3) -> DVec3 {
+        -self.field(point).1
+    }
+
+    /// Bounds of the components' spheres of influence.
+    pub fn bounds(&self) -> Aabb {
+        self.bounds
+    }
+
+    /// True when points far from every component count as inside (threshold not positive).
+    pub fn inside_everywhere_far(&self) -> bool {
+        self.threshold < 0.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{BlobComponent, Transform};
+
+    fn sphere(centre: DVec3, radius: f64, strength: f64) -> BlobComponent {
+        BlobComponent {
+            kind: BlobKind::Sphere { centre },
+            radius,
+            strength,
+            transform: Transform::IDENTITY,
+        }
+    }
+
+    #[test]
+    fn single_sphere_blob_is_a_sphere() {
+        // strength 2, threshold 0.5: (1 - r²)² = 0.25 at r² = 0.5.
+        let blob = Blob::new(&SceneBlob {
+            threshold: 0.5,
+            components: vec![sphere(DVec3::ZERO, 1.0, 2.0)],
+        })
+        .unwrap();
+        let mut roots = Roots::new();
+        blob.intersect(DVec3::new(-5.0, 0.0, 0.0), DVec3::X, &mut roots);
+        let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
+        found.sort_by(f64::total_cmp);
+        let r = 0.5f64.sqrt();
+        assert_eq!(found.len(), 2);
+        assert!((found[0] - (5.0 - r)).abs() < 1e-9 && (found[1] - (5.0 + r)).abs() < 1e-9);
+        let normal = blob.normal(DVec3::new(-r, 0.0, 0.0)).normalize();
+        assert!(normal.abs_diff_eq(-DVec3::X, 1e-9));
+        assert!(blob.inside(DVec3::ZERO) && !blob.inside(DVec3::new(0.9, 0.0, 0.0)));
+    }
+
+    #[test]
+    fn blob_crossings_agree_with_inside_test() {
+        let mut cylinder = sphere(DVec3::ZERO, 0.8, 1.5);
+        cylinder.kind = BlobKind::Cylinder {
+            end1: DVec3::new(-1.0, 0.0, 0.0),
+            end2: DVec3::new(1.0, 0.5, 0.0),
+        };
+        let mut squashed = sphere(DVec3::new(0.0, 0.8, 0.0), 1.0, 2.0);
+        squashed.transform = Transform::scaling(DVec3::new(1.0, 0.5, 1.0)).unwrap();
+        let blob = Blob::new(&SceneBlob {
+            threshold: 0.6,
+            components: vec![
+                cylinder,
+                squashed,
+                sphere(DVec3::new(0.5, 0.0, 0.0), 0.6, -1.0),
+            ],
+        })
+        .unwrap();
+        let mut state = 3u64;
+        let mut random = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for _ in 0..500 {
+            let origin = DVec3::new(random(), random(), random()) * 3.0;
+            let direction = DVec3::new(random(), random(), random());
+            let mut roots = Roots::new();
+            blob.intersect(origin, direction, &mut roots);
+            let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
+            found.sort_by(f64::total_cmp);
+            for pair in found.windows(2) {
+                if pair[1] - pair[0] < 1e-6 {
+                    continue;
+                }
+                let middle = origin + direction * (0.5 * (pair[0] + pair[1]));
+                let before = origin + direction * (pair[0] - 1e-7);
+                assert_ne!(blob.inside(middle), blob.inside(before));
+            }
+        }
+        let empty = SceneBlob {
+            threshold: 1.0,
+            components: vec![sphere(DVec3::ZERO, 0.0, 1.0)],
+        };
+        assert!(Blob::new(&empty).is_none());
+    }
+}
