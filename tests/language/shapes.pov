@@ -29,10 +29,13 @@
 #declare C = cubic { < 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, -0.3 > }
 #declare Po = poly { 2, < 1, 0, 0, 0, 1, 0, 0, 1, 0, -1 > sturm off }
 union { object { P } object { S } object { M } object { M2 } object { M3 } object { Q } object { C } object { Po } object { P3 } }
-#declare T1 = text { ttf "../reference/timrom.ttf" "Hello, World!" 0.2, 0 }
-#declare T2 = text { ttf "../reference/cyrvetic.ttf" concat("a", "b") 1, <0.1, 0.2> inverse }
-#declare T3 = text { ttf "../reference/timrom.ttf" "" 1, 0 }
-union { object { T1 } object { T2 } object { T3 } }
+// POV-Ray's fonts are not redistributed with durer: this part runs when they are installed.
+#if (file_exists("timrom.ttf") & file_exists("cyrvetic.ttf"))
+  #declare T1 = text { ttf "timrom.ttf" "Hello, World!" 0.2, 0 }
+  #declare T2 = text { ttf "cyrvetic.ttf" concat("a", "b") 1, <0.1, 0.2> inverse }
+  #declare T3 = text { ttf "timrom.ttf" "" 1, 0 }
+  union { object { T1 } object { T2 } object { T3 } }
+#end
 #declare Pr1 = prism { 0, 1, 4, <0,0>, <1,0>, <1,1>, <0,0> open }
 #declare Pr2 = prism { linear_sweep bezier_spline -1, 1, 4, <0,0>, <1,0>, <1,1>, <0,0> sturm }
 #declare Pr3 = prism { conic_sweep linear_spline 0, 1, 3, <0,0>, <1,0>, <1,1> }

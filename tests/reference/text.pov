@@ -1,4 +1,6 @@
 // text: TrueType glyphs (kerning, first-glyph left edge, per-character offset), two fonts.
+// needs: timrom.ttf
+// needs: cyrvetic.ttf
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 2, -5> look_at <0, 0.5, 0> angle 50 }
