@@ -64,7 +64,7 @@ impl Evaluator {
     /// by reference. As in POV-Ray, commas are optional, so `Obj -y` is two arguments when
     /// `Obj` is not a number: such a sum or difference is split in two.
     fn macro_arguments(&mut self, call: &Call) -> EvalResult<Vec<Value>> {
-        use crate::syntax::ast::{Argument, BinaryOp};
+        use crate::syntax::ast::Argument;
         let caller_scope = self.scopes.len() - 1;
         let mut values = Vec::with_capacity(call.arguments.len());
         for argument in &call.arguments {
@@ -85,32 +85,39 @@ impl Evaluator {
                     };
                     values.push(value);
                 }
-                Argument::Expr(Expr::Binary(
-                    op @ (BinaryOp::Add | BinaryOp::Subtract),
-                    lhs,
-                    rhs,
-                    span,
-                )) => {
-                    let left = self.eval_expr(lhs)?;
-                    let right = self.eval_expr(rhs)?;
-                    if matches!(left, Value::Float(_) | Value::Vector(_) | Value::Colour(_)) {
-                        values.push(self.binary(*op, left, right, *span)?);
-                    } else {
-                        values.push(left);
-                        let negate = *op == BinaryOp::Subtract;
-                        let zero = Value::Float(0.0);
-                        values.push(if negate {
-                            self.binary(BinaryOp::Subtract, zero, right, *span)?
-                        } else {
-                            right
-                        });
+                Argument::Expr(expr) => {
+                    let (value, rest) = self.eval_value_pair(expr)?;
+                    values.push(value);
+                    if let Some(rest) = rest {
+                        values.push(self.eval_expr(&rest)?);
                     }
                 }
-                Argument::Expr(expr) => values.push(self.eval_expr(expr)?),
                 Argument::Block(block) => values.push(self.eval_block(block)?),
             }
         }
         Ok(values)
+    }
+
+    /// Evaluates an expression where POV-Ray's optional commas matter: `A -b` is two values
+    /// when `A` is not a number (an object, a string...). Returns the first value and, for
+    /// such a pair, the signed second operand still to evaluate. Each operand is evaluated
+    /// once, so macro calls and `rand` in it run once.
+    pub(crate) fn eval_value_pair(&mut self, expr: &Expr) -> EvalResult<(Value, Option<Expr>)> {
+        use crate::syntax::ast::{BinaryOp, UnaryOp};
+        let Expr::Binary(op @ (BinaryOp::Add | BinaryOp::Subtract), lhs, rhs, span) = expr else {
+            return Ok((self.eval_expr(expr)?, None));
+        };
+        let left = self.eval_expr(lhs)?;
+        if matches!(left, Value::Float(_) | Value::Vector(_) | Value::Colour(_)) {
+            let right = self.eval_expr(rhs)?;
+            return Ok((self.binary(*op, left, right, *span)?, None));
+        }
+        let sign = if *op == BinaryOp::Subtract {
+            UnaryOp::Negate
+        } else {
+            UnaryOp::Plus
+        };
+        Ok((left, Some(Expr::Unary(sign, rhs.clone(), rhs.span()))))
     }
 
     /// Evaluates a macro call used as a value: its body must yield exactly one value.

@@ -209,7 +209,16 @@ impl Evaluator {
             item = self.next_item(stream)?;
         }
         match item {
-            Some(item @ (Item::Expr(_) | Item::Block(_))) => {
+            Some(Item::Expr(expr)) => {
+                // `"text" -1` is two values in POV-Ray: a sign after a non-number starts
+                // the next value.
+                let (value, rest) = self.eval_value_pair(&expr)?;
+                if let Some(rest) = rest {
+                    stream.push_back(Item::Expr(rest));
+                }
+                Ok((value, expr.span()))
+            }
+            Some(item @ Item::Block(_)) => {
                 let span = item.span();
                 Ok((self.item_value(&item)?, span))
             }

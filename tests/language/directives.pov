@@ -90,3 +90,8 @@ Check(("abc" < "abd") & ("b" = "b"), "string comparison")
 Check(Picked.y = -1, "an object followed by -y is two arguments")
 Check(Pick(1, 2 -1) = 1, "numbers still subtract")
 Check(strcmp(input_file_name, "directives.pov") = 0, "input_file_name is the scene's file name")
+#declare Calls = 0;
+#macro Counted() #declare Calls = Calls + 1; 1 #end
+#macro Two(A, B) A + B #end
+#declare R = Two(Counted() - 1, 0);
+Check(Calls = 1 & R = 0, "an argument's macro call runs once")
