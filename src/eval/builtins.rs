@@ -6,6 +6,7 @@ use crate::scene::Transform;
 use crate::syntax::ast::Call;
 use glam::DVec3;
 use std::rc::Rc;
+use std::sync::Arc;
 
 /// Names of every built-in function, for suggestions.
 pub(crate) const FUNCTIONS: &[&str] = &[
@@ -452,14 +453,19 @@ fn array_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<R
 /// Extent reported for objects without finite bounds.
 const UNBOUNDED_EXTENT: f64 = 1e10;
 
-/// The geometry of an object argument, prepared for bounds and ray queries.
+/// The geometry of an object argument, prepared for bounds and ray queries; cached per
+/// object value, since scenes call `trace` in loops.
 fn object_world(
     ev: &mut Evaluator,
     call: &Call,
     index: usize,
-) -> EvalResult<crate::geometry::World> {
+) -> EvalResult<Rc<crate::geometry::World>> {
     match ev.argument(call, index)? {
         Value::Object(object) => {
+            let key = Arc::as_ptr(&object) as usize;
+            if let Some((_, world)) = ev.query_worlds.get(&key) {
+                return Ok(world.clone());
+            }
             let scene = crate::scene::Scene {
                 camera: Default::default(),
                 lights: Vec::new(),
@@ -467,7 +473,10 @@ fn object_world(
                 background: crate::scene::Colour::BLACK,
                 settings: Default::default(),
             };
-            Ok(crate::geometry::World::build(&scene))
+            let world = Rc::new(crate::geometry::World::build(&scene));
+            // The cache holds the object too, so its address cannot be reused meanwhile.
+            ev.query_worlds.insert(key, (object, world.clone()));
+            Ok(world)
         }
         other => Err(ev
             .error(

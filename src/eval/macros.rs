@@ -65,15 +65,24 @@ impl Evaluator {
     /// `Obj` is not a number: such a sum or difference is split in two.
     fn macro_arguments(&mut self, call: &Call) -> EvalResult<Vec<Value>> {
         use crate::syntax::ast::Argument;
-        let caller_scope = self.scopes.len() - 1;
         let mut values = Vec::with_capacity(call.arguments.len());
         for argument in &call.arguments {
             match argument {
                 Argument::Expr(Expr::Ident(name, span)) => {
-                    let value = if self.scopes.iter().any(|s| s.contains_key(name)) {
-                        Value::Reference {
-                            scope: caller_scope,
-                            name: name.clone(),
+                    // Point straight at the variable the name resolves to (following a
+                    // reference the caller itself holds), so recursive macros passing a
+                    // parameter on do not build chains of references.
+                    let holder = self.scopes.iter().rposition(|s| s.contains_key(name));
+                    let value = if let Some(index) = holder {
+                        match &self.scopes[index][name] {
+                            Value::Reference { scope, name } => Value::Reference {
+                                scope: *scope,
+                                name: name.clone(),
+                            },
+                            _ => Value::Reference {
+                                scope: index,
+                                name: name.clone(),
+                            },
                         }
                     } else if self.is_builtin_name(name) {
                         self.eval_expr(&Expr::Ident(name.clone(), *span))?

@@ -157,6 +157,8 @@ pub(crate) struct Evaluator {
     warned_once: std::collections::HashSet<String>,
     /// States of the random streams made by `seed`, indexed by stream number.
     pub(crate) random_streams: Vec<u32>,
+    /// Geometry prepared for `trace` and the extent functions, by object address.
+    pub(crate) query_worlds: HashMap<usize, (Arc<Object>, Rc<crate::geometry::World>)>,
     /// Data files opened by `#fopen`; closed ones are `None`.
     pub(crate) files: Vec<Option<files::DataFile>>,
 }
@@ -185,6 +187,7 @@ impl Evaluator {
             warned_once: Default::default(),
             random_streams: Vec::new(),
             files: Vec::new(),
+            query_worlds: HashMap::new(),
         }
     }
 

@@ -270,7 +270,11 @@ impl Evaluator {
         let (string, _) = self.expect_string(stream, "the text")?;
         let thickness = self.expect_float(stream, "the thickness")?;
         let offset = self.expect_vector(stream, "the offset")?;
-        let path = match self.find_include(&font) {
+        // POV-Ray also tries the name with `.ttf` added.
+        let found = self
+            .find_include(&font)
+            .or_else(|_| self.find_include(&format!("{font}.ttf")));
+        let path = match found {
             Ok(path) => path,
             Err(_) => {
                 return Err(self
