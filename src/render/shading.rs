@@ -13,6 +13,8 @@
 //! - metallic m tints both highlights: `light · (1 + m (1 − F) (pigment − 1))` with
 //!   F = clamp(0.014567225 / (x − 1.12)² − 0.011612903, 0, 1), x = acos(N·L) / (π/2).
 //! - light here is the light colour after fading, the spotlight cone and shadow filtering.
+//! - `shadowless` lights light diffusely but cause no highlights (as the manual says, and
+//!   renders confirm).
 
 use super::lights::{incoming, shadow_filter};
 use crate::geometry::World;
@@ -84,7 +86,8 @@ pub fn local_light(
             };
             body += finish.diffuse * falloff * pigment * colour;
         }
-        if !has_highlights {
+        // POV-Ray: shadowless lights cause no highlights.
+        if !has_highlights || light.shadowless {
             continue;
         }
         let tint = highlight_tint(finish.metallic, cos_incidence, pigment);
