@@ -193,6 +193,12 @@ fn floor_char_boundary(text: &str, mut offset: usize) -> usize {
 }
 
 /// The candidate closest to `name` by edit distance, if close enough to be a likely typo.
+///
+/// ```
+/// use durer::diag::did_you_mean;
+/// assert_eq!(did_you_mean("pigmnet", ["pigment", "finish"]), Some("pigment"));
+/// assert_eq!(did_you_mean("zzz", ["pigment", "finish"]), None);
+/// ```
 pub fn did_you_mean<'a>(
     name: &str,
     candidates: impl IntoIterator<Item = &'a str>,

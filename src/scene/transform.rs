@@ -50,6 +50,14 @@ impl Transform {
     }
 
     /// POV-Ray's `rotate <x, y, z>`: degrees about x, then y, then z (left-handed, as POV-Ray).
+    ///
+    /// ```
+    /// use durer::scene::Transform;
+    /// use glam::DVec3;
+    /// // POV-Ray turns +x into -z when rotating 90 degrees about y.
+    /// let turned = Transform::rotation_degrees(DVec3::new(0.0, 90.0, 0.0)).point_to_outer(DVec3::X);
+    /// assert!((turned - DVec3::new(0.0, 0.0, -1.0)).length() < 1e-12);
+    /// ```
     pub fn rotation_degrees(angles: DVec3) -> Transform {
         let r = angles * (std::f64::consts::PI / 180.0);
         // POV-Ray rotates about X, then Y, then Z; its left-handed system matches glam's
