@@ -532,29 +532,14 @@ mod tests {
             ],
         ];
         let shape = ExtrudedOutline::new(&segments, (-0.5, 0.5), false, false, false).unwrap();
-        let mut state = 99u64;
-        let mut random = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
-        for _ in 0..500 {
-            let origin = DVec3::new(random(), random(), random()) * 3.0;
-            let direction = DVec3::new(random(), random(), random());
-            let mut roots = Roots::new();
-            shape.intersect(origin, direction, &mut roots);
-            let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
-            found.sort_by(f64::total_cmp);
-            for pair in found.windows(2) {
-                if pair[1] - pair[0] < 1e-6 {
-                    continue;
-                }
-                let middle = origin + direction * (0.5 * (pair[0] + pair[1]));
-                let before = origin + direction * (pair[0] - 1e-7);
-                assert_ne!(shape.inside(middle), shape.inside(before));
-            }
-        }
+        super::super::test_support::assert_crossings_flip_inside(
+            99,
+            3.0,
+            1e-6,
+            1e-7,
+            |origin, direction, roots| shape.intersect(origin, direction, roots),
+            |point| shape.inside(point),
+        );
     }
 
     #[test]

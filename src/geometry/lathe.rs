@@ -264,29 +264,14 @@ mod tests {
             line(DVec2::new(1.0, 1.0), DVec2::new(0.0, 1.0)),
         ];
         let lathe = Lathe::new(&curve).unwrap();
-        let mut state = 7u64;
-        let mut random = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
-        for _ in 0..500 {
-            let origin = DVec3::new(random(), random(), random()) * 3.0;
-            let direction = DVec3::new(random(), random(), random());
-            let mut roots = Roots::new();
-            lathe.intersect(origin, direction, &mut roots);
-            let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
-            found.sort_by(f64::total_cmp);
-            for pair in found.windows(2) {
-                if pair[1] - pair[0] < 1e-6 {
-                    continue;
-                }
-                let middle = origin + direction * (0.5 * (pair[0] + pair[1]));
-                let before = origin + direction * (pair[0] - 1e-7);
-                assert_ne!(lathe.inside(middle), lathe.inside(before));
-            }
-        }
+        super::super::test_support::assert_crossings_flip_inside(
+            7,
+            3.0,
+            1e-6,
+            1e-7,
+            |origin, direction, roots| lathe.intersect(origin, direction, roots),
+            |point| lathe.inside(point),
+        );
         assert!(Lathe::new(&[]).is_none());
         assert!(Lathe::new(&[[DVec2::splat(f64::NAN); 4]]).is_none());
     }

@@ -233,26 +233,14 @@ mod tests {
     #[test]
     fn crossings_agree_with_inside_test() {
         let torus = PolySurface::new(4, &torus_quartic()).unwrap();
-        let mut state = 12345u64;
-        let mut random = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
-        for _ in 0..500 {
-            let origin = DVec3::new(random(), random(), random()) * 4.0;
-            let direction = DVec3::new(random(), random(), random());
-            let mut roots = Roots::new();
-            torus.intersect(origin, direction, &mut roots);
-            let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
-            found.sort_by(f64::total_cmp);
-            for pair in found.windows(2) {
-                let middle = origin + direction * (0.5 * (pair[0] + pair[1]));
-                let before = origin + direction * (pair[0] - 1e-6);
-                assert_ne!(torus.inside(middle), torus.inside(before));
-            }
-        }
+        super::super::test_support::assert_crossings_flip_inside(
+            12345,
+            4.0,
+            0.0,
+            1e-6,
+            |origin, direction, roots| torus.intersect(origin, direction, roots),
+            |point| torus.inside(point),
+        );
     }
 
     #[test]

@@ -216,3 +216,44 @@ pub fn random_csg(random: &mut Random, depth: usize) -> Object {
     ][random.index(4)];
     csg(operation, children)
 }
+
+/// Checks, along 500 seeded random rays, that every pair of crossings `intersect` finds
+/// flips the `inside` test: the point midway between two crossings is on the other side from
+/// the point just before the first one. Crossings closer than `min_gap` are skipped; origins
+/// lie in the cube [-origin_scale, origin_scale]³.
+pub fn assert_crossings_flip_inside(
+    seed: u64,
+    origin_scale: f64,
+    min_gap: f64,
+    before: f64,
+    intersect: impl Fn(DVec3, DVec3, &mut super::roots::Roots),
+    inside: impl Fn(DVec3) -> bool,
+) {
+    let mut state = seed;
+    let mut random = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    for _ in 0..500 {
+        let origin = DVec3::new(random(), random(), random()) * origin_scale;
+        let direction = DVec3::new(random(), random(), random());
+        let mut roots = super::roots::Roots::new();
+        intersect(origin, direction, &mut roots);
+        let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
+        found.sort_by(f64::total_cmp);
+        for pair in found.windows(2) {
+            if pair[1] - pair[0] < min_gap {
+                continue;
+            }
+            let middle = origin + direction * (0.5 * (pair[0] + pair[1]));
+            let just_before = origin + direction * (pair[0] - before);
+            assert_ne!(
+                inside(middle),
+                inside(just_before),
+                "crossings {pair:?} from {origin}"
+            );
+        }
+    }
+}
