@@ -7,7 +7,7 @@
 //! bounds. Holds: at most [`MAX_ROOTS`] crossings are reported, the nearest ahead first when
 //! there are more; per-ray work uses a per-thread scratch vector that is reused.
 
-use super::roots::{Roots, MAX_ROOTS};
+use super::roots::Roots;
 use super::torus::{real_roots_between, MAX_DEGREE};
 use crate::accel::Aabb;
 use crate::scene::{Blob as SceneBlob, BlobKind};
@@ -299,17 +299,7 @@ impl Blob {
                 }
             }
         }
-        let crossings = &mut crossings[..count];
-        if crossings.len() > MAX_ROOTS {
-            crossings.sort_by(|a, b| {
-                (a.0 < 0.0)
-                    .cmp(&(b.0 < 0.0))
-                    .then(a.0.abs().total_cmp(&b.0.abs()))
-            });
-        }
-        for &(t, part) in crossings.iter() {
-            roots.push(t, part);
-        }
+        roots.push_nearest(&mut crossings[..count]);
     }
 
     /// True when the field at `point` exceeds the threshold.

@@ -9,7 +9,7 @@
 //! segment is found again from the point); at most [`MAX_ROOTS`] crossings are reported per
 //! line, nearest ahead first when there are more; nothing allocates per ray.
 
-use super::roots::{Roots, MAX_ROOTS};
+use super::roots::Roots;
 use super::torus::real_roots_between;
 use crate::accel::Aabb;
 use glam::{DVec2, DVec3};
@@ -228,18 +228,7 @@ impl ExtrudedOutline {
                 }
             }
         }
-        let crossings = &mut crossings[..count];
-        if crossings.len() > MAX_ROOTS {
-            // Keep the nearest crossings ahead of the origin.
-            crossings.sort_by(|a, b| {
-                (a.0 < 0.0)
-                    .cmp(&(b.0 < 0.0))
-                    .then(a.0.abs().total_cmp(&b.0.abs()))
-            });
-        }
-        for &(t, part) in crossings.iter() {
-            roots.push(t, part);
-        }
+        roots.push_nearest(&mut crossings[..count]);
     }
 
     /// True when `point` is within the depth and its XY position is in the region.

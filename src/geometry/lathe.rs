@@ -9,7 +9,7 @@
 //! fits; nothing allocates per ray.
 
 use super::extrusion::Segment;
-use super::roots::{Roots, MAX_ROOTS};
+use super::roots::Roots;
 use super::torus::{real_roots_between, MAX_DEGREE};
 use crate::accel::Aabb;
 use glam::{DVec2, DVec3};
@@ -139,17 +139,7 @@ impl Lathe {
                 }
             }
         }
-        let crossings = &mut crossings[..count];
-        if crossings.len() > MAX_ROOTS {
-            crossings.sort_by(|a, b| {
-                (a.0 < 0.0)
-                    .cmp(&(b.0 < 0.0))
-                    .then(a.0.abs().total_cmp(&b.0.abs()))
-            });
-        }
-        for &(s, part) in crossings.iter() {
-            roots.push(s, part);
-        }
+        roots.push_nearest(&mut crossings[..count]);
     }
 
     /// True when `point` is inside the solid of revolution.

@@ -45,6 +45,21 @@ impl Roots {
         }
     }
 
+    /// Records many crossings; when there are more than fit, keeps the nearest ones ahead of
+    /// the ray origin (then the nearest behind it). Reorders `crossings`.
+    pub fn push_nearest(&mut self, crossings: &mut [(f64, u8)]) {
+        if crossings.len() > MAX_ROOTS {
+            crossings.sort_by(|a, b| {
+                (a.0 < 0.0)
+                    .cmp(&(b.0 < 0.0))
+                    .then(a.0.abs().total_cmp(&b.0.abs()))
+            });
+        }
+        for &(distance, part) in crossings.iter() {
+            self.push(distance, part);
+        }
+    }
+
     /// The recorded intersections as (distance, part) pairs, in recording order.
     pub fn iter(&self) -> impl Iterator<Item = (f64, u8)> + '_ {
         self.distances[..self.len]
