@@ -308,6 +308,7 @@ impl Evaluator {
         let mut sky = DVec3::Y;
         let mut look_at: Option<DVec3> = None;
         let mut angle: Option<f64> = None;
+        let mut image_plane_given = false;
         let mut transforms: Vec<Transform> = Vec::new();
         while let Some(item) = self.next_item(stream)? {
             match &item {
@@ -317,8 +318,14 @@ impl Evaluator {
                         "orthographic" => camera.projection = Projection::Orthographic,
                         "location" => camera.location = self.expect_vector(stream, "a vector")?,
                         "direction" => camera.direction = self.expect_vector(stream, "a vector")?,
-                        "right" => camera.right = self.expect_vector(stream, "a vector")?,
-                        "up" => camera.up = self.expect_vector(stream, "a vector")?,
+                        "right" => {
+                            camera.right = self.expect_vector(stream, "a vector")?;
+                            image_plane_given = true;
+                        }
+                        "up" => {
+                            camera.up = self.expect_vector(stream, "a vector")?;
+                            image_plane_given = true;
+                        }
                         "sky" => sky = self.expect_vector(stream, "a vector")?,
                         "look_at" => look_at = Some(self.expect_vector(stream, "a vector")?),
                         "angle" => {
@@ -398,6 +405,11 @@ impl Evaluator {
                 let aspect = camera.up.length() / camera.right.length();
                 camera.right = camera.right.normalize_or(DVec3::X) * width;
                 camera.up = camera.up.normalize_or(DVec3::Y) * width * aspect;
+            } else if let (None, Some(target), false) = (angle, look_at, image_plane_given) {
+                // Without `right`/`up`, POV-Ray scales the default plane by the look_at distance.
+                let distance = (target - camera.location).length();
+                camera.right *= distance;
+                camera.up *= distance;
             }
         }
         for t in &transforms {
@@ -449,12 +461,19 @@ impl Evaluator {
         while let Some(item) = self.next_item(stream)? {
             match &item {
                 Item::Keyword(word, span) => match &**word {
-                    "spotlight" => is_spot = true,
+                    // `spotlight` and `shadowless` replace each other: the last one wins.
+                    "spotlight" => {
+                        is_spot = true;
+                        light.shadowless = false;
+                    }
                     "point_at" => spot.point_at = self.expect_vector(stream, "a vector")?,
                     "radius" => spot.radius = self.expect_float(stream, "an angle")?,
                     "falloff" => spot.falloff = self.expect_float(stream, "an angle")?,
                     "tightness" => spot.tightness = self.expect_float(stream, "a float")?,
-                    "shadowless" => light.shadowless = true,
+                    "shadowless" => {
+                        light.shadowless = true;
+                        is_spot = false;
+                    }
                     "fade_distance" => {
                         light.fade_distance = self.expect_float(stream, "a float")?
                     }
