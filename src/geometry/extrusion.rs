@@ -405,31 +405,25 @@ mod tests {
         ]
     }
 
+    /// The outline of the square [-r, r]² as four straight segments.
+    fn square(r: f64) -> impl Iterator<Item = [DVec2; 4]> {
+        let c = [
+            DVec2::new(-r, -r),
+            DVec2::new(r, -r),
+            DVec2::new(r, r),
+            DVec2::new(-r, r),
+        ];
+        (0..4).map(move |i| line(c[i], c[(i + 1) % 4]))
+    }
+
     fn square_with_hole() -> ExtrudedOutline {
-        let square = |r: f64| {
-            let c = [
-                DVec2::new(-r, -r),
-                DVec2::new(r, -r),
-                DVec2::new(r, r),
-                DVec2::new(-r, r),
-            ];
-            (0..4).map(move |i| line(c[i], c[(i + 1) % 4]))
-        };
         let segments: Vec<_> = square(2.0).chain(square(1.0)).collect();
         ExtrudedOutline::new(&segments, (0.0, 1.0), false, false, false).unwrap()
     }
 
     #[test]
     fn prism_frame_swaps_axes() {
-        let square = [
-            DVec2::new(-1.0, -1.0),
-            DVec2::new(1.0, -1.0),
-            DVec2::new(1.0, 1.0),
-            DVec2::new(-1.0, 1.0),
-        ];
-        let segments: Vec<_> = (0..4)
-            .map(|i| line(square[i], square[(i + 1) % 4]))
-            .collect();
+        let segments: Vec<_> = square(1.0).collect();
         let prism = ExtrudedOutline::new(&segments, (0.0, 2.0), false, true, false).unwrap();
         assert!(prism.inside(DVec3::new(0.5, 1.5, 0.5)));
         assert!(!prism.inside(DVec3::new(0.5, 2.5, 0.5)));
@@ -452,15 +446,7 @@ mod tests {
 
     #[test]
     fn conic_pyramid_grows_with_depth() {
-        let square = [
-            DVec2::new(-1.0, -1.0),
-            DVec2::new(1.0, -1.0),
-            DVec2::new(1.0, 1.0),
-            DVec2::new(-1.0, 1.0),
-        ];
-        let segments: Vec<_> = (0..4)
-            .map(|i| line(square[i], square[(i + 1) % 4]))
-            .collect();
+        let segments: Vec<_> = square(1.0).collect();
         let pyramid = ExtrudedOutline::new(&segments, (0.0, 2.0), false, false, true).unwrap();
         assert!(pyramid.inside(DVec3::new(0.4, 0.0, 0.5)));
         assert!(!pyramid.inside(DVec3::new(0.6, 0.0, 0.5)));
