@@ -7,6 +7,8 @@ pub mod accel;
 pub mod diag;
 pub mod eval;
 pub mod geometry;
+pub mod noise;
+pub mod raster;
 pub mod render;
 pub mod report;
 pub mod scene;

@@ -1,0 +1,149 @@
+//! Image files read as rasters: the pixels behind `image_map`, `bump_map`, `image_pattern`
+//! and `height_field`.
+//!
+//! In: a file path and POV-Ray's format keyword (`png`, `jpeg`, `tga`, `ppm`, `pgm`, `hdr`,
+//! `gif`, `bmp`, `sys`). Out: a [`Raster`] of raw channel values in [0, 1] (HDR values may be
+//! larger), rows from the top of the image. Holds: no gamma is applied here; what a value means
+//! (colour to linearise, height to use as is) is for the caller to decide.
+
+use std::path::Path;
+
+/// A decoded image.
+#[derive(Clone, Debug)]
+pub struct Raster {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Red, green, blue, alpha per pixel, row by row from the top; alpha is 1 when the file
+    /// has none.
+    pub pixels: Vec<[f32; 4]>,
+    /// The file stores grey levels only.
+    pub grey: bool,
+    /// The file stores 16 bits per channel (height fields then use the full precision).
+    pub sixteen_bit: bool,
+    /// The file is high dynamic range (values are linear light, not encoded).
+    pub high_dynamic_range: bool,
+}
+
+impl Raster {
+    /// The pixel at `column`, `row` (clamped into the image).
+    pub fn pixel(&self, column: i64, row: i64) -> [f32; 4] {
+        let column = column.clamp(0, self.width as i64 - 1) as usize;
+        let row = row.clamp(0, self.height as i64 - 1) as usize;
+        self.pixels[row * self.width as usize + column]
+    }
+}
+
+/// The image formats POV-Ray names, by keyword.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RasterFormat {
+    Png,
+    Jpeg,
+    Tga,
+    Ppm,
+    Pgm,
+    Hdr,
+    Gif,
+    Bmp,
+    /// `sys`: the platform's default format (PNG here... detected from the contents).
+    System,
+}
+
+impl RasterFormat {
+    /// The format for a POV-Ray keyword such as `png` or `jpeg`.
+    pub fn from_keyword(keyword: &str) -> Option<RasterFormat> {
+        Some(match keyword {
+            "png" => RasterFormat::Png,
+            "jpeg" => RasterFormat::Jpeg,
+            "tga" => RasterFormat::Tga,
+            "ppm" => RasterFormat::Ppm,
+            "pgm" => RasterFormat::Pgm,
+            "hdr" => RasterFormat::Hdr,
+            "gif" => RasterFormat::Gif,
+            "bmp" => RasterFormat::Bmp,
+            "sys" => RasterFormat::System,
+            _ => return None,
+        })
+    }
+
+    fn image_format(self) -> Option<image::ImageFormat> {
+        Some(match self {
+            RasterFormat::Png => image::ImageFormat::Png,
+            RasterFormat::Jpeg => image::ImageFormat::Jpeg,
+            RasterFormat::Tga => image::ImageFormat::Tga,
+            RasterFormat::Ppm | RasterFormat::Pgm => image::ImageFormat::Pnm,
+            RasterFormat::Hdr => image::ImageFormat::Hdr,
+            RasterFormat::Gif => image::ImageFormat::Gif,
+            RasterFormat::Bmp => image::ImageFormat::Bmp,
+            RasterFormat::System => return None,
+        })
+    }
+}
+
+/// Largest image accepted, in pixels (a guard against hostile headers).
+const MAX_PIXELS: u64 = 1 << 28;
+
+/// Reads and decodes `path` as `format` (`System` guesses from the contents).
+pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
+    let bytes =
+        std::fs::read(path).map_err(|error| format!("cannot read {}: {error}", path.display()))?;
+    let guessed = image::guess_format(&bytes).ok();
+    let chosen = format
+        .image_format()
+        .or(guessed)
+        .ok_or_else(|| format!("cannot tell the image format of {}", path.display()))?;
+    // TGA has no signature; trust the keyword. Others: prefer what the contents say.
+    let chosen = match (chosen, guessed) {
+        (image::ImageFormat::Tga, _) => image::ImageFormat::Tga,
+        (_, Some(actual)) => actual,
+        (keyword, None) => keyword,
+    };
+    let mut reader = image::ImageReader::with_format(std::io::Cursor::new(&bytes), chosen);
+    reader.no_limits();
+    let decoded = reader
+        .decode()
+        .map_err(|error| format!("cannot decode {}: {error}", path.display()))?;
+    let (width, height) = (decoded.width(), decoded.height());
+    if width == 0 || height == 0 || width as u64 * height as u64 > MAX_PIXELS {
+        return Err(format!(
+            "{}: unsupported image size {width}x{height}",
+            path.display()
+        ));
+    }
+    use image::ColorType as C;
+    let colour_type = decoded.color();
+    let grey = matches!(colour_type, C::L8 | C::La8 | C::L16 | C::La16);
+    let sixteen_bit = matches!(colour_type, C::L16 | C::La16 | C::Rgb16 | C::Rgba16);
+    let high_dynamic_range = matches!(colour_type, C::Rgb32F | C::Rgba32F);
+    let pixels = decoded.to_rgba32f().pixels().map(|p| p.0).collect();
+    Ok(Raster {
+        width,
+        height,
+        pixels,
+        grey,
+        sixteen_bit,
+        high_dynamic_range,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_a_png_and_reports_missing_files() {
+        let folder = std::env::temp_dir().join(format!("durer-raster-{}", std::process::id()));
+        std::fs::create_dir_all(&folder).unwrap();
+        let path = folder.join("two.png");
+        let image = image::RgbImage::from_fn(2, 1, |x, _| image::Rgb([255 * x as u8, 0, 51]));
+        image.save(&path).unwrap();
+        let raster = load(&path, RasterFormat::Png).unwrap();
+        assert_eq!((raster.width, raster.height), (2, 1));
+        assert_eq!(raster.pixel(1, 0), [1.0, 0.0, 0.2, 1.0]);
+        assert_eq!(raster.pixel(-5, 9), [0.0, 0.0, 0.2, 1.0]);
+        assert!(!raster.grey && !raster.sixteen_bit);
+        assert!(load(&folder.join("none.png"), RasterFormat::Png).is_err());
+        std::fs::remove_dir_all(&folder).unwrap();
+    }
+}
