@@ -8,6 +8,7 @@ pub mod diag;
 pub mod eval;
 pub mod geometry;
 pub mod noise;
+pub mod pattern;
 pub mod raster;
 pub mod render;
 pub mod report;

@@ -118,32 +118,39 @@ impl Evaluator {
         let mut frequency = 1.0;
         let mut phase = 0.0;
         while let Some(item) = self.next_item(stream)? {
+            if let Item::Keyword(word, span) = &item {
+                if let Some(spec) = self.pattern_keyword(word, *span, stream)? {
+                    let map = match spec.block_count() {
+                        Some(count) => PigmentMap::Blocks(self.block_list(stream, count)?),
+                        None => PigmentMap::Colours(grey_ramp()),
+                    };
+                    pigment = Pigment::Pattern {
+                        pattern: spec,
+                        map,
+                        transform: Transform::IDENTITY,
+                    };
+                    continue;
+                }
+                if let Pigment::Pattern { pattern, .. } = &mut pigment {
+                    if self.pattern_modifier(word, *span, stream, pattern)? {
+                        continue;
+                    }
+                }
+            }
+            if let Item::Block(block) = &item {
+                if let Pigment::Pattern { pattern, .. } = &mut pigment {
+                    if self.pattern_block(block, pattern)? {
+                        continue;
+                    }
+                }
+            }
             match &item {
                 Item::Keyword(word, span) => match &**word {
-                    "checker" => {
-                        let first = self.optional_pigment(stream)?;
-                        self.skip_comma(stream)?;
-                        let second = self.optional_pigment(stream)?;
-                        let blocks = vec![
-                            first.unwrap_or(Pigment::Solid(Colour::rgb(0.0, 0.0, 1.0))),
-                            second.unwrap_or(Pigment::Solid(Colour::rgb(0.0, 1.0, 0.0))),
-                        ];
-                        pigment = Pigment::Pattern {
-                            pattern: Pattern::Checker,
-                            map: PigmentMap::Blocks(blocks),
-                            transform: Transform::IDENTITY,
-                        };
-                    }
-                    "gradient" => {
-                        let direction = self.expect_vector(stream, "a direction")?;
-                        pigment = Pigment::Pattern {
-                            pattern: Pattern::Gradient(direction),
-                            map: PigmentMap::Colours(grey_ramp()),
-                            transform: Transform::IDENTITY,
-                        };
-                    }
                     "translate" | "rotate" | "scale" | "matrix" | "transform" => {
                         let t = self.transform_keyword(word, *span, stream)?;
+                        if let Pigment::Pattern { pattern, .. } = &mut pigment {
+                            pattern.note_transform(&t);
+                        }
                         transform_pigment(&mut pigment, &t);
                     }
                     "frequency" => frequency = self.expect_float(stream, "a float")?,
@@ -204,7 +211,9 @@ impl Evaluator {
                             let _ = self.expect_value(stream, "a value")?;
                         }
                         pigment = Pigment::Pattern {
-                            pattern: Pattern::Gradient(DVec3::ZERO),
+                            pattern: Pattern::new(crate::pattern::PatternKind::Gradient(
+                                DVec3::ZERO,
+                            )),
                             map: PigmentMap::Colours(grey_ramp()),
                             transform: Transform::IDENTITY,
                         };
@@ -251,6 +260,22 @@ impl Evaluator {
             }
         }
         Ok(pigment)
+    }
+
+    /// The optional pigments of a block pattern (`checker A, B`), POV-Ray's default
+    /// colours (blue, green, red, ...) for the ones left out.
+    fn block_list(&mut self, stream: &mut Stream, count: usize) -> EvalResult<Vec<Pigment>> {
+        const DEFAULTS: [(f64, f64, f64); 3] = [(0.0, 0.0, 1.0), (0.0, 1.0, 0.0), (1.0, 0.0, 0.0)];
+        let mut blocks = Vec::with_capacity(count);
+        for index in 0..count {
+            if index > 0 {
+                self.skip_comma(stream)?;
+            }
+            let (r, g, b) = DEFAULTS[index.min(DEFAULTS.len() - 1)];
+            let given = self.optional_pigment(stream)?;
+            blocks.push(given.unwrap_or(Pigment::Solid(Colour::rgb(r, g, b))));
+        }
+        Ok(blocks)
     }
 
     /// An optional colour or pigment operand (for `checker`).

@@ -11,6 +11,7 @@ mod files;
 mod literals;
 mod macros;
 mod objects;
+mod pattern;
 mod shapes;
 mod stream;
 mod value;

@@ -5,7 +5,9 @@ use super::test_support::{all_hits, csg, mark_of, marked, random_csg, random_sha
 use super::test_support::{marked_texture, Random};
 use super::*;
 use crate::scene::{Colour, Transform};
-use crate::scene::{CsgOperation, Interior, Object, Pattern, Pigment, PigmentMap, Shape};
+use crate::scene::{
+    CsgOperation, Interior, Object, Pattern, PatternKind, Pigment, PigmentMap, Shape,
+};
 use glam::DAffine3;
 
 /// Sphere A: centre (-0.5, 0, 0), radius 1; crossed by the x axis at x = -1.5 and 0.5.
@@ -237,11 +239,11 @@ fn coincident_faces_subtract_cleanly_on_axis() {
 #[test]
 fn materials_inherit_and_share_textures() {
     let checker = Pigment::Pattern {
-        pattern: Pattern::Checker,
+        pattern: Pattern::new(PatternKind::Checker),
         map: PigmentMap::Blocks(vec![
             Pigment::Solid(Colour::WHITE),
             Pigment::Pattern {
-                pattern: Pattern::Gradient(DVec3::Y),
+                pattern: Pattern::new(PatternKind::Gradient(DVec3::Y)),
                 map: PigmentMap::Colours(vec![(0.0, Colour::BLACK), (1.0, Colour::WHITE)]),
                 transform: Transform::translation(DVec3::Y),
             },

@@ -14,17 +14,11 @@
 //!   otherwise the first entry whose key is `>= v` and the entry before it are interpolated
 //!   linearly in all five components (so at a repeated key the earlier entry wins).
 
-use crate::scene::{Colour, Pattern, Pigment, PigmentMap};
+use crate::scene::{Colour, Pigment, PigmentMap};
 use glam::DVec3;
 
 /// How far nested pigments (a block of a checker holding another checker...) are followed.
 const MAX_PIGMENT_NESTING: u32 = 64;
-
-/// Offset POV-Ray adds to each coordinate before flooring in the checker pattern.
-const CHECKER_OFFSET: f64 = 1e-10;
-
-/// The modulus of POV-Ray's default ramp wave, slightly above 1 so that 1 itself survives.
-const RAMP_WAVE_PERIOD: f64 = 1.00001;
 
 /// The colour of `pigment` at `world_point`.
 pub fn pigment_colour(pigment: &Pigment, world_point: DVec3) -> Colour {
@@ -47,13 +41,13 @@ fn colour_at_depth(pigment: &Pigment, world_point: DVec3, depth: u32) -> Colour 
             if !point.is_finite() {
                 return Colour::BLACK;
             }
-            match pattern {
-                Pattern::Checker => {
-                    let block = checker_block(point);
+            match pattern.block_count() {
+                Some(_) => {
+                    let block = pattern.block(point);
                     block_colour(map, block, block as f64, world_point, depth)
                 }
-                Pattern::Gradient(direction) => {
-                    let value = gradient_value(point, *direction);
+                None => {
+                    let value = pattern.value(point);
                     match map {
                         PigmentMap::Colours(entries) => colour_map_lookup(entries, value),
                         PigmentMap::Blocks(blocks) => {
@@ -82,45 +76,6 @@ fn block_colour(
             None => Colour::BLACK,
         },
         PigmentMap::Colours(entries) => colour_map_lookup(entries, value),
-    }
-}
-
-/// Which of two checker blocks (0 or 1) the pattern-space point lies in.
-pub fn checker_block(point: DVec3) -> usize {
-    let sum = (point.x + CHECKER_OFFSET).floor()
-        + (point.y + CHECKER_OFFSET).floor()
-        + (point.z + CHECKER_OFFSET).floor();
-    // Sums beyond 2^53 are all even; rem_euclid keeps negative sums in 0..2.
-    if sum.rem_euclid(2.0) >= 1.0 {
-        1
-    } else {
-        0
-    }
-}
-
-/// The gradient pattern's value in [0, 1] at a pattern-space point.
-pub fn gradient_value(point: DVec3, direction: DVec3) -> f64 {
-    let length = direction.length();
-    if !(length > 0.0 && length.is_finite()) {
-        return 0.0;
-    }
-    let mut value = point.dot(direction / length);
-    if value > 1.0 {
-        value %= 1.0;
-    }
-    ramp_wave(value)
-}
-
-/// POV-Ray's default `ramp_wave` applied to a raw pattern value.
-fn ramp_wave(value: f64) -> f64 {
-    let mut wrapped = value % RAMP_WAVE_PERIOD;
-    if wrapped < 0.0 {
-        wrapped -= wrapped.floor();
-    }
-    if wrapped.is_finite() {
-        wrapped
-    } else {
-        0.0
     }
 }
 
@@ -161,11 +116,12 @@ pub fn colour_map_lookup(entries: &[(f64, Colour)], value: f64) -> Colour {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::Transform;
+    use crate::pattern::{checker_block, gradient_value};
+    use crate::scene::{Pattern, PatternKind, Transform};
 
     fn checker(a: Colour, b: Colour) -> Pigment {
         Pigment::Pattern {
-            pattern: Pattern::Checker,
+            pattern: Pattern::new(PatternKind::Checker),
             map: PigmentMap::Blocks(vec![Pigment::Solid(a), Pigment::Solid(b)]),
             transform: Transform::IDENTITY,
         }
@@ -186,7 +142,7 @@ mod tests {
     #[test]
     fn nested_checker_uses_its_own_transform() {
         let inner = Pigment::Pattern {
-            pattern: Pattern::Checker,
+            pattern: Pattern::new(PatternKind::Checker),
             map: PigmentMap::Blocks(vec![
                 Pigment::Solid(Colour::grey(0.25)),
                 Pigment::Solid(Colour::grey(0.75)),
@@ -194,7 +150,7 @@ mod tests {
             transform: Transform::scaling(DVec3::splat(0.5)).unwrap(),
         };
         let outer = Pigment::Pattern {
-            pattern: Pattern::Checker,
+            pattern: Pattern::new(PatternKind::Checker),
             map: PigmentMap::Blocks(vec![inner, Pigment::Solid(Colour::WHITE)]),
             transform: Transform::IDENTITY,
         };

@@ -3,8 +3,8 @@
 
 use super::*;
 use crate::scene::{
-    Camera, Colour, Finish, GlobalSettings, Interior, LightSource, Object, Pattern, Pigment,
-    PigmentMap, Shape, Texture, Transform,
+    Camera, Colour, Finish, GlobalSettings, Interior, LightSource, Object, Pattern, PatternKind,
+    Pigment, PigmentMap, Shape, Texture, Transform,
 };
 use glam::DVec3;
 use std::sync::atomic::{AtomicU32, Ordering};
@@ -144,7 +144,7 @@ fn snell_at_a_flat_interface() {
     // A wall at z = 2 whose grey level is (x + 2) / 4 (gradient x, scale 4, translate -2x),
     // seen through the surface of a glass half-space tilted about the y axis.
     let ramp = Pigment::Pattern {
-        pattern: Pattern::Gradient(DVec3::X),
+        pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
         map: PigmentMap::Colours(vec![(0.0, Colour::BLACK), (1.0, Colour::WHITE)]),
         transform: Transform::scaling(DVec3::splat(4.0))
             .unwrap()
@@ -268,7 +268,7 @@ fn busy_scene() -> Scene {
     let floor = textured(
         plane(DVec3::Y, -1.0),
         Pigment::Pattern {
-            pattern: Pattern::Checker,
+            pattern: Pattern::new(PatternKind::Checker),
             map: PigmentMap::Blocks(vec![
                 Pigment::Solid(Colour::WHITE),
                 Pigment::Solid(Colour::rgb(0.1, 0.2, 0.1)),

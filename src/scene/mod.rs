@@ -384,14 +384,7 @@ pub enum Pigment {
     },
 }
 
-/// A pattern: a function from pattern space to a value in [0, 1] or a block index.
-#[derive(Clone, Debug)]
-pub enum Pattern {
-    /// 3-D checkerboard of unit cubes; block index 0 or 1.
-    Checker,
-    /// Ramp along a direction (the fractional part of `dot(p, direction)`).
-    Gradient(DVec3),
-}
+pub use crate::pattern::{PatternKind, PatternSpec as Pattern};
 
 /// What a pattern's value is looked up in.
 #[derive(Clone, Debug)]
