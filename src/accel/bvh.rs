@@ -159,6 +159,85 @@ impl Bvh {
     }
 }
 
+impl Bvh {
+    /// Calls `visit(position)` for every primitive whose box the ray segment
+    /// `(min_distance, max_distance)` enters, in no particular order. Primitives are visited
+    /// leaf by leaf, so some near misses sharing a leaf with a hit are visited too: callers
+    /// test the primitives themselves.
+    pub fn for_each_on_ray(
+        &self,
+        origin: DVec3,
+        inverse_direction: DVec3,
+        min_distance: f64,
+        max_distance: f64,
+        mut visit: impl FnMut(usize),
+    ) {
+        let enters = |node: &Node| {
+            node.bounds
+                .ray_entry(origin, inverse_direction, min_distance, max_distance)
+                .is_some()
+        };
+        self.walk(enters, |position| {
+            visit(position);
+            false
+        });
+    }
+
+    /// True when `test(position)` holds for some primitive whose box contains `point`;
+    /// stops at the first such primitive. As with [`Bvh::for_each_on_ray`], primitives sharing
+    /// a leaf with one whose box contains the point may be tested too.
+    pub fn any_containing(&self, point: DVec3, test: impl FnMut(usize) -> bool) -> bool {
+        self.walk(|node: &Node| node.bounds.contains(point), test)
+    }
+
+    /// Depth-first walk over the nodes `admit` accepts, calling `leaf(position)` for each
+    /// primitive of an admitted leaf until it returns true (then the walk returns true).
+    fn walk(&self, admit: impl Fn(&Node) -> bool, mut leaf: impl FnMut(usize) -> bool) -> bool {
+        let Some(root) = self.nodes.first() else {
+            return false;
+        };
+        if !admit(root) {
+            return false;
+        }
+        let mut stack = [0u32; STACK_SIZE];
+        let mut stack_len = 0;
+        let mut current = 0usize;
+        loop {
+            let node = &self.nodes[current];
+            let mut next = None;
+            if node.count > 0 {
+                let first = node.first as usize;
+                for position in first..first + node.count as usize {
+                    if leaf(position) {
+                        return true;
+                    }
+                }
+            } else {
+                let left = current + 1;
+                let right = node.first as usize;
+                let (take_left, take_right) = (admit(&self.nodes[left]), admit(&self.nodes[right]));
+                if take_left && take_right && stack_len < STACK_SIZE {
+                    stack[stack_len] = right as u32;
+                    stack_len += 1;
+                }
+                if take_left {
+                    next = Some(left);
+                } else if take_right {
+                    next = Some(right);
+                }
+            }
+            current = match next {
+                Some(index) => index,
+                None if stack_len == 0 => return false,
+                None => {
+                    stack_len -= 1;
+                    stack[stack_len] as usize
+                }
+            };
+        }
+    }
+}
+
 /// Working state of one build.
 struct Builder<'a> {
     bounds: &'a [Aabb],
@@ -308,6 +387,51 @@ mod tests {
         fn vector(&mut self, scale: f64) -> DVec3 {
             DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * 2.0 * scale
         }
+    }
+
+    #[test]
+    fn box_queries_match_brute_force() {
+        let mut random = Random(0x5eed_0fb0_c5c5);
+        let boxes: Vec<Aabb> = (0..700)
+            .map(|_| {
+                let centre = random.vector(10.0);
+                Aabb::from_corners(centre, centre + random.vector(1.5))
+            })
+            .collect();
+        let (bvh, order) = Bvh::build(&boxes);
+        for _ in 0..300 {
+            let point = random.vector(10.0);
+            let mut found: Vec<u32> = Vec::new();
+            bvh.any_containing(point, |position| {
+                found.push(order[position]);
+                false
+            });
+            // Everything whose box holds the point, plus at most a few leaf mates.
+            let expected: Vec<u32> = (0..boxes.len() as u32)
+                .filter(|&i| boxes[i as usize].contains(point))
+                .collect();
+            assert!(
+                expected.iter().all(|i| found.contains(i)),
+                "{found:?} {expected:?}"
+            );
+            assert!(found.len() <= expected.len() * LARGE_LEAF + LARGE_LEAF);
+            let origin = random.vector(12.0);
+            let inverse_direction = random.vector(1.0).recip();
+            let mut crossed: Vec<u32> = Vec::new();
+            bvh.for_each_on_ray(origin, inverse_direction, 0.0, 8.0, |position| {
+                crossed.push(order[position])
+            });
+            let expected: Vec<u32> = (0..boxes.len() as u32)
+                .filter(|&i| {
+                    boxes[i as usize]
+                        .ray_entry(origin, inverse_direction, 0.0, 8.0)
+                        .is_some()
+                })
+                .collect();
+            assert!(expected.iter().all(|i| crossed.contains(i)));
+            assert!(crossed.len() <= expected.len() * LARGE_LEAF + LARGE_LEAF);
+        }
+        assert!(!bvh.any_containing(DVec3::splat(1e9), |_| true));
     }
 
     #[test]

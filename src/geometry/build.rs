@@ -519,6 +519,7 @@ impl Builder {
                         let bounds = NodeBounds {
                             surface: padded(bounds.surface),
                             inside: padded(bounds.inside),
+                            outside: padded(bounds.outside),
                         };
                         CsgNode::Leaf { index, bounds }
                     })

@@ -13,7 +13,7 @@
 use super::leaf::Leaf;
 use super::roots::Roots;
 use super::Ray;
-use crate::accel::Aabb;
+use crate::accel::{Aabb, Bvh};
 use glam::DVec3;
 use std::cell::RefCell;
 
@@ -41,6 +41,84 @@ pub struct NodeBounds {
     pub surface: Option<Aabb>,
     /// Where points inside the subtree can be; `None` when they can be anywhere.
     pub inside: Option<Aabb>,
+    /// Where points outside the subtree can be; `None` when they can be anywhere. Bounded for
+    /// inverted finite shapes (a difference's subtracted parts) and what is built of them.
+    pub outside: Option<Aabb>,
+}
+
+/// Nodes with at least this many children index them by their boxes.
+const INDEXED_CHILDREN: usize = 12;
+
+/// The children of a wide CSG node indexed by their boxes, so that a ray or a point visits
+/// only the few children it can touch instead of all of them.
+#[derive(Clone, Debug)]
+pub struct ChildIndex {
+    /// Children with a bounded, non-empty surface, by surface box.
+    surface: Bvh,
+    /// Child position of each primitive position of `surface`.
+    surface_children: Vec<u32>,
+    /// Children whose surface is unbounded: every ray visits them.
+    unbounded_surface: Vec<u32>,
+    /// For union and merge, children by the box of their inside (where they can contain a
+    /// point); for intersection and clip, by the box of their outside (where they can fail to
+    /// contain one). Children that can never matter to a point test are left out.
+    filter: Bvh,
+    /// Child position of each primitive position of `filter`.
+    filter_children: Vec<u32>,
+    /// Children whose filter region is unbounded: every point test checks them.
+    unbounded_filter: Vec<u32>,
+}
+
+impl ChildIndex {
+    /// Indexes `children` combined by `combination`; `None` for small nodes and inverted clips.
+    fn new(combination: Combination, children: &[NodeBounds]) -> Option<ChildIndex> {
+        if children.len() < INDEXED_CHILDREN || combination == Combination::InvertedClip {
+            return None;
+        }
+        let by_inside = matches!(combination, Combination::Union | Combination::Merge);
+        let split = |region: &dyn Fn(&NodeBounds) -> Option<Aabb>| {
+            let mut boxes = Vec::new();
+            let mut boxed_children = Vec::new();
+            let mut unbounded = Vec::new();
+            for (position, bounds) in children.iter().enumerate() {
+                match region(bounds) {
+                    None => unbounded.push(position as u32),
+                    Some(region) if region.is_empty() => {}
+                    Some(region) => {
+                        boxes.push(region);
+                        boxed_children.push(position as u32);
+                    }
+                }
+            }
+            let (tree, order) = Bvh::build(&boxes);
+            let children = order.iter().map(|&i| boxed_children[i as usize]).collect();
+            (tree, children, unbounded)
+        };
+        let (surface, surface_children, unbounded_surface) = split(&|b| b.surface);
+        let (filter, filter_children, unbounded_filter) = if by_inside {
+            split(&|b| b.inside)
+        } else {
+            split(&|b| b.outside)
+        };
+        Some(ChildIndex {
+            surface,
+            surface_children,
+            unbounded_surface,
+            filter,
+            filter_children,
+            unbounded_filter,
+        })
+    }
+
+    /// True when `test(child)` holds for a child whose filter region contains `point`.
+    fn any_filtered(&self, point: DVec3, mut test: impl FnMut(usize) -> bool) -> bool {
+        self.unbounded_filter
+            .iter()
+            .any(|&child| test(child as usize))
+            || self.filter.any_containing(point, |position| {
+                test(self.filter_children[position] as usize)
+            })
+    }
 }
 
 /// One node of a CSG tree.
@@ -61,6 +139,8 @@ pub enum CsgNode {
         children: Vec<CsgNode>,
         /// The node's bounds.
         bounds: NodeBounds,
+        /// The children indexed by their boxes, for wide nodes.
+        index: Option<Box<ChildIndex>>,
     },
 }
 
@@ -69,6 +149,18 @@ impl CsgNode {
     pub fn bounds(&self) -> NodeBounds {
         match self {
             CsgNode::Leaf { bounds, .. } | CsgNode::Combine { bounds, .. } => *bounds,
+        }
+    }
+
+    /// Removes the child indexes of this subtree (tests compare against the plain search).
+    #[cfg(test)]
+    pub fn strip_child_indexes(&mut self) {
+        if let CsgNode::Combine {
+            children, index, ..
+        } = self
+        {
+            *index = None;
+            children.iter_mut().for_each(CsgNode::strip_child_indexes);
         }
     }
 
@@ -83,6 +175,10 @@ impl CsgNode {
                 inside: child_bounds
                     .iter()
                     .try_fold(Aabb::EMPTY, |all, b| Some(all.union(&b.inside?))),
+                // Outside a union only where outside every child.
+                outside: child_bounds
+                    .iter()
+                    .fold(None, |all, b| overlap(all, b.outside)),
             },
             Combination::Clip | Combination::InvertedClip => {
                 let clips = child_bounds
@@ -92,11 +188,21 @@ impl CsgNode {
                 let first = child_bounds.first().copied().unwrap_or(NodeBounds {
                     surface: Some(Aabb::EMPTY),
                     inside: Some(Aabb::EMPTY),
+                    outside: None,
                 });
+                let clip = combination == Combination::Clip;
                 NodeBounds {
                     surface: overlap(first.surface, clips),
-                    inside: if combination == Combination::Clip {
+                    inside: if clip {
                         overlap(first.inside, clips)
+                    } else {
+                        None
+                    },
+                    // Outside a clipped object where outside the object or any clip.
+                    outside: if clip {
+                        child_bounds
+                            .iter()
+                            .try_fold(Aabb::EMPTY, |all, b| Some(all.union(&b.outside?)))
                     } else {
                         None
                     },
@@ -120,17 +226,24 @@ impl CsgNode {
                 NodeBounds {
                     surface,
                     inside: inside_after,
+                    // Outside an intersection where outside any child.
+                    outside: child_bounds
+                        .iter()
+                        .try_fold(Aabb::EMPTY, |all, b| Some(all.union(&b.outside?))),
                 }
             }
         };
         let bounds = NodeBounds {
             surface: bounds.surface.map(canonical_empty),
             inside: bounds.inside.map(canonical_empty),
+            outside: bounds.outside.map(canonical_empty),
         };
+        let index = ChildIndex::new(combination, &child_bounds).map(Box::new);
         CsgNode::Combine {
             combination,
             children,
             bounds,
+            index,
         }
     }
 }
@@ -168,9 +281,17 @@ pub struct CsgHit {
     pub part: u8,
 }
 
+/// Per-thread scratch reused by every ray, so no ray allocates once the vectors have grown.
+#[derive(Default)]
+struct Scratch {
+    /// Surface hits gathered so far.
+    hits: Vec<CsgHit>,
+    /// A stack of candidate child lists of the wide nodes being gathered.
+    candidates: Vec<u32>,
+}
+
 thread_local! {
-    /// Per-thread scratch for gathering CSG hits, reused by every ray.
-    static SCRATCH: RefCell<Vec<CsgHit>> = const { RefCell::new(Vec::new()) };
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
 }
 
 /// A whole CSG object: its leaves and the node tree over them.
@@ -215,9 +336,11 @@ impl CsgTree {
             min_distance,
             max_distance,
         };
-        let search = |hits: &mut Vec<CsgHit>| {
+        let search = |scratch: &mut Scratch| {
+            let Scratch { hits, candidates } = scratch;
             hits.clear();
-            self.gather(&self.root, &query, hits);
+            candidates.clear();
+            self.gather(&self.root, &query, hits, candidates);
             let mut best: Option<CsgHit> = None;
             // Among hits at exactly the same distance the later child wins, as in POV-Ray.
             for hit in hits.iter() {
@@ -230,13 +353,22 @@ impl CsgTree {
             best
         };
         SCRATCH.with(|scratch| match scratch.try_borrow_mut() {
-            Ok(mut hits) => search(&mut hits),
-            Err(_) => search(&mut Vec::new()),
+            Ok(mut scratch) => search(&mut scratch),
+            Err(_) => search(&mut Scratch::default()),
         })
     }
 
     /// Appends the surviving hits of `node` within the query's limits to `hits`.
-    fn gather(&self, node: &CsgNode, query: &Query, hits: &mut Vec<CsgHit>) {
+    ///
+    /// `candidates` is scratch: each wide node pushes the children the ray can reach, in
+    /// order, and pops them again before returning.
+    fn gather(
+        &self,
+        node: &CsgNode,
+        query: &Query,
+        hits: &mut Vec<CsgHit>,
+        candidates: &mut Vec<u32>,
+    ) {
         if let Some(surface) = node.bounds().surface {
             let entry = surface.ray_entry(
                 query.ray.origin,
@@ -266,51 +398,112 @@ impl CsgTree {
             CsgNode::Combine {
                 combination,
                 children,
+                index: None,
                 ..
             } => {
-                let clipping = matches!(combination, Combination::Clip | Combination::InvertedClip);
-                for (position, child) in children.iter().enumerate() {
-                    if clipping && position > 0 {
-                        break;
-                    }
-                    let child_start = hits.len();
-                    self.gather(child, query, hits);
-                    if *combination == Combination::Union {
-                        continue;
-                    }
-                    let mut kept = child_start;
-                    for index in child_start..hits.len() {
-                        let hit = hits[index];
-                        let point = query.ray.at(hit.distance);
-                        let mut siblings = children
-                            .iter()
-                            .enumerate()
-                            .filter(|&(other, _)| other != position)
-                            .map(|(_, sibling)| sibling);
-                        let survives = match combination {
-                            Combination::Intersection
-                            | Combination::Clip
-                            | Combination::InvertedClip => {
-                                siblings.all(|sibling| self.inside_node(sibling, point))
-                            }
-                            _ => !siblings.any(|sibling| self.inside_node(sibling, point)),
-                        };
-                        if survives {
-                            hits[kept] = hit;
-                            kept += 1;
-                        }
-                    }
-                    hits.truncate(kept);
+                for position in 0..children.len() {
+                    self.gather_child(
+                        *combination,
+                        children,
+                        None,
+                        position,
+                        query,
+                        hits,
+                        candidates,
+                    );
                 }
+            }
+            CsgNode::Combine {
+                combination,
+                children,
+                index: Some(index),
+                ..
+            } => {
+                let start = candidates.len();
+                index.surface.for_each_on_ray(
+                    query.ray.origin,
+                    query.inverse_direction,
+                    query.min_distance,
+                    query.max_distance,
+                    |position| candidates.push(index.surface_children[position]),
+                );
+                candidates.extend_from_slice(&index.unbounded_surface);
+                // Children in their written order: among equally near hits the later wins.
+                candidates[start..].sort_unstable();
+                let end = candidates.len();
+                for slot in start..end {
+                    let position = candidates[slot] as usize;
+                    self.gather_child(
+                        *combination,
+                        children,
+                        Some(index),
+                        position,
+                        query,
+                        hits,
+                        candidates,
+                    );
+                }
+                candidates.truncate(start);
             }
         }
     }
 
+    /// Gathers the hits of child `position` of a combination and keeps those its siblings
+    /// let through.
+    #[allow(clippy::too_many_arguments)]
+    fn gather_child(
+        &self,
+        combination: Combination,
+        children: &[CsgNode],
+        index: Option<&ChildIndex>,
+        position: usize,
+        query: &Query,
+        hits: &mut Vec<CsgHit>,
+        candidates: &mut Vec<u32>,
+    ) {
+        let clipping = matches!(combination, Combination::Clip | Combination::InvertedClip);
+        if clipping && position > 0 {
+            // The clipping objects' own surfaces are never seen.
+            return;
+        }
+        let child_start = hits.len();
+        self.gather(&children[position], query, hits, candidates);
+        if combination == Combination::Union {
+            return;
+        }
+        let mut kept = child_start;
+        for slot in child_start..hits.len() {
+            let hit = hits[slot];
+            let point = query.ray.at(hit.distance);
+            let inside =
+                |other: usize| other != position && self.inside_node(&children[other], point);
+            let outside =
+                |other: usize| other != position && !self.inside_node(&children[other], point);
+            let survives = match (combination, index) {
+                (Combination::Merge, Some(index)) => !index.any_filtered(point, inside),
+                (Combination::Merge, None) => !(0..children.len()).any(inside),
+                (_, Some(index)) => !index.any_filtered(point, outside),
+                (_, None) => !(0..children.len()).any(outside),
+            };
+            if survives {
+                hits[kept] = hit;
+                kept += 1;
+            }
+        }
+        hits.truncate(kept);
+    }
+
     /// True when the world `point` is inside the subtree `node`.
     fn inside_node(&self, node: &CsgNode, point: DVec3) -> bool {
-        if let Some(inside) = node.bounds().inside {
+        let bounds = node.bounds();
+        if let Some(inside) = bounds.inside {
             if !inside.contains(point) {
                 return false;
+            }
+        }
+        if let Some(outside) = bounds.outside {
+            if !outside.contains(point) {
+                return true;
             }
         }
         match node {
@@ -318,19 +511,26 @@ impl CsgTree {
             CsgNode::Combine {
                 combination,
                 children,
+                index,
                 ..
-            } => match combination {
-                Combination::Intersection | Combination::Clip => {
-                    children.iter().all(|child| self.inside_node(child, point))
-                }
-                Combination::InvertedClip => {
+            } => match (combination, index) {
+                (Combination::InvertedClip, _) => {
                     let mut parts = children.iter();
                     let first_inside = parts
                         .next()
                         .is_some_and(|first| self.inside_node(first, point));
                     first_inside || !parts.all(|clip| self.inside_node(clip, point))
                 }
-                Combination::Union | Combination::Merge => {
+                (Combination::Intersection | Combination::Clip, Some(index)) => {
+                    !index.any_filtered(point, |child| !self.inside_node(&children[child], point))
+                }
+                (Combination::Intersection | Combination::Clip, None) => {
+                    children.iter().all(|child| self.inside_node(child, point))
+                }
+                (Combination::Union | Combination::Merge, Some(index)) => {
+                    index.any_filtered(point, |child| self.inside_node(&children[child], point))
+                }
+                (Combination::Union | Combination::Merge, None) => {
                     children.iter().any(|child| self.inside_node(child, point))
                 }
             },

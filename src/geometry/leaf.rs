@@ -373,6 +373,9 @@ pub struct LeafBounds {
     pub surface: Option<Aabb>,
     /// Where inside points can be; `None` when they can be anywhere.
     pub inside: Option<Aabb>,
+    /// Where outside points can be; `None` when they can be anywhere (bounded only for
+    /// inverted finite shapes).
+    pub outside: Option<Aabb>,
 }
 
 /// True when both maps of `transform` are finite and its matrix is invertible.
@@ -426,14 +429,16 @@ impl Leaf {
         let surface = shape
             .bounds()
             .map(|bounds| bounds.transformed(&world_from_shape));
-        let inside = if inverse {
-            None
+        // Where the shape itself (before any inversion) can contain points.
+        let own_inside = match shape.inside_reach() {
+            InsideReach::Bounded => surface,
+            InsideReach::Unbounded => None,
+            InsideReach::Nowhere => Some(Aabb::EMPTY),
+        };
+        let (inside, outside) = if inverse {
+            (None, own_inside)
         } else {
-            match shape.inside_reach() {
-                InsideReach::Bounded => surface,
-                InsideReach::Unbounded => None,
-                InsideReach::Nowhere => Some(Aabb::EMPTY),
-            }
+            (own_inside, None)
         };
         let leaf = Leaf {
             shape,
@@ -441,7 +446,14 @@ impl Leaf {
             material,
             inverse,
         };
-        (leaf, LeafBounds { surface, inside })
+        (
+            leaf,
+            LeafBounds {
+                surface,
+                inside,
+                outside,
+            },
+        )
     }
 
     /// Index of the leaf's material.

@@ -345,6 +345,74 @@ fn materials_inherit_and_share_textures() {
 }
 
 #[test]
+fn wide_csg_nodes_index_their_children_exactly() {
+    use CsgOperation::{Difference, Intersection, Merge, Union};
+    let mut random = Random::new(0xc5_9001);
+    let mut objects = Vec::new();
+    for (place, operation) in [Difference, Intersection, Merge, Union, Difference]
+        .into_iter()
+        .enumerate()
+    {
+        // A large base shape and many small children scattered around it, some of them
+        // nested CSG and some inverted.
+        let mut children = vec![marked(
+            Shape::Box {
+                corner1: DVec3::splat(-2.0),
+                corner2: DVec3::splat(2.0),
+            },
+            0.0,
+        )];
+        for index in 1..60 {
+            let mut child = if index % 7 == 0 {
+                random_csg(&mut random, 1)
+            } else {
+                marked(random_shape(&mut random), index as f64)
+            };
+            if matches!(child.shape, Shape::Plane { .. } | Shape::Quadric { .. })
+                && operation != Intersection
+            {
+                child.shape = Shape::Sphere {
+                    centre: DVec3::ZERO,
+                    radius: 0.4,
+                };
+            }
+            let scale = Transform::scaling(DVec3::splat(0.3)).unwrap();
+            child.transform = random
+                .transform()
+                .then(&scale)
+                .then(&Transform::translation(random.vector(2.5)));
+            child.inverse = random.next() < 0.1;
+            children.push(child);
+        }
+        let mut object = csg(operation, children);
+        object.transform = Transform::translation(DVec3::new(place as f64 * 8.0, 0.0, 0.0));
+        object.inverse = place == 4;
+        objects.push(object);
+    }
+    let indexed = World::build(&scene_of(objects.clone()));
+    let plain = World::build(&scene_of(objects)).without_csg_child_indexes();
+    let mut hits = 0;
+    for _ in 0..4000 {
+        let mut ray = random.ray(4.0);
+        ray.origin.x += random.range(-2.0, 36.0);
+        let min_distance = random.range(0.0, 2.0);
+        let fast = indexed.first_hit(&ray, min_distance, f64::INFINITY);
+        let slow = plain.first_hit(&ray, min_distance, f64::INFINITY);
+        match (fast, slow) {
+            (Some(fast), Some(slow)) => {
+                assert_eq!(fast.distance, slow.distance, "{ray:?}");
+                assert_eq!(fast.material, slow.material, "{ray:?}");
+                assert_eq!(fast.normal, slow.normal, "{ray:?}");
+                hits += 1;
+            }
+            (None, None) => {}
+            (fast, slow) => panic!("indexed {fast:?} but plain {slow:?} for {ray:?}"),
+        }
+    }
+    assert!(hits > 1000, "only {hits} hits");
+}
+
+#[test]
 fn bvh_matches_brute_force() {
     let mut random = Random::new(0xb0b_0001);
     let mut objects = Vec::new();

@@ -195,6 +195,18 @@ impl World {
         finish(ray, from_bvh.or(best))
     }
 
+    /// The same world with the child indexes of wide CSG nodes removed, so every CSG node
+    /// visits all its children (the oracle the indexes are tested against).
+    #[cfg(test)]
+    pub(crate) fn without_csg_child_indexes(mut self) -> World {
+        for primitive in self.primitives.iter_mut().chain(self.unbounded.iter_mut()) {
+            if let Primitive::Csg(tree) = primitive {
+                tree.root.strip_child_indexes();
+            }
+        }
+        self
+    }
+
     /// The nearest hit found by testing every primitive, without the BVH (for tests).
     #[cfg(test)]
     pub(crate) fn first_hit_brute_force(
