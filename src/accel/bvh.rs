@@ -50,22 +50,21 @@ impl Bvh {
     ///
     /// Returns the tree and the primitive order: the caller must store primitive `order[i]`
     /// at position `i`, since the traversal reports positions in that order.
+    ///
+    /// Large ranges build their two halves in parallel; the result is the same whatever the
+    /// number of threads.
     pub fn build(bounds: &[Aabb]) -> (Bvh, Vec<u32>) {
-        let mut builder = Builder {
+        let centroids: Vec<DVec3> = bounds.iter().map(Aabb::centre).collect();
+        let builder = Builder {
             bounds,
-            centroids: bounds.iter().map(Aabb::centre).collect(),
-            order: (0..bounds.len() as u32).collect(),
-            nodes: Vec::with_capacity(bounds.len().max(1) * 2),
+            centroids: &centroids,
         };
+        let mut order: Vec<u32> = (0..bounds.len() as u32).collect();
+        let mut nodes = Vec::with_capacity(bounds.len().max(1) * 2);
         if !bounds.is_empty() {
-            builder.build_node(0, bounds.len(), 0);
+            builder.build_node(&mut order, 0, 0, &mut nodes);
         }
-        (
-            Bvh {
-                nodes: builder.nodes,
-            },
-            builder.order,
-        )
+        (Bvh { nodes }, order)
     }
 
     /// Number of nodes (interior and leaf) in the tree.
@@ -238,13 +237,14 @@ impl Bvh {
     }
 }
 
-/// Working state of one build.
+/// What every part of one build shares (read only, so subtrees can be built in parallel).
 struct Builder<'a> {
     bounds: &'a [Aabb],
-    centroids: Vec<DVec3>,
-    order: Vec<u32>,
-    nodes: Vec<Node>,
+    centroids: &'a [DVec3],
 }
+
+/// Ranges at least this large build their two halves on parallel threads.
+const PARALLEL_RANGE: usize = 16_384;
 
 /// One bin of the SAH sweep.
 #[derive(Clone, Copy)]
@@ -254,44 +254,65 @@ struct Bin {
 }
 
 impl Builder<'_> {
-    /// Builds the subtree over `order[start..end]` and returns its node index.
-    fn build_node(&mut self, start: usize, end: usize, depth: usize) -> usize {
-        let node_index = self.nodes.len();
+    /// Builds the subtree over `order` (the primitives at positions `offset ..` of the whole
+    /// order), appending its nodes to `nodes`; returns the subtree's root index.
+    fn build_node(
+        &self,
+        order: &mut [u32],
+        offset: usize,
+        depth: usize,
+        nodes: &mut Vec<Node>,
+    ) -> usize {
+        let node_index = nodes.len();
         let mut bounds = Aabb::EMPTY;
         let mut centroid_bounds = Aabb::EMPTY;
-        for &primitive in &self.order[start..end] {
+        for &primitive in order.iter() {
             bounds = bounds.union(&self.bounds[primitive as usize]);
             centroid_bounds = centroid_bounds.grown_to(self.centroids[primitive as usize]);
         }
-        let count = end - start;
-        self.nodes.push(Node {
+        let count = order.len();
+        nodes.push(Node {
             bounds,
-            first: start as u32,
+            first: offset as u32,
             count: count as u32,
         });
         if count <= SMALL_LEAF || depth >= MAX_DEPTH {
             return node_index;
         }
-        let Some(middle) = self.choose_split(start, end, &bounds, &centroid_bounds) else {
+        let Some(middle) = self.choose_split(order, &bounds, &centroid_bounds) else {
             return node_index;
         };
-        self.build_node(start, middle, depth + 1);
-        let right = self.build_node(middle, end, depth + 1);
-        self.nodes[node_index].first = right as u32;
-        self.nodes[node_index].count = 0;
+        let (left, right) = order.split_at_mut(middle);
+        let right_index = if count >= PARALLEL_RANGE {
+            let build = |part: &mut [u32], part_offset: usize| {
+                let mut part_nodes = Vec::with_capacity(part.len() * 2);
+                self.build_node(part, part_offset, depth + 1, &mut part_nodes);
+                part_nodes
+            };
+            let (left_nodes, right_nodes) =
+                rayon::join(|| build(left, offset), || build(right, offset + middle));
+            append_subtree(nodes, left_nodes);
+            let right_index = nodes.len();
+            append_subtree(nodes, right_nodes);
+            right_index
+        } else {
+            self.build_node(left, offset, depth + 1, nodes);
+            self.build_node(right, offset + middle, depth + 1, nodes)
+        };
+        nodes[node_index].first = right_index as u32;
+        nodes[node_index].count = 0;
         node_index
     }
 
-    /// Reorders `order[start..end]` for the best split and returns the split position, or
+    /// Reorders `order` for the best split and returns the split position within it, or
     /// `None` when a leaf is better.
     fn choose_split(
-        &mut self,
-        start: usize,
-        end: usize,
+        &self,
+        order: &mut [u32],
         bounds: &Aabb,
         centroid_bounds: &Aabb,
     ) -> Option<usize> {
-        let count = end - start;
+        let count = order.len();
         let extent = centroid_bounds.extent();
         let axis = if extent.x >= extent.y && extent.x >= extent.z {
             0
@@ -304,7 +325,7 @@ impl Builder<'_> {
         let axis_extent = extent[axis];
         if !(axis_extent > 0.0 && axis_extent.is_finite()) {
             // Every centroid coincides: bins cannot separate them, so halve large ranges.
-            return (count > LARGE_LEAF).then_some(start + count / 2);
+            return (count > LARGE_LEAF).then_some(count / 2);
         }
         let scale = BIN_COUNT as f64 / axis_extent;
         let bin_of = |centroid: DVec3| -> usize {
@@ -315,7 +336,7 @@ impl Builder<'_> {
             bounds: Aabb::EMPTY,
             count: 0,
         }; BIN_COUNT];
-        for &primitive in &self.order[start..end] {
+        for &primitive in order.iter() {
             let bin = &mut bins[bin_of(self.centroids[primitive as usize])];
             bin.bounds = bin.bounds.union(&self.bounds[primitive as usize]);
             bin.count += 1;
@@ -352,10 +373,10 @@ impl Builder<'_> {
         let leaf_cost = area * count as f64;
         let split_cost = TRAVERSAL_COST * area + best_cost;
         if best_split == 0 || (count <= LARGE_LEAF && leaf_cost <= split_cost) {
-            return (count > LARGE_LEAF).then_some(start + count / 2);
+            return (count > LARGE_LEAF).then_some(count / 2);
         }
-        let centroids = &self.centroids;
-        let range = &mut self.order[start..end];
+        let centroids = self.centroids;
+        let range = order;
         let mut boundary = 0;
         for index in 0..range.len() {
             if bin_of(centroids[range[index] as usize]) < best_split {
@@ -364,10 +385,22 @@ impl Builder<'_> {
             }
         }
         if boundary == 0 || boundary == count {
-            return Some(start + count / 2);
+            return Some(count / 2);
         }
-        Some(start + boundary)
+        Some(boundary)
     }
+}
+
+/// Appends a subtree built on its own (node indices counted from 0) to `nodes`, moving its
+/// interior nodes' right-child links to the new positions.
+fn append_subtree(nodes: &mut Vec<Node>, subtree: Vec<Node>) {
+    let base = nodes.len() as u32;
+    nodes.extend(subtree.into_iter().map(|mut node| {
+        if node.count == 0 {
+            node.first += base;
+        }
+        node
+    }));
 }
 
 #[cfg(test)]
@@ -432,6 +465,40 @@ mod tests {
             assert!(crossed.len() <= expected.len() * LARGE_LEAF + LARGE_LEAF);
         }
         assert!(!bvh.any_containing(DVec3::splat(1e9), |_| true));
+    }
+
+    #[test]
+    fn parallel_build_equals_serial_build() {
+        let mut random = Random(0x0ddb_a11f_00d5_eed5);
+        let boxes: Vec<Aabb> = (0..3 * PARALLEL_RANGE)
+            .map(|_| {
+                let centre = random.vector(100.0);
+                Aabb::from_corners(centre, centre + random.vector(1.0))
+            })
+            .collect();
+        let (parallel, parallel_order) = Bvh::build(&boxes);
+        let (serial, serial_order) = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap()
+            .install(|| Bvh::build(&boxes));
+        assert_eq!(parallel_order, serial_order);
+        assert_eq!(parallel.nodes.len(), serial.nodes.len());
+        for (a, b) in parallel.nodes.iter().zip(&serial.nodes) {
+            assert_eq!((a.bounds, a.first, a.count), (b.bounds, b.first, b.count));
+        }
+        // Links point forward and leaves cover the whole order exactly once.
+        let mut covered = vec![false; boxes.len()];
+        for (index, node) in parallel.nodes.iter().enumerate() {
+            if node.count == 0 {
+                assert!(node.first as usize > index + 1);
+            } else {
+                for position in node.first..node.first + node.count {
+                    assert!(!std::mem::replace(&mut covered[position as usize], true));
+                }
+            }
+        }
+        assert!(covered.iter().all(|&c| c));
     }
 
     #[test]
