@@ -185,7 +185,20 @@ fn pigment_to_world(pigment: &Pigment, world_from_owner: &Transform) -> Pigment 
 /// later does not change its box, so an inverted CSG object is cut off at the box of the object
 /// it came from: rays that miss the box miss the object.
 fn pov_bounding_box(object: &Object) -> Option<Aabb> {
-    let unclipped = unclipped_pov_bounding_box(object);
+    let unclipped = if object.bounded_by.is_empty() {
+        unclipped_pov_bounding_box(object)
+    } else {
+        // `bounded_by` objects give the object their box instead of its own; as in POV-Ray
+        // 3.7, only that box matters (rays missing it miss the object), not their shape.
+        let parent_from_local = &object.transform.outer_from_inner;
+        object
+            .bounded_by
+            .iter()
+            .try_fold(Aabb::EMPTY, |all, bound| {
+                pov_bounding_box(bound).map(|b| all.union(&b))
+            })
+            .map(|local| local.transformed(parent_from_local))
+    };
     let parent_from_local = &object.transform.outer_from_inner;
     // A clipped object's box is cut to the boxes of its (not inverted) clipping objects.
     object
@@ -346,7 +359,10 @@ impl Builder {
             Shape::Csg {
                 operation: CsgOperation::Union,
                 children,
-            } if !object.inverse && object.clipped_by.is_empty() => {
+            } if !object.inverse
+                && object.clipped_by.is_empty()
+                && object.bounded_by.is_empty() =>
+            {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 enclosing_unions.push(object.transform.outer_from_inner);
                 for child in children {
@@ -360,7 +376,11 @@ impl Builder {
                 }
                 enclosing_unions.pop();
             }
-            shape if matches!(shape, Shape::Csg { .. }) || !object.clipped_by.is_empty() => {
+            shape
+                if matches!(shape, Shape::Csg { .. })
+                    || !object.clipped_by.is_empty()
+                    || !object.bounded_by.is_empty() =>
+            {
                 let mut leaves = Vec::new();
                 let inversion = Inversion {
                     odd: false,
