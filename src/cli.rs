@@ -128,14 +128,15 @@ fn check(args: SceneArgs) -> i32 {
     let start = Instant::now();
     let evaluated = evaluate(&args.scene, eval_options(&args, None));
     let failed = print_diagnostics(&evaluated, false);
-    let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else {
+    let Some(mut scene) = evaluated.scene.filter(|_| !failed) else {
         return 1;
     };
-    let world = durer::geometry::World::build(scene);
+    let object_count = scene.objects.len();
+    let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
     println!(
         "{}: ok, {} objects ({} primitives), {} lights, {:.3} s",
         args.scene.display(),
-        scene.objects.len(),
+        object_count,
         world.object_count(),
         scene.lights.len(),
         start.elapsed().as_secs_f64()
@@ -151,7 +152,7 @@ fn render(args: RenderArgs) -> i32 {
         .unwrap_or_else(|| args.scene.scene.with_extension("png"));
     let evaluated = evaluate(&args.scene.scene, eval_options(&args.scene, Some(&output)));
     let failed = print_diagnostics(&evaluated, args.quiet);
-    let Some(scene) = evaluated.scene.as_ref().filter(|_| !failed) else {
+    let Some(mut scene) = evaluated.scene.filter(|_| !failed) else {
         return 1;
     };
     let parse_time = start.elapsed();
@@ -184,8 +185,9 @@ fn render(args: RenderArgs) -> i32 {
         bar
     });
     let image = pool.install(|| {
-        let world = durer::geometry::World::build(scene);
-        durer::render::render(scene, &world, &options, &|rows| {
+        let objects = std::mem::take(&mut scene.objects);
+        let world = durer::geometry::World::build_from_objects(objects);
+        durer::render::render(&scene, &world, &options, &|rows| {
             if let Some(bar) = &bar {
                 bar.inc(u64::from(rows));
             }

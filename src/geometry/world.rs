@@ -5,12 +5,12 @@
 //! objects without finite bounds) sit in a separate list tested by every ray; queries never
 //! allocate (CSG scratch space is per thread and reused).
 
-use super::build::{build_scene, Primitive};
+use super::build::{build_scene, BuiltScene, Primitive};
 use super::instance::MeshInstance;
 use super::leaf::Leaf;
 use super::{Material, Ray, SurfaceHit};
 use crate::accel::{Aabb, Bvh};
-use crate::scene::Scene;
+use crate::scene::{Object, Scene};
 use glam::DVec3;
 
 /// Everything a ray can hit, ready for queries from many threads.
@@ -99,9 +99,22 @@ impl Primitive {
 impl World {
     /// Prepares every object of `scene` for ray queries.
     pub fn build(scene: &Scene) -> World {
-        let built = build_scene(&scene.objects);
-        let mut bounded = Vec::new();
-        let mut bounds = Vec::new();
+        World::from_built(build_scene(&scene.objects))
+    }
+
+    /// Like [`World::build`], taking the objects and freeing them as soon as they are
+    /// converted, before the BVH is built: large scenes then never hold both the scene's
+    /// objects and the BVH's working memory at once.
+    pub fn build_from_objects(objects: Vec<Object>) -> World {
+        let built = build_scene(&objects);
+        drop(objects);
+        World::from_built(built)
+    }
+
+    /// Sorts converted primitives into bounded (in the BVH) and unbounded ones.
+    fn from_built(built: BuiltScene) -> World {
+        let mut bounded = Vec::with_capacity(built.primitives.len());
+        let mut bounds = Vec::with_capacity(built.primitives.len());
         let mut unbounded = Vec::new();
         for (primitive, surface) in built.primitives {
             match surface {
