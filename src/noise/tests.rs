@@ -65,11 +65,27 @@ fn max_error(kind: &str, generator: NoiseGenerator) -> f64 {
 /// two marble values divided by 2e-4, which leaves about 1e-11 of measurement noise.
 const TOLERANCE: f64 = 1e-9;
 
+/// How closely `generator` is reproduced: generators 1 and 2 exactly (up to the probes'
+/// precision); generator 3's gradients and lattice shift are measured values themselves
+/// (worst error seen about 5e-8, summed over up to ten turbulence octaves).
+fn tolerance(generator: NoiseGenerator) -> f64 {
+    match generator {
+        NoiseGenerator::Perlin => 2e-7,
+        NoiseGenerator::Original | NoiseGenerator::RangeCorrected => TOLERANCE,
+    }
+}
+
 #[test]
 fn noise_matches_povray_for_every_generator() {
-    // Generator 3 is not reproduced yet.
-    for generator in [NoiseGenerator::Original, NoiseGenerator::RangeCorrected] {
-        assert!(max_error("noise", generator) < TOLERANCE, "{generator:?}");
+    for generator in [
+        NoiseGenerator::Original,
+        NoiseGenerator::RangeCorrected,
+        NoiseGenerator::Perlin,
+    ] {
+        assert!(
+            max_error("noise", generator) < tolerance(generator),
+            "{generator:?}"
+        );
     }
 }
 
@@ -80,10 +96,13 @@ fn vector_noise_matches_povray() {
 
 #[test]
 fn turbulence_matches_povray_for_every_generator() {
-    // Generator 3 is not reproduced yet.
-    for generator in [NoiseGenerator::Original, NoiseGenerator::RangeCorrected] {
+    for generator in [
+        NoiseGenerator::Original,
+        NoiseGenerator::RangeCorrected,
+        NoiseGenerator::Perlin,
+    ] {
         assert!(
-            max_error("turbulence", generator) < TOLERANCE,
+            max_error("turbulence", generator) < tolerance(generator),
             "{generator:?}"
         );
     }
