@@ -101,11 +101,17 @@ static NOISE_TABLE: [f64; 267] = [
     -0.420127, -0.427878, 0.566186,
 ];
 
-/// The hash entry (0 to 255) of the lattice corner `(x, y, z)`.
-fn corner_entry(x: i32, y: i32, z: i32) -> usize {
+/// POV-Ray's 12-bit hash of the integer triple `(x, y, z)` (each taken modulo 4096):
+/// `P[P[P[x] ^ y] ^ z]` through the shuffled permutation.
+pub(super) fn hash3(x: i32, y: i32, z: i32) -> usize {
     let mask = HASH_SIZE as i32 - 1;
     let xy = HASH[HASH[(x & mask) as usize] as usize ^ (y & mask) as usize] as usize;
-    (HASH[xy ^ (z & mask) as usize] & 0xFF) as usize
+    HASH[xy ^ (z & mask) as usize] as usize
+}
+
+/// The hash entry (0 to 255) of the lattice corner `(x, y, z)`.
+fn corner_entry(x: i32, y: i32, z: i32) -> usize {
+    hash3(x, y, z) & 0xFF
 }
 
 /// Lattice cell of one coordinate: the cell index and the fraction inside it, as POV-Ray

@@ -4,11 +4,15 @@
 //! In: points in pattern space. Out: values as POV-Ray 3.7 computes them (measured against
 //! povray with `scripts/probe-noise.py`; the known-answer tests hold those measurements).
 //! Holds: pure functions of their arguments over constant tables (no global state, no
-//! allocation), safe to call from any thread.
+//! allocation), safe to call from any thread. Also the per-cube random numbers of the `cells`
+//! and `crackle` patterns (`cells.rs`).
 
+mod cells;
 mod lattice;
 mod perlin;
 mod perlin_tables;
+
+pub use cells::{cells_value, crackle_feature_point, cube_random_value};
 
 use glam::DVec3;
 
