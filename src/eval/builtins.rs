@@ -69,6 +69,7 @@ pub(crate) const FUNCTIONS: &[&str] = &[
     "vnormalize",
     "vrotate",
     "vstr",
+    "vturbulence",
 ];
 
 pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value> {
@@ -292,6 +293,25 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             let angle = ev.argument_float(call, 2)?.to_radians();
             let rotation = glam::DMat3::from_axis_angle(axis, angle);
             v3(rotation * v)
+        }
+        "vturbulence" => {
+            // vturbulence(Lambda, Omega, Octaves, <P>): the turbulence warp's displacement.
+            arity(ev, 4)?;
+            let lambda = ev.argument_float(call, 0)?;
+            let omega = ev.argument_float(call, 1)?;
+            // POV-Ray truncates the octave count (the noise module clamps it to 1..=10).
+            let octaves = ev.argument_float(call, 2)?.trunc() as u32;
+            let point = vector(ev, 3)?;
+            let shape = crate::noise::TurbulenceShape {
+                octaves,
+                omega,
+                lambda,
+            };
+            v3(crate::noise::vector_turbulence(
+                point,
+                &shape,
+                crate::noise::NoiseGenerator::default(),
+            ))
         }
         "defined" => {
             arity(ev, 1)?;
