@@ -125,10 +125,8 @@ def perlin_model(np, tables, points, shift):
     return np.clip(PERLIN_OFFSET + PERLIN_SCALE * total, 0.0, 1.0)
 
 
-def measure_perlin_tables():
-    import numpy as np
-
-    shift = PERLIN_SHIFT_GUESS
+def perlin_tables_at(np, shift):
+    """Generator 3's tables from gradients measured at lattice points assumed at `shift`."""
     gradients = lattice_gradients(np, 2, (0, 0, 0), shift)
     along_y = lattice_gradients(np, 1, (0, 0, 0), shift)
     along_x = lattice_gradients(np, 0, (0, 0, 0), shift)
@@ -152,20 +150,35 @@ def measure_perlin_tables():
         if len(rows) != 1:
             sys.exit("column %d is ambiguous" % x)
         x_stage[x] = rows[0]
-    tables = (gradients, y_stage, x_stage)
+    return gradients, y_stage, x_stage
 
-    # Refine the lattice shift against random probes (ternary search on the worst error).
-    rng = random.Random(7)
-    probes = [random_point(rng, 20.0) for _ in range(1500)]
-    points = np.array(probes)
-    measured = np.array([v[0] for v in evaluate(["f_noise_generator(%r, %r, %r, 3)" % p for p in probes])])
+
+def refined_shift(np, tables, shift, points, measured):
+    """The lattice shift near `shift` that fits the probes best (ternary search, worst error)."""
     worst = lambda s: np.abs(perlin_model(np, tables, points, s) - measured).max()
     low, high = shift - 1e-6, shift + 1e-6
     for _ in range(60):
         a, b = low + (high - low) / 3, high - (high - low) / 3
         low, high = (low, b) if worst(a) < worst(b) else (a, high)
     shift = (low + high) / 2
-    print("lattice shift %.12f, worst error on %d probes %.2e" % (shift, len(points), worst(shift)))
+    return shift, worst(shift)
+
+
+def measure_perlin_tables():
+    import numpy as np
+
+    rng = random.Random(7)
+    probes = [random_point(rng, 20.0) for _ in range(1500)]
+    points = np.array(probes)
+    measured = np.array([v[0] for v in evaluate(["f_noise_generator(%r, %r, %r, 3)" % p for p in probes])])
+    # Gradients read at slightly wrong lattice points are slightly wrong: alternate measuring
+    # the tables and refining the shift until both settle.
+    shift = PERLIN_SHIFT_GUESS
+    for _ in range(3):
+        tables = perlin_tables_at(np, shift)
+        shift, worst = refined_shift(np, tables, shift, points, measured)
+        print("lattice shift %.12f, worst error on %d probes %.2e" % (shift, len(points), worst))
+    gradients, y_stage, x_stage = tables
 
     with open(PERLIN_TABLES, "w") as out:
         out.write("//! Generator 3's tables, measured from POV-Ray 3.7 by `scripts/probe-noise.py\n")

@@ -128,9 +128,10 @@ fn octave_parameters(shape: &TurbulenceShape) -> (u32, f64, f64) {
 
 /// POV-Ray's scalar turbulence: `Σ omegaⁱ · octave_noise(point · lambdaⁱ)` over the octaves,
 /// where the octave noise is [`noise`] for generator 1 and `2·noise − 0.5` for generators 2
-/// and 3, and the first octave's term alone is clamped to [0, 1] (all measured). `marble`,
-/// `wood` and the other "classic turbulence" patterns add `turbulence amount · this` to their
-/// ramp value; `agate` uses it too.
+/// and 3, and the first octave's term alone is clamped to [0, 1] (all measured). Measured
+/// through `marble`, whose value with `turbulence <a, b, c>` is its ramp at `x + a · this`
+/// (only the x amount counts); the other "classic turbulence" patterns are expected to use it
+/// the same way.
 pub fn turbulence(point: DVec3, shape: &TurbulenceShape, generator: NoiseGenerator) -> f64 {
     let (octaves, lambda, omega) = octave_parameters(shape);
     let mut sum = clamp_unit(octave_noise(point, generator));

@@ -161,3 +161,13 @@ fn files_outside_the_scene_folder_are_refused() {
         ],
     );
 }
+
+#[test]
+fn vturbulence_with_too_few_arguments_names_the_count() {
+    check(
+        "vturbulence_arity",
+        2,
+        18,
+        &["`vturbulence` takes 4 arguments, found 3", "called here"],
+    );
+}
