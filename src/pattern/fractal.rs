@@ -6,12 +6,21 @@
 //!
 //! Measured against POV-Ray 3.7: the orbit starts at z = c (Mandelbrot) or z = the point
 //! (Julia); each step computes the next z first and then tests the bailout |z|² > 4, so a
-//! point escaping on the first step gives exterior value 0.
+//! point escaping on the first step gives exterior value 0. Magnet orbits start at 0 (mandel
+//! form) and escape when |z|² > 10⁴ or when they converge, |z − 1|² < 10⁻⁴; the exterior
+//! colourings see the last z.
 
 use glam::DVec2;
 
-/// Squared orbit radius past which a point has escaped.
+/// Squared orbit radius past which a Mandelbrot or Julia point has escaped.
 const BAILOUT_SQUARED: f64 = 4.0;
+
+/// Squared orbit radius past which a magnet point has escaped.
+const MAGNET_BAILOUT_SQUARED: f64 = 10_000.0;
+
+/// A magnet orbit closer than this (squared) to 1, the maps' fixed point, counts as
+/// escaped too.
+const MAGNET_CONVERGED_SQUARED: f64 = 1e-4;
 
 /// Which fractal.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -89,16 +98,19 @@ impl Fractal {
         };
         let mut smallest = f64::INFINITY;
         for step in 0..self.iterations {
-            z = match self.kind {
+            let escaped = match self.kind {
                 FractalKind::Mandelbrot | FractalKind::Julia(_) => {
-                    power(z, self.exponent) + parameter
+                    z = power(z, self.exponent) + parameter;
+                    z.length_squared() > BAILOUT_SQUARED
                 }
                 FractalKind::MagnetMandelbrot(kind) | FractalKind::MagnetJulia(kind, _) => {
-                    magnet_step(z, parameter, kind)
+                    z = magnet_step(z, parameter, kind);
+                    z.length_squared() > MAGNET_BAILOUT_SQUARED
+                        || (z - DVec2::X).length_squared() < MAGNET_CONVERGED_SQUARED
                 }
             };
             let size = z.length_squared();
-            if !size.is_finite() || size > BAILOUT_SQUARED {
+            if !size.is_finite() || escaped {
                 return exterior_value(self.exterior, step, self.iterations, z);
             }
             smallest = smallest.min(size.sqrt());
@@ -199,6 +211,16 @@ mod tests {
         assert_eq!(mandel.value(-0.53, 0.09), 1.0);
         assert_eq!(mandel.value(0.24, -0.22), 1.0);
         assert_eq!(mandel.value(1.01, -0.53), 0.0);
+    }
+
+    #[test]
+    fn magnet_escapes_and_converges_like_povray() {
+        // POV-Ray's `magnet 1 mandel 30` (iterations / 30) and `magnet 2 mandel 30`.
+        let one = Fractal::new(FractalKind::MagnetMandelbrot(MagnetType::One), 30);
+        assert!((one.value(-1.7, 1.1) - 3.0 / 30.0).abs() < 1e-12);
+        assert!((one.value(-0.94, 0.82) - 4.0 / 30.0).abs() < 1e-12);
+        let two = Fractal::new(FractalKind::MagnetMandelbrot(MagnetType::Two), 30);
+        assert!((two.value(-0.94, 0.82) - 2.0 / 30.0).abs() < 1e-12);
     }
 
     #[test]
