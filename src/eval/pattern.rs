@@ -119,7 +119,11 @@ impl Evaluator {
                 };
                 pattern.wave.shape = WaveShape::Poly(exponent);
             }
-            "noise_generator" => pattern.noise_generator = self.expect_noise_generator(stream)?,
+            "noise_generator" => {
+                pattern.noise_generator = self
+                    .expect_noise_generator(stream)?
+                    .unwrap_or(self.settings.noise_generator)
+            }
             _ => return self.pattern_setting(word, span, stream, pattern),
         }
         Ok(true)
@@ -422,21 +426,27 @@ impl Evaluator {
         })
     }
 
-    /// `noise_generator N` with N 1, 2 or 3.
+    /// `noise_generator N` with N 0, 1, 2 or 3; `None` for 0, which means "the default"
+    /// (for a pattern the global setting, globally generator 2).
     pub(crate) fn expect_noise_generator(
         &mut self,
         stream: &mut Stream,
-    ) -> EvalResult<NoiseGenerator> {
-        let (value, span) = self.expect_value(stream, "a noise generator (1, 2 or 3)")?;
+    ) -> EvalResult<Option<NoiseGenerator>> {
+        let (value, span) = self.expect_value(stream, "a noise generator (0, 1, 2 or 3)")?;
         let number = self.to_float(value, span)?;
+        if number == 0.0 {
+            return Ok(None);
+        }
         let generator = if number.fract() == 0.0 {
             NoiseGenerator::from_number(number as i64)
         } else {
             None
         };
-        generator.ok_or_else(|| {
-            self.error(span, "the noise generator must be 1, 2 or 3")
-                .into()
-        })
+        match generator {
+            Some(generator) => Ok(Some(generator)),
+            None => Err(self
+                .error(span, "the noise generator must be 0, 1, 2 or 3")
+                .into()),
+        }
     }
 }

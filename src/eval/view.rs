@@ -546,7 +546,8 @@ impl Evaluator {
                         self.settings.ambient_light = self.to_colour(value, span)?.rgb_vec();
                     }
                     "noise_generator" => {
-                        self.settings.noise_generator = self.expect_noise_generator(stream)?
+                        self.settings.noise_generator =
+                            self.expect_noise_generator(stream)?.unwrap_or_default()
                     }
                     "charset" | "max_intersections" | "number_of_waves" | "hf_gray_16"
                     | "irid_wavelength" | "mm_per_unit" | "subsurface" => {
