@@ -78,6 +78,7 @@ impl Evaluator {
             "ripples" => PatternKind::Ripples,
             "spherical" => PatternKind::Spherical,
             "spiral1" => PatternKind::Spiral1(self.expect_float(stream, "a number of arms")?),
+            "spiral2" => PatternKind::Spiral2(self.expect_float(stream, "a number of arms")?),
             "square" => PatternKind::Square,
             "triangular" => PatternKind::Triangular,
             "waves" => PatternKind::Waves,

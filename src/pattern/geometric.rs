@@ -1,5 +1,5 @@
 //! The patterns that need no noise: simple shapes (boxed, cylindrical, onion, radial,
-//! spirals, leopard...) and the block patterns (checker, brick, hexagon, square, triangular,
+//! spiral1, spiral2, leopard...) and the block patterns (checker, brick, hexagon, square, triangular,
 //! cubic).
 //!
 //! In: a pattern-space point after turbulence and warps. Out: the raw value (before
@@ -92,6 +92,23 @@ pub fn spiral1(point: DVec3, arms: f64, turbulence: f64) -> f64 {
     let radius = (point.x * point.x + point.y * point.y).sqrt();
     let turns = point.y.atan2(point.x) / (2.0 * PI) + 0.25;
     point.z + radius + arms * turns + turbulence
+}
+
+/// `spiral2 arms`: two spirals twisting in opposite directions, the sum of exact triangle
+/// waves of spiral1's value (without turbulence) and of the distance from the z axis.
+pub fn spiral2(point: DVec3, arms: f64, turbulence: f64) -> f64 {
+    let radius = (point.x * point.x + point.y * point.y).sqrt();
+    exact_triangle(spiral1(point, arms, 0.0)) + exact_triangle(radius) + turbulence
+}
+
+/// A triangle wave of period 1 rising from 0 at integers to 1 at half-integers.
+fn exact_triangle(value: f64) -> f64 {
+    let doubled = 2.0 * (value - value.floor());
+    if doubled > 1.0 {
+        2.0 - doubled
+    } else {
+        doubled
+    }
 }
 
 /// `cubic`: which of the six pyramids around the half axes (+x, +y, +z, −x, −y, −z) the
@@ -246,6 +263,16 @@ mod tests {
             "spiral1 3",
             [0.66481, 0.87449, 0.03737, 0.89970, 0.34464, 0.38995],
             |p| triangle.apply(spiral1(p, 3.0, 0.0)),
+        );
+        check(
+            "spiral2 3",
+            [0.77007, 0.40127, 0.62299, 0.36195, 0.81612, 0.40915],
+            |p| triangle.apply(spiral2(p, 3.0, 0.0)),
+        );
+        check(
+            "spiral2 3 ramp",
+            [0.385035, 0.799364, 0.688507, 0.180973, 0.408060, 0.795426],
+            |p| ramp.apply(spiral2(p, 3.0, 0.0)),
         );
         check(
             "spiral1 2 ramp",

@@ -133,6 +133,8 @@ pub enum PatternKind {
     Spherical,
     /// A screw around the z axis with a number of arms (the integer part is used).
     Spiral1(f64),
+    /// Two spirals twisting in opposite directions (the integer part of the arms is used).
+    Spiral2(f64),
     /// Squares in the x-z plane; four blocks.
     Square,
     /// Triangles in the x-z plane; six blocks.
@@ -149,9 +151,10 @@ impl PatternSpec {
     /// The pattern with POV-Ray's default modifiers.
     pub fn new(kind: PatternKind) -> PatternSpec {
         let shape = match kind {
-            PatternKind::Marble | PatternKind::Wood | PatternKind::Spiral1(_) => {
-                WaveShape::Triangle
-            }
+            PatternKind::Marble
+            | PatternKind::Wood
+            | PatternKind::Spiral1(_)
+            | PatternKind::Spiral2(_) => WaveShape::Triangle,
             _ => WaveShape::Ramp,
         };
         PatternSpec {
@@ -264,6 +267,7 @@ impl PatternSpec {
                 | PatternKind::Wood
                 | PatternKind::Agate { .. }
                 | PatternKind::Spiral1(_)
+                | PatternKind::Spiral2(_)
         )
     }
 
@@ -297,6 +301,16 @@ impl PatternSpec {
         p
     }
 
+    /// The classic turbulence as a scalar (its x amount times the scalar turbulence), for
+    /// the spirals; 0 without turbulence.
+    fn scalar_turbulence(&self, p: DVec3) -> f64 {
+        let turbulence = &self.turbulence;
+        if turbulence.amount == DVec3::ZERO {
+            return 0.0;
+        }
+        turbulence.amount.x * crate::noise::turbulence(p, &turbulence.shape, self.noise_generator)
+    }
+
     /// The pattern's value before frequency, phase and wave shape.
     fn raw_value(&self, p: DVec3) -> f64 {
         let generator = self.noise_generator;
@@ -326,12 +340,10 @@ impl PatternSpec {
             PatternKind::Ripples => noise_based::ripples(p, generator),
             PatternKind::Spherical => geometric::spherical(p),
             PatternKind::Spiral1(arms) => {
-                let stirred = if turbulence.amount != DVec3::ZERO {
-                    turbulence.amount.x * crate::noise::turbulence(p, &turbulence.shape, generator)
-                } else {
-                    0.0
-                };
-                geometric::spiral1(p, arms.trunc(), stirred)
+                geometric::spiral1(p, arms.trunc(), self.scalar_turbulence(p))
+            }
+            PatternKind::Spiral2(arms) => {
+                geometric::spiral2(p, arms.trunc(), self.scalar_turbulence(p))
             }
             PatternKind::Waves => noise_based::waves(p, generator),
             PatternKind::Wood => noise_based::wood(p, turbulence, generator),

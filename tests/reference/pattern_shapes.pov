@@ -1,6 +1,6 @@
 // Tests: the continuous patterns that need no noise, each on a tile facing the camera:
 // boxed, cylindrical, spherical, planar, onion, leopard, radial (with frequency), spiral1
-// and a marble (a triangle-waved gradient).
+// and spiral2.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
@@ -23,4 +23,4 @@ Tile(1, 1, pigment { onion color_map { Map } scale 0.6 translate <0.2, 0.1, 0> }
 Tile(2, 1, pigment { leopard color_map { Map } scale 0.12 })
 Tile(0, 2, pigment { radial color_map { Map } frequency 5 rotate -90 * x translate <-2.7, -2, 0> })
 Tile(1, 2, pigment { spiral1 3 color_map { Map } scale 0.5 translate <0, -2, 0> })
-Tile(2, 2, pigment { marble color_map { Map } scale 0.7 rotate 20 * z })
+Tile(2, 2, pigment { spiral2 2 color_map { Map } scale 0.6 translate <2.7, -2, 0> })
