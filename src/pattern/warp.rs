@@ -13,12 +13,12 @@
 //! - cylindrical: `(u·r^e, y, r)` with `r` the distance from the y axis and
 //!   `u = atan2(z, x)/2π` in [0, 1); spherical: `(u·r^e, v·r^e, r)` with
 //!   `v = 1 − acos(y/r)/π`; toroidal: `(u·d^e, v·d^e, d)` with `d` the distance from the
-//!   major circle and `v = atan2(−y, R − r_xz)/2π`; planar: the point's x and y put on the
-//!   plane (the default plane is z = 0).
+//!   major circle and `v = atan2(−y, R − r_xz)/2π`; `orientation` and the planar warp's
+//!   normal act through [`orient`] (checked for axes and oblique vectors).
 
 use std::f64::consts::PI;
 
-use glam::{DMat3, DVec3};
+use glam::DVec3;
 
 use crate::noise::{vector_turbulence, NoiseGenerator, TurbulenceShape};
 
@@ -110,8 +110,8 @@ pub enum MappingKind {
 pub struct Mapping {
     /// Which mapping.
     pub kind: MappingKind,
-    /// Rotation taking the `orientation` vector to +z (identity for the default).
-    pub orientation: DMat3,
+    /// The `orientation` vector, unit length (default +z); see [`orient`].
+    pub orientation: DVec3,
     /// `dist_exp`: the mapped u and v are scaled by distance^dist_exp (default 0).
     pub dist_exp: f64,
     /// `major_radius` of the toroidal warp (default 1).
@@ -123,7 +123,7 @@ impl Mapping {
     pub fn new(kind: MappingKind) -> Mapping {
         Mapping {
             kind,
-            orientation: DMat3::IDENTITY,
+            orientation: DVec3::Z,
             dist_exp: 0.0,
             major_radius: 1.0,
         }
@@ -131,10 +131,9 @@ impl Mapping {
 
     /// Sets the orientation vector (default +z); a zero vector keeps the default.
     pub fn set_orientation(&mut self, orientation: DVec3) {
-        let Some(direction) = orientation.try_normalize() else {
-            return;
-        };
-        self.orientation = rotation_between(direction, DVec3::Z);
+        if let Some(direction) = orientation.try_normalize() {
+            self.orientation = direction;
+        }
     }
 }
 
@@ -234,7 +233,11 @@ fn turn_fraction(y: f64, x: f64) -> f64 {
 
 /// The cylindrical, spherical and toroidal warps.
 fn map_around(mapping: &Mapping, point: DVec3) -> DVec3 {
-    let p = mapping.orientation * point;
+    orient(map_around_y(mapping, point), mapping.orientation)
+}
+
+/// The cylindrical, spherical and toroidal mappings before the orientation.
+fn map_around_y(mapping: &Mapping, p: DVec3) -> DVec3 {
     let u = turn_fraction(p.z, p.x);
     let radial = (p.x * p.x + p.z * p.z).sqrt();
     match mapping.kind {
@@ -259,27 +262,17 @@ fn map_around(mapping: &Mapping, point: DVec3) -> DVec3 {
     }
 }
 
-/// The planar warp: the point's x and y placed on the plane `normal · p = −distance`
-/// (z = 0 by default). The plane's u axis is `y × normal` (x when the normal is along y) and
-/// its v axis `normal × u`, except that a normal along y takes v = +z, as POV-Ray does.
+/// The planar warp: the point's x and y and the plane's distance, oriented by the normal.
 fn planar(normal: DVec3, distance: f64, point: DVec3) -> DVec3 {
-    let (u_axis, v_axis) = match DVec3::Y.cross(normal).try_normalize() {
-        Some(u_axis) => (u_axis, normal.cross(u_axis)),
-        None => (DVec3::X, DVec3::Z),
-    };
-    u_axis * point.x + v_axis * point.y - normal * distance
+    orient(DVec3::new(point.x, point.y, distance), normal)
 }
 
-/// The rotation taking unit vector `from` to unit vector `to` (a half turn about x when
-/// they are opposite).
-fn rotation_between(from: DVec3, to: DVec3) -> DMat3 {
-    let axis = from.cross(to);
-    let cosine = from.dot(to).clamp(-1.0, 1.0);
-    match axis.try_normalize() {
-        Some(axis) => DMat3::from_axis_angle(axis, cosine.acos()),
-        None if cosine > 0.0 => DMat3::IDENTITY,
-        None => DMat3::from_axis_angle(DVec3::X, PI),
-    }
+/// POV-Ray's orientation of a mapped point `m` by a unit vector `o` (measured; it is not a
+/// rotation): `(m_x(o_y + o_z), m_y(o_x + o_z), o_y·m_y − o_x·m_x) + m_z·(o_x, −o_y, o_z)`.
+/// The default `o = +z` leaves `m` unchanged.
+fn orient(m: DVec3, o: DVec3) -> DVec3 {
+    DVec3::new(m.x * (o.y + o.z), m.y * (o.x + o.z), o.y * m.y - o.x * m.x)
+        + m.z * DVec3::new(o.x, -o.y, o.z)
 }
 
 #[cfg(test)]
@@ -374,10 +367,28 @@ mod tests {
     }
 
     #[test]
+    fn orientation_along_axes_turns_the_mapped_point() {
+        // POV-Ray's `cylindrical orientation x` and `orientation y` at probe point 0.
+        let wrap = |v: DVec3| v - v.floor();
+        let mut along_x = Mapping::new(MappingKind::Cylindrical);
+        along_x.set_orientation(DVec3::X);
+        let mapped = wrap(map_around(&along_x, probe(0)));
+        assert!(close(mapped, DVec3::new(0.94868, 0.45, 0.55121)));
+        let mut along_y = Mapping::new(MappingKind::Cylindrical);
+        along_y.set_orientation(DVec3::Y);
+        let mapped = wrap(map_around(&along_y, probe(0)));
+        assert!(close(mapped, DVec3::new(0.44879, 0.05132, 0.45)));
+    }
+
+    #[test]
     fn planar_takes_the_xy_plane_by_default() {
         let moved = planar(DVec3::Z, 0.0, probe(1));
         assert!(close(moved, DVec3::new(-0.59, 0.28, 0.0)));
         let from_y = planar(DVec3::Y, 0.3, probe(1));
         assert!(close(from_y, DVec3::new(-0.59, -0.3, 0.28)));
+        // POV-Ray's `planar <1, 2, 3>, 0.25` at probe point 0, wrapped to [0, 1).
+        let oblique = planar(DVec3::new(1.0, 2.0, 3.0).normalize(), 0.25, probe(0));
+        let wrapped = oblique - oblique.floor();
+        assert!(close(wrapped, DVec3::new(0.86415, 0.34744, 0.68152)));
     }
 }
