@@ -238,9 +238,37 @@ impl Evaluator {
             return Ok(false);
         }
         let mut stream = Stream::new(block.body.clone());
-        let warp = self.eval_warp(block.head_span, &mut stream)?;
+        let mut warp = self.eval_warp(block.head_span, &mut stream)?;
+        if let Warp::BlackHole(hole) = &mut warp {
+            self.fit_repeated_black_hole(block.head_span, hole);
+        }
         pattern.add_warp(warp);
         Ok(true)
+    }
+
+    /// POV-Ray keeps each copy of a repeated black hole inside its cell: on every repeated
+    /// axis a centre closer to the cell's start than the radius moves out to the radius
+    /// (measured), and a cell too small for centre, radius and jitter grows, with a warning.
+    fn fit_repeated_black_hole(&mut self, span: Span, hole: &mut BlackHole) {
+        let mut grew = false;
+        for axis in 0..3 {
+            if hole.repeat[axis] <= 0.0 {
+                continue;
+            }
+            hole.centre[axis] = hole.centre[axis].max(hole.radius);
+            let needed = hole.centre[axis] + hole.radius + hole.jitter[axis].abs();
+            if hole.repeat[axis] < needed {
+                hole.repeat[axis] = needed;
+                grew = true;
+            }
+        }
+        if grew {
+            self.warn(
+                span,
+                "black hole `repeat` is too small for the centre, radius and turbulence; it was \
+                 enlarged",
+            );
+        }
     }
 
     /// The body of `warp { .. }`: one warp kind followed by its settings.

@@ -311,6 +311,18 @@ mod tests {
     }
 
     #[test]
+    fn repeated_black_hole_acts_in_every_cell() {
+        // POV-Ray's `black_hole <0.5, 0.5, 0.5>, 0.4 repeat <1, 1, 1>`, values wrapped.
+        let mut hole = BlackHole::new(DVec3::splat(0.5), 0.4);
+        hole.repeat = DVec3::ONE;
+        let moved = black_hole(&hole, probe(5));
+        assert!(close(
+            moved - moved.floor(),
+            DVec3::new(0.65790, 0.60526, 0.76316)
+        ));
+    }
+
+    #[test]
     fn repeat_offsets_and_flips_copies() {
         let repeat = Repeat {
             axis: 0,

@@ -1,5 +1,5 @@
 // Tests: warps on tiles facing the camera: repeat with offset and flip, a black hole
-// (default and inverse, with strength and falloff), cylindrical and spherical mappings of a
+// (repeated with its centre moved into the cell, inverse with strength and falloff), cylindrical and spherical mappings of a
 // checker (one with an orientation), toroidal with dist_exp, planar with an oblique normal,
 // and a warp written before or after a translation (order matters).
 #version 3.7;
@@ -18,7 +18,7 @@ light_source { <-3, 6, -20> rgb 1 }
 Tile(0, 0, pigment { onion color_map { Map } scale 0.7
   warp { repeat x * 0.8 offset <0, 0.3, 0> flip <1, 0, 0> } })
 Tile(1, 0, pigment { checker rgb <0.9, 0.2, 0.1>, rgb 0.9 scale 0.3
-  warp { black_hole <0, 2, 0>, 0.9 } })
+  warp { black_hole <0.1, 0.35, 0.2>, 0.3 repeat <0.8, 0.7, 0> } })
 Tile(2, 0, pigment { checker rgb <0.1, 0.6, 0.2>, rgb 0.9 scale 0.3
   warp { black_hole <2.7, 2, 0>, 0.9 strength 1.5 falloff 1 inverse } })
 Tile(0, 1, pigment { checker rgb <0.2, 0.3, 0.9>, rgb 0.9 scale <0.125, 0.5, 1>
