@@ -1,7 +1,8 @@
-// Tests: warps on tiles facing the camera: repeat with offset and flip, a black hole
-// (repeated with its centre moved into the cell, inverse with strength and falloff), cylindrical and spherical mappings of a
-// checker (one with an orientation), toroidal with dist_exp, planar with an oblique normal,
-// and a warp written before or after a translation (order matters).
+// Tests: warps on tiles facing the camera: repeat with offset and flip, black holes
+// (repeated with the centre moved into its cell; inverse with strength and falloff),
+// cylindrical and spherical mappings of a checker (one with an orientation), toroidal with
+// dist_exp, planar with an oblique normal, and a warp written before or after a translation
+// (order matters).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
