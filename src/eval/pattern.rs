@@ -80,6 +80,17 @@ impl Evaluator {
             "spiral1" => PatternKind::Spiral1(self.expect_float(stream, "a number of arms")?),
             "spiral2" => PatternKind::Spiral2(self.expect_float(stream, "a number of arms")?),
             "square" => PatternKind::Square,
+            "tiling" => {
+                let (value, number_span) = self.expect_value(stream, "a tiling number")?;
+                let number = self.to_float(value, number_span)?;
+                if number != 1.0 {
+                    self.warn(
+                        number_span,
+                        "only `tiling 1` (squares) is supported yet; other tilings use it",
+                    );
+                }
+                PatternKind::SquareTiles
+            }
             "triangular" => PatternKind::Triangular,
             "waves" => PatternKind::Waves,
             "wood" => PatternKind::Wood,

@@ -111,6 +111,13 @@ fn exact_triangle(value: f64) -> f64 {
     }
 }
 
+/// `tiling 1`: unit squares in the x-z plane centred on half-integers, 0 at a square's
+/// centre rising linearly to 1 at its edges (the Chebyshev distance, doubled).
+pub fn square_tiles(point: DVec3) -> f64 {
+    let across = |t: f64| (2.0 * (t - t.floor()) - 1.0).abs();
+    across(point.x).max(across(point.z))
+}
+
 /// `cubic`: which of the six pyramids around the half axes (+x, +y, +z, −x, −y, −z) the
 /// point lies in.
 pub fn cubic_block(point: DVec3) -> usize {
@@ -279,6 +286,20 @@ mod tests {
             [0.965112, 0.714025, 0.849397, 0.276760, 0.647857, 0.012402],
             |p| ramp.apply(spiral1(p, 2.0, 0.0)),
         );
+    }
+
+    #[test]
+    fn square_tiles_match_povray() {
+        // POV-Ray's `tiling 1` through a black-to-white map.
+        let ramp = Wave::new(WaveShape::Ramp);
+        let value = |x, z| ramp.apply(square_tiles(DVec3::new(x, 0.0, z)));
+        assert!((value(-0.5, 0.5) - 0.0).abs() < 1e-9);
+        assert!((value(-0.7, 0.5) - 0.4).abs() < 1e-9);
+        assert!((value(-0.8, 0.9) - 0.8).abs() < 1e-9);
+        assert!((value(-1.0, 0.3) - 1.0).abs() < 1e-9);
+        check("tiling 1", [0.6, 0.46, 0.52, 0.98, 0.56, 0.7], |p| {
+            ramp.apply(square_tiles(p))
+        });
     }
 
     #[test]

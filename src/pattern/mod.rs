@@ -137,6 +137,8 @@ pub enum PatternKind {
     Spiral2(f64),
     /// Squares in the x-z plane; four blocks.
     Square,
+    /// `tiling 1`: square tiles with bevelled edges (the other tilings are not supported).
+    SquareTiles,
     /// Triangles in the x-z plane; six blocks.
     Triangular,
     /// Broad waves from the wave centres.
@@ -339,6 +341,7 @@ impl PatternSpec {
             PatternKind::Radial => geometric::radial(p),
             PatternKind::Ripples => noise_based::ripples(p, generator),
             PatternKind::Spherical => geometric::spherical(p),
+            PatternKind::SquareTiles => geometric::square_tiles(p),
             PatternKind::Spiral1(arms) => {
                 geometric::spiral1(p, arms.trunc(), self.scalar_turbulence(p))
             }
