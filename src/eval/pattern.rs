@@ -1,15 +1,28 @@
 //! Pattern syntax: the pattern keywords and pattern modifiers that may appear in `pigment`,
-//! `normal`, `texture` and `density` blocks.
+//! `normal`, `texture` and `density` blocks, and `warp { }` blocks.
 //!
 //! In: a keyword (or block) already taken from the owner's item stream. Out: a
 //! [`PatternSpec`] or a modification of one. Holds: the owner (appearance.rs) parses maps,
-//! block lists and transforms; everything specific to one pattern is parsed here.
+//! block lists and transforms; everything specific to one pattern is parsed here. The
+//! noise generator of a pattern without its own is the global one in force when the
+//! pattern is parsed.
+
+use glam::{DVec2, DVec3};
 
 use super::stream::Stream;
+use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::pattern::{PatternKind, PatternSpec};
-use crate::syntax::ast::Block;
+use crate::noise::NoiseGenerator;
+use crate::pattern::{
+    BlackHole, Colouring, Crackle, Fractal, FractalKind, MagnetType, Mapping, MappingKind,
+    PatternKind, PatternSpec, Repeat, Warp, WaveShape,
+};
+use crate::syntax::ast::{Block, BlockHead, Item};
+
+/// Largest fractal iteration count accepted (POV-Ray allows up to 2^32 − 1; more than this
+/// would only make a render hang).
+const MAX_FRACTAL_ITERATIONS: f64 = 1e6;
 
 impl Evaluator {
     /// When `word` names a pattern, parses the pattern's own operands (such as gradient's
@@ -21,13 +34,72 @@ impl Evaluator {
         span: Span,
         stream: &mut Stream,
     ) -> EvalResult<Option<PatternSpec>> {
-        let _ = span;
         let kind = match word {
+            "agate" => PatternKind::Agate { agate_turb: 1.0 },
+            "boxed" => PatternKind::Boxed,
+            "bozo" | "spotted" => PatternKind::Bozo,
+            "brick" => PatternKind::Brick {
+                size: DVec3::new(8.0, 3.0, 4.5),
+                mortar: 0.5,
+            },
+            "bumps" => PatternKind::Bumps,
+            "cells" => PatternKind::Cells,
             "checker" => PatternKind::Checker,
+            "crackle" => PatternKind::Crackle(Crackle::default()),
+            "cubic" => PatternKind::Cubic,
+            "cylindrical" => PatternKind::Cylindrical,
+            "dents" => PatternKind::Dents,
+            "facets" => PatternKind::Facets {
+                coords: 0.0,
+                size: 0.0,
+            },
             "gradient" => PatternKind::Gradient(self.expect_vector(stream, "a direction")?),
+            "granite" => PatternKind::Granite,
+            "hexagon" => PatternKind::Hexagon,
+            "julia" => {
+                let c = self.expect_complex(stream)?;
+                let iterations = self.expect_iterations(stream)?;
+                PatternKind::Fractal(Fractal::new(FractalKind::Julia(c), iterations))
+            }
+            "leopard" => PatternKind::Leopard,
+            "magnet" => self.magnet_operands(span, stream)?,
+            "mandel" => {
+                let iterations = self.expect_iterations(stream)?;
+                PatternKind::Fractal(Fractal::new(FractalKind::Mandelbrot, iterations))
+            }
+            "marble" => PatternKind::Marble,
+            "onion" => PatternKind::Onion,
+            "planar" => PatternKind::Planar,
+            "quilted" => PatternKind::Quilted {
+                control0: 1.0,
+                control1: 1.0,
+            },
+            "radial" => PatternKind::Radial,
+            "ripples" => PatternKind::Ripples,
+            "spherical" => PatternKind::Spherical,
+            "spiral1" => PatternKind::Spiral1(self.expect_float(stream, "a number of arms")?),
+            "spiral2" => PatternKind::Spiral2(self.expect_float(stream, "a number of arms")?),
+            "square" => PatternKind::Square,
+            "tiling" => {
+                let (value, number_span) = self.expect_value(stream, "a tiling number")?;
+                let number = self.to_float(value, number_span)?;
+                if number != 1.0 {
+                    self.warn(
+                        number_span,
+                        "only `tiling 1` (squares) is supported yet; other tilings use it",
+                    );
+                }
+                PatternKind::SquareTiles
+            }
+            "triangular" => PatternKind::Triangular,
+            "waves" => PatternKind::Waves,
+            "wood" => PatternKind::Wood,
+            "wrinkles" => PatternKind::Wrinkles,
             _ => return Ok(None),
         };
-        Ok(Some(PatternSpec::new(kind)))
+        let mut pattern = PatternSpec::new(kind);
+        pattern.noise_generator = self.settings.noise_generator;
+        Ok(Some(pattern))
     }
 
     /// When `word` is a pattern modifier (`turbulence`, `octaves`, `frequency`, wave types,
@@ -40,8 +112,130 @@ impl Evaluator {
         stream: &mut Stream,
         pattern: &mut PatternSpec,
     ) -> EvalResult<bool> {
-        let _ = (word, span, stream, pattern);
-        Ok(false)
+        match word {
+            "turbulence" => pattern.turbulence.amount = self.expect_amount(stream)?,
+            "octaves" => pattern.turbulence.shape.octaves = self.expect_octaves(stream)?,
+            "omega" => pattern.turbulence.shape.omega = self.expect_float(stream, "a float")?,
+            "lambda" => pattern.turbulence.shape.lambda = self.expect_float(stream, "a float")?,
+            "frequency" => pattern.wave.frequency = self.expect_float(stream, "a float")?,
+            "phase" => pattern.wave.phase = self.expect_float(stream, "a float")?,
+            "ramp_wave" => pattern.wave.shape = WaveShape::Ramp,
+            "triangle_wave" => pattern.wave.shape = WaveShape::Triangle,
+            "sine_wave" => pattern.wave.shape = WaveShape::Sine,
+            "scallop_wave" => pattern.wave.shape = WaveShape::Scallop,
+            "cubic_wave" => pattern.wave.shape = WaveShape::Cubic,
+            "poly_wave" => {
+                let exponent = match self.peek_item(stream)? {
+                    Some(Item::Expr(_)) => self.expect_float(stream, "an exponent")?,
+                    _ => 1.0,
+                };
+                pattern.wave.shape = WaveShape::Poly(exponent);
+            }
+            "noise_generator" => {
+                pattern.noise_generator = self
+                    .expect_noise_generator(stream)?
+                    .unwrap_or(self.settings.noise_generator)
+            }
+            _ => return self.pattern_setting(word, span, stream, pattern),
+        }
+        Ok(true)
+    }
+
+    /// The settings that belong to one pattern (`brick_size`, `form`, `exponent`...); an
+    /// error when written for another pattern.
+    fn pattern_setting(
+        &mut self,
+        word: &str,
+        span: Span,
+        stream: &mut Stream,
+        pattern: &mut PatternSpec,
+    ) -> EvalResult<bool> {
+        let owner = match word {
+            "agate_turb" => "agate",
+            "brick_size" | "mortar" => "brick",
+            "control0" | "control1" => "quilted",
+            "form" | "metric" | "offset" | "solid" => "crackle",
+            "coords" | "size" => "facets",
+            "exponent" | "interior" | "exterior" => "mandel, julia or magnet",
+            _ => return Ok(false),
+        };
+        match (&mut pattern.kind, word) {
+            (PatternKind::Agate { agate_turb }, _) => {
+                *agate_turb = self.expect_float(stream, "a float")?
+            }
+            (PatternKind::Brick { size, .. }, "brick_size") => {
+                let given = self.expect_amount(stream)?;
+                if given.min_element() <= 0.0 {
+                    return Err(self
+                        .error(span, "`brick_size` must be positive in every direction")
+                        .into());
+                }
+                *size = given;
+            }
+            (PatternKind::Brick { mortar, .. }, _) => {
+                *mortar = self.expect_float(stream, "a float")?
+            }
+            (PatternKind::Quilted { control0, .. }, "control0") => {
+                *control0 = self.expect_float(stream, "a float")?
+            }
+            (PatternKind::Quilted { control1, .. }, _) => {
+                *control1 = self.expect_float(stream, "a float")?
+            }
+            (PatternKind::Crackle(crackle), "form") => {
+                crackle.form = self.expect_vector(stream, "a form vector")?
+            }
+            (PatternKind::Crackle(crackle), "metric") => {
+                crackle.metric = self.expect_float(stream, "a metric")?;
+                if crackle.metric.is_nan() || crackle.metric <= 0.0 {
+                    return Err(self.error(span, "`metric` must be positive").into());
+                }
+            }
+            (PatternKind::Crackle(crackle), "offset") => {
+                crackle.offset = self.expect_float(stream, "a float")?
+            }
+            (PatternKind::Crackle(crackle), _) => crackle.solid = true,
+            (PatternKind::Facets { coords, .. }, "coords") => {
+                *coords = self.expect_float(stream, "a float")?
+            }
+            (PatternKind::Facets { size, .. }, _) => {
+                *size = self.expect_float(stream, "a float")?
+            }
+            (PatternKind::Fractal(fractal), "exponent") => {
+                let exponent = self.expect_float(stream, "an exponent")?;
+                if !(2.0..=33.0).contains(&exponent) {
+                    return Err(self
+                        .error(span, "the fractal `exponent` must be between 2 and 33")
+                        .into());
+                }
+                fractal.exponent = exponent as u32;
+            }
+            (PatternKind::Fractal(fractal), which) => {
+                let kind = self.expect_float(stream, "a colouring type")?;
+                let factor = self.expect_float(stream, "a factor")?;
+                let limit = if which == "exterior" { 8.0 } else { 6.0 };
+                if !(0.0..=limit).contains(&kind) {
+                    return Err(self
+                        .error(span, format!("the `{which}` type must be 0 to {limit}"))
+                        .into());
+                }
+                let colouring = Colouring {
+                    kind: kind as u32,
+                    factor,
+                };
+                if which == "exterior" {
+                    fractal.exterior = colouring;
+                } else {
+                    fractal.interior = colouring;
+                }
+            }
+            _ => {
+                return Err(self
+                    .error(span, format!("`{word}` only applies to {owner}"))
+                    .with_label("not a modifier of this pattern")
+                    .into())
+            }
+        }
+        Ok(true)
     }
 
     /// When `block` is a pattern modifier block (`warp { .. }`), applies it to `pattern` and
@@ -51,7 +245,248 @@ impl Evaluator {
         block: &Block,
         pattern: &mut PatternSpec,
     ) -> EvalResult<bool> {
-        let _ = (block, pattern);
-        Ok(false)
+        if !matches!(&block.head, BlockHead::Word(w) if &**w == "warp") {
+            return Ok(false);
+        }
+        let mut stream = Stream::new(block.body.clone());
+        let mut warp = self.eval_warp(block.head_span, &mut stream)?;
+        if let Warp::BlackHole(hole) = &mut warp {
+            self.fit_repeated_black_hole(block.head_span, hole);
+        }
+        pattern.add_warp(warp);
+        Ok(true)
+    }
+
+    /// POV-Ray keeps each copy of a repeated black hole inside its cell: on every repeated
+    /// axis a centre closer to the cell's start than the radius moves out to the radius
+    /// (measured), and a cell too small for centre, radius and jitter grows, with a warning.
+    fn fit_repeated_black_hole(&mut self, span: Span, hole: &mut BlackHole) {
+        let mut grew = false;
+        for axis in 0..3 {
+            if hole.repeat[axis] <= 0.0 {
+                continue;
+            }
+            hole.centre[axis] = hole.centre[axis].max(hole.radius);
+            let needed = hole.centre[axis] + hole.radius + hole.jitter[axis].abs();
+            if hole.repeat[axis] < needed {
+                hole.repeat[axis] = needed;
+                grew = true;
+            }
+        }
+        if grew {
+            self.warn(
+                span,
+                "black hole `repeat` is too small for the centre, radius and turbulence; it was \
+                 enlarged",
+            );
+        }
+    }
+
+    /// The body of `warp { .. }`: one warp kind followed by its settings.
+    fn eval_warp(&mut self, head_span: Span, stream: &mut Stream) -> EvalResult<Warp> {
+        let mut warp: Option<Warp> = None;
+        while let Some(item) = self.next_item(stream)? {
+            let (word, span) = match &item {
+                Item::Keyword(word, span) => (word.clone(), *span),
+                Item::Comma(_) => continue,
+                _ => return Err(self.unexpected_in(&item, "warp")),
+            };
+            match (&*word, &mut warp) {
+                ("turbulence", None) => {
+                    warp = Some(Warp::Turbulence {
+                        amount: self.expect_amount(stream)?,
+                        shape: Default::default(),
+                    })
+                }
+                ("black_hole", None) => {
+                    let centre = self.expect_vector(stream, "a centre")?;
+                    let radius = self.expect_float(stream, "a radius")?;
+                    warp = Some(Warp::BlackHole(BlackHole::new(centre, radius)));
+                }
+                ("repeat", None) => {
+                    let direction = self.expect_vector(stream, "a direction")?;
+                    let axes: Vec<usize> = (0..3).filter(|&a| direction[a] != 0.0).collect();
+                    let [axis] = axes[..] else {
+                        return Err(self
+                            .error(span, "the `repeat` direction must lie along one axis")
+                            .into());
+                    };
+                    warp = Some(Warp::Repeat(Repeat {
+                        axis,
+                        width: direction[axis],
+                        offset: DVec3::ZERO,
+                        flip: [false; 3],
+                    }));
+                }
+                ("cylindrical", None) => {
+                    warp = Some(Warp::Mapping(Mapping::new(MappingKind::Cylindrical)))
+                }
+                ("spherical", None) => {
+                    warp = Some(Warp::Mapping(Mapping::new(MappingKind::Spherical)))
+                }
+                ("toroidal", None) => {
+                    warp = Some(Warp::Mapping(Mapping::new(MappingKind::Toroidal)))
+                }
+                ("planar", None) => {
+                    let (normal, distance) = match self.peek_item(stream)? {
+                        Some(Item::Expr(_)) => {
+                            let normal = self.expect_vector(stream, "a plane normal")?;
+                            let distance = self.expect_float(stream, "a distance")?;
+                            (normal, distance)
+                        }
+                        _ => (DVec3::Z, 0.0),
+                    };
+                    let Some(normal) = normal.try_normalize() else {
+                        return Err(self
+                            .error(span, "the `planar` warp needs a non-zero normal")
+                            .into());
+                    };
+                    warp = Some(Warp::Planar { normal, distance });
+                }
+                ("octaves", Some(Warp::Turbulence { shape, .. })) => {
+                    shape.octaves = self.expect_octaves(stream)?
+                }
+                ("omega", Some(Warp::Turbulence { shape, .. })) => {
+                    shape.omega = self.expect_float(stream, "a float")?
+                }
+                ("lambda", Some(Warp::Turbulence { shape, .. })) => {
+                    shape.lambda = self.expect_float(stream, "a float")?
+                }
+                ("strength", Some(Warp::BlackHole(hole))) => {
+                    hole.strength = self.expect_float(stream, "a float")?
+                }
+                ("falloff", Some(Warp::BlackHole(hole))) => {
+                    hole.falloff = self.expect_float(stream, "a float")?
+                }
+                ("inverse", Some(Warp::BlackHole(hole))) => hole.inverse = true,
+                ("repeat", Some(Warp::BlackHole(hole))) => {
+                    hole.repeat = self.expect_amount(stream)?.max(DVec3::ZERO)
+                }
+                ("turbulence", Some(Warp::BlackHole(hole))) => {
+                    hole.jitter = self.expect_amount(stream)?
+                }
+                ("type", Some(Warp::BlackHole(_))) => {
+                    let _ = self.expect_float(stream, "a type")?;
+                }
+                ("offset", Some(Warp::Repeat(repeat))) => {
+                    repeat.offset = self.expect_vector(stream, "an offset")?
+                }
+                ("flip", Some(Warp::Repeat(repeat))) => {
+                    let flip = self.expect_vector(stream, "a flip vector")?;
+                    repeat.flip = [flip.x != 0.0, flip.y != 0.0, flip.z != 0.0];
+                }
+                ("orientation", Some(Warp::Mapping(mapping))) => {
+                    let orientation = self.expect_vector(stream, "an orientation")?;
+                    mapping.set_orientation(orientation);
+                }
+                ("dist_exp", Some(Warp::Mapping(mapping))) => {
+                    mapping.dist_exp = self.expect_float(stream, "a float")?
+                }
+                ("major_radius", Some(Warp::Mapping(mapping))) => {
+                    mapping.major_radius = self.expect_float(stream, "a float")?
+                }
+                _ => return Err(self.unexpected_in(&item, "warp")),
+            }
+        }
+        match warp {
+            Some(warp) => Ok(warp),
+            None => Err(self
+                .error(
+                    head_span,
+                    "a `warp` needs a kind: turbulence, black_hole, repeat, cylindrical, \
+                     spherical, toroidal or planar",
+                )
+                .into()),
+        }
+    }
+
+    /// `magnet 1|2 mandel ITERATIONS` or `magnet 1|2 julia COMPLEX, ITERATIONS`.
+    fn magnet_operands(&mut self, span: Span, stream: &mut Stream) -> EvalResult<PatternKind> {
+        let number = self.expect_float(stream, "a magnet type (1 or 2)")?;
+        let magnet = match number as i64 {
+            1 if number == 1.0 => MagnetType::One,
+            2 if number == 2.0 => MagnetType::Two,
+            _ => return Err(self.error(span, "the magnet type must be 1 or 2").into()),
+        };
+        let kind = match self.next_item(stream)? {
+            Some(Item::Keyword(word, _)) if &*word == "mandel" => {
+                FractalKind::MagnetMandelbrot(magnet)
+            }
+            Some(Item::Keyword(word, _)) if &*word == "julia" => {
+                FractalKind::MagnetJulia(magnet, self.expect_complex(stream)?)
+            }
+            _ => {
+                return Err(self
+                    .error(span, "expected `mandel` or `julia` after the magnet type")
+                    .into())
+            }
+        };
+        let iterations = self.expect_iterations(stream)?;
+        Ok(PatternKind::Fractal(Fractal::new(kind, iterations)))
+    }
+
+    /// A complex number written as a 2-D vector.
+    fn expect_complex(&mut self, stream: &mut Stream) -> EvalResult<DVec2> {
+        let (value, span) = self.expect_value(stream, "a complex number (a 2-D vector)")?;
+        let vector = self.to_vector3(value, span)?;
+        Ok(DVec2::new(vector.x, vector.y))
+    }
+
+    /// A fractal's iteration count.
+    fn expect_iterations(&mut self, stream: &mut Stream) -> EvalResult<u32> {
+        let (value, span) = self.expect_value(stream, "an iteration count")?;
+        let count = self.to_float(value, span)?;
+        if !(1.0..=MAX_FRACTAL_ITERATIONS).contains(&count) {
+            return Err(self
+                .error(
+                    span,
+                    format!("the iteration count must be between 1 and {MAX_FRACTAL_ITERATIONS}"),
+                )
+                .into());
+        }
+        Ok(count as u32)
+    }
+
+    /// A float or vector amount (a float applies to all three axes).
+    fn expect_amount(&mut self, stream: &mut Stream) -> EvalResult<DVec3> {
+        let (value, span) = self.expect_value(stream, "a float or vector")?;
+        match value {
+            Value::Float(amount) => Ok(DVec3::splat(amount)),
+            other => self.to_vector3(other, span),
+        }
+    }
+
+    /// `octaves N`: 1 to 10 (POV-Ray clamps to that range).
+    fn expect_octaves(&mut self, stream: &mut Stream) -> EvalResult<u32> {
+        let octaves = self.expect_float(stream, "a number of octaves")?;
+        Ok(if octaves.is_nan() {
+            1
+        } else {
+            octaves.clamp(1.0, 10.0) as u32
+        })
+    }
+
+    /// `noise_generator N` with N 0, 1, 2 or 3; `None` for 0, which means "the default"
+    /// (for a pattern the global setting, globally generator 2).
+    pub(crate) fn expect_noise_generator(
+        &mut self,
+        stream: &mut Stream,
+    ) -> EvalResult<Option<NoiseGenerator>> {
+        let (value, span) = self.expect_value(stream, "a noise generator (0, 1, 2 or 3)")?;
+        let number = self.to_float(value, span)?;
+        if number == 0.0 {
+            return Ok(None);
+        }
+        let generator = if number.fract() == 0.0 {
+            NoiseGenerator::from_number(number as i64)
+        } else {
+            None
+        };
+        match generator {
+            Some(generator) => Ok(Some(generator)),
+            None => Err(self
+                .error(span, "the noise generator must be 0, 1, 2 or 3")
+                .into()),
+        }
     }
 }

@@ -545,8 +545,12 @@ impl Evaluator {
                         let (value, span) = self.expect_value(stream, "a colour")?;
                         self.settings.ambient_light = self.to_colour(value, span)?.rgb_vec();
                     }
-                    "charset" | "max_intersections" | "number_of_waves" | "noise_generator"
-                    | "hf_gray_16" | "irid_wavelength" | "mm_per_unit" | "subsurface" => {
+                    "noise_generator" => {
+                        self.settings.noise_generator =
+                            self.expect_noise_generator(stream)?.unwrap_or_default()
+                    }
+                    "charset" | "max_intersections" | "number_of_waves" | "hf_gray_16"
+                    | "irid_wavelength" | "mm_per_unit" | "subsurface" => {
                         self.warn(
                             *span,
                             format!("global setting `{word}` is not supported yet; it is ignored"),

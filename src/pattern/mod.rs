@@ -6,62 +6,213 @@
 //! `checker`, the block index ([`PatternSpec::block`]). Holds: pure and allocation-free per
 //! call; non-finite input gives 0.
 //!
+//! Order of evaluation, measured against POV-Ray 3.7: warps and the transformations written
+//! after the pattern keyword act in the order written, so the point passes through them
+//! from the last written to the first; the classic `turbulence` modifier acts innermost
+//! (after every warp and transformation, "turbulence first"). Then the raw pattern value,
+//! then frequency, phase and the wave shape ([`wave`]).
+//!
 //! Maps (colour, pigment, normal, texture maps) and what a value means live with the textures
 //! (`render::pattern`); this module only knows patterns.
 
+mod fractal;
+mod geometric;
+mod noise_based;
+mod normals;
+mod warp;
+mod wave;
+
 use glam::DVec3;
 
+use crate::noise::{vector_turbulence, NoiseGenerator, TurbulenceShape};
 use crate::scene::Transform;
 
-/// Offset POV-Ray adds to each coordinate before flooring in the checker pattern.
-const CHECKER_OFFSET: f64 = 1e-10;
-
-/// The modulus of POV-Ray's default ramp wave, slightly above 1 so that 1 itself survives.
-const RAMP_WAVE_PERIOD: f64 = 1.00001;
+pub use fractal::{Colouring, Fractal, FractalKind, MagnetType};
+pub use geometric::checker_block;
+pub use noise_based::{ClassicTurbulence, Crackle};
+pub use warp::{BlackHole, Mapping, MappingKind, Repeat, Warp};
+pub use wave::{Wave, WaveShape};
 
 /// A pattern with its modifiers.
 #[derive(Clone, Debug)]
 pub struct PatternSpec {
     /// Which pattern.
     pub kind: PatternKind,
+    /// Frequency, phase and wave shape.
+    pub wave: Wave,
+    /// The classic `turbulence` modifier (amount zero: none) with its octaves, omega and
+    /// lambda.
+    pub turbulence: ClassicTurbulence,
+    /// Warps in the order written, each with the transformations written before it.
+    pub warps: Vec<PlacedWarp>,
+    /// The noise generator (the pattern's own or the global setting in force when it was
+    /// parsed).
+    pub noise_generator: NoiseGenerator,
+    /// Every transformation noted so far, composed (outer from inner).
+    noted: Transform,
+}
+
+/// A warp together with the frame it was written in.
+#[derive(Clone, Debug)]
+pub struct PlacedWarp {
+    /// The warp.
+    pub warp: Warp,
+    /// The transformations written before the warp (after the pattern keyword), composed:
+    /// maps the innermost pattern space to the warp's frame.
+    pub frame: Transform,
 }
 
 /// The patterns.
 #[derive(Clone, Debug)]
 pub enum PatternKind {
+    /// Banded like marble with its own turbulence (`agate_turb`, default 1).
+    Agate {
+        /// The built-in turbulence's amount.
+        agate_turb: f64,
+    },
+    /// 1 at the origin falling to 0 at the faces of the cube [-1, 1]³.
+    Boxed,
+    /// Smooth noise (also `spotted`; `bumps` as a pigment).
+    Bozo,
+    /// Bricks and mortar; block 0 mortar, block 1 brick.
+    Brick {
+        /// Size of a brick with its mortar (default <8, 3, 4.5>).
+        size: DVec3,
+        /// Mortar thickness (default 0.5).
+        mortar: f64,
+    },
+    /// Noise with a dedicated normal (the same as bozo as a pigment).
+    Bumps,
+    /// One random value per unit cube.
+    Cells,
     /// 3-D checkerboard of unit cubes; block index 0 or 1.
     Checker,
+    /// Voronoi cells.
+    Crackle(Crackle),
+    /// Six blocks, one per pyramid around each half axis.
+    Cubic,
+    /// 1 on the y axis falling to 0 at radius 1.
+    Cylindrical,
+    /// Dents (noise cubed as a pigment).
+    Dents,
+    /// Facets: a normal-only pattern (`coords`, `size`); its value is 0.
+    Facets {
+        /// `coords` scale (0: not given).
+        coords: f64,
+        /// `size` factor (0: not given).
+        size: f64,
+    },
+    /// Mandelbrot, Julia and magnet fractals.
+    Fractal(Fractal),
     /// Ramp along a direction (the fractional part of `dot(p, direction)`).
     Gradient(DVec3),
+    /// 1/f noise.
+    Granite,
+    /// Hexagons in the x-z plane; three blocks.
+    Hexagon,
+    /// `((sin x + sin y + sin z) / 3)²`.
+    Leopard,
+    /// The x coordinate with a triangle wave and turbulence built in.
+    Marble,
+    /// Concentric unit shells.
+    Onion,
+    /// 1 on the x-z plane falling to 0 at distance 1.
+    Planar,
+    /// Rounded cubes.
+    Quilted {
+        /// Curvature at the cube faces (default 1).
+        control0: f64,
+        /// Curvature at the seams (default 1).
+        control1: f64,
+    },
+    /// Angle around the y axis.
+    Radial,
+    /// Ripples from the wave centres.
+    Ripples,
+    /// 1 at the origin falling to 0 at radius 1.
+    Spherical,
+    /// A screw around the z axis with a number of arms (the integer part is used).
+    Spiral1(f64),
+    /// Two spirals twisting in opposite directions (the integer part of the arms is used).
+    Spiral2(f64),
+    /// Squares in the x-z plane; four blocks.
+    Square,
+    /// `tiling 1`: square tiles with bevelled edges (the other tilings are not supported).
+    SquareTiles,
+    /// Triangles in the x-z plane; six blocks.
+    Triangular,
+    /// Broad waves from the wave centres.
+    Waves,
+    /// Rings around the z axis with a triangle wave.
+    Wood,
+    /// Sharp 1/f noise.
+    Wrinkles,
 }
 
 impl PatternSpec {
     /// The pattern with POV-Ray's default modifiers.
     pub fn new(kind: PatternKind) -> PatternSpec {
-        PatternSpec { kind }
+        let shape = match kind {
+            PatternKind::Marble
+            | PatternKind::Wood
+            | PatternKind::Spiral1(_)
+            | PatternKind::Spiral2(_) => WaveShape::Triangle,
+            _ => WaveShape::Ramp,
+        };
+        PatternSpec {
+            kind,
+            wave: Wave::new(shape),
+            turbulence: ClassicTurbulence {
+                amount: DVec3::ZERO,
+                shape: TurbulenceShape::default(),
+            },
+            warps: Vec::new(),
+            noise_generator: NoiseGenerator::default(),
+            noted: Transform::IDENTITY,
+        }
     }
 
     /// Called for every transformation written inside the owning block after the pattern
     /// keyword (the owner also composes it into its own transform), so that warps can
     /// remember the frame they were written in.
     pub fn note_transform(&mut self, transform: &Transform) {
-        let _ = transform;
+        self.noted = self.noted.then(transform);
+    }
+
+    /// Adds a warp after everything written so far.
+    pub fn add_warp(&mut self, warp: Warp) {
+        self.warps.push(PlacedWarp {
+            warp,
+            frame: self.noted,
+        });
     }
 
     /// For block patterns (`checker`, `hexagon`, `brick`, ...): how many blocks there are.
     /// `None` for patterns with a continuous value.
     pub fn block_count(&self) -> Option<usize> {
         match self.kind {
-            PatternKind::Checker => Some(2),
-            PatternKind::Gradient(_) => None,
+            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Hexagon => Some(3),
+            PatternKind::Square => Some(4),
+            PatternKind::Triangular | PatternKind::Cubic => Some(6),
+            _ => None,
         }
     }
 
     /// The block index (below [`Self::block_count`]) at a pattern-space point.
     pub fn block(&self, point: DVec3) -> usize {
+        if !point.is_finite() {
+            return 0;
+        }
+        let p = self.moved_point(point);
         match self.kind {
-            PatternKind::Checker => checker_block(point),
-            PatternKind::Gradient(_) => 0,
+            PatternKind::Checker => checker_block(p),
+            PatternKind::Brick { size, mortar } => geometric::brick_block(p, size, mortar),
+            PatternKind::Hexagon => geometric::hexagon_block(p),
+            PatternKind::Square => geometric::square_block(p),
+            PatternKind::Triangular => geometric::triangular_block(p),
+            PatternKind::Cubic => geometric::cubic_block(p),
+            _ => 0,
         }
     }
 
@@ -71,9 +222,15 @@ impl PatternSpec {
         if !point.is_finite() {
             return 0.0;
         }
-        match self.kind {
-            PatternKind::Checker => checker_block(point) as f64,
-            PatternKind::Gradient(direction) => gradient_value(point, direction),
+        if self.block_count().is_some() {
+            return self.block(point) as f64;
+        }
+        let p = self.moved_point(point);
+        let value = self.wave.apply(self.raw_value(p));
+        if value.is_finite() {
+            value
+        } else {
+            0.0
         }
     }
 
@@ -82,46 +239,171 @@ impl PatternSpec {
     /// the surface normal at `point` for a bump size of 1. `None` means "derive the slope from
     /// [`Self::value`]".
     pub fn normal_perturbation(&self, point: DVec3) -> Option<DVec3> {
-        let _ = point;
-        None
+        if !point.is_finite() {
+            return None;
+        }
+        let p = self.moved_point(point);
+        let generator = self.noise_generator;
+        let perturbation = match self.kind {
+            PatternKind::Bumps => normals::bumps(p, generator),
+            PatternKind::Dents => normals::dents(p, generator),
+            PatternKind::Wrinkles => normals::wrinkles(p, generator),
+            PatternKind::Ripples => normals::ripples(p, &self.wave, generator),
+            PatternKind::Waves => normals::waves(p, &self.wave, generator),
+            PatternKind::Quilted { control0, control1 } => normals::quilted(p, control0, control1),
+            _ => return None,
+        };
+        Some(if perturbation.is_finite() {
+            perturbation
+        } else {
+            DVec3::ZERO
+        })
     }
-}
 
-/// Which of two checker blocks (0 or 1) the pattern-space point lies in.
-pub fn checker_block(point: DVec3) -> usize {
-    let sum = (point.x + CHECKER_OFFSET).floor()
-        + (point.y + CHECKER_OFFSET).floor()
-        + (point.z + CHECKER_OFFSET).floor();
-    // Sums beyond 2^53 are all even; rem_euclid keeps negative sums in 0..2.
-    if sum.rem_euclid(2.0) >= 1.0 {
-        1
-    } else {
-        0
+    /// True for the patterns that use the classic turbulence inside their formula instead
+    /// of moving the point with it.
+    fn handles_own_turbulence(&self) -> bool {
+        matches!(
+            self.kind,
+            PatternKind::Marble
+                | PatternKind::Wood
+                | PatternKind::Agate { .. }
+                | PatternKind::Spiral1(_)
+                | PatternKind::Spiral2(_)
+        )
+    }
+
+    /// The point the raw pattern is evaluated at: through the warps and the
+    /// transformations between them (last written first), then the classic turbulence.
+    fn moved_point(&self, point: DVec3) -> DVec3 {
+        let mut p = point;
+        if !self.warps.is_empty() {
+            // `point` is in the innermost frame; the last warp's frame is reached through
+            // everything written before it.
+            let mut frame_inner_point = p;
+            let mut current: Option<&Transform> = None;
+            for placed in self.warps.iter().rev() {
+                let in_frame = match current {
+                    None => placed.frame.point_to_outer(frame_inner_point),
+                    Some(previous) => placed
+                        .frame
+                        .point_to_outer(previous.point_to_inner(frame_inner_point)),
+                };
+                frame_inner_point = placed.warp.apply(in_frame, self.noise_generator);
+                current = Some(&placed.frame);
+            }
+            if let Some(first) = current {
+                p = first.point_to_inner(frame_inner_point);
+            }
+        }
+        if self.turbulence.amount != DVec3::ZERO && !self.handles_own_turbulence() {
+            p += self.turbulence.amount
+                * vector_turbulence(p, &self.turbulence.shape, self.noise_generator);
+        }
+        p
+    }
+
+    /// The classic turbulence as a scalar (its x amount times the scalar turbulence), for
+    /// the spirals; 0 without turbulence.
+    fn scalar_turbulence(&self, p: DVec3) -> f64 {
+        let turbulence = &self.turbulence;
+        if turbulence.amount == DVec3::ZERO {
+            return 0.0;
+        }
+        turbulence.amount.x * crate::noise::turbulence(p, &turbulence.shape, self.noise_generator)
+    }
+
+    /// The pattern's value before frequency, phase and wave shape.
+    fn raw_value(&self, p: DVec3) -> f64 {
+        let generator = self.noise_generator;
+        let turbulence = &self.turbulence;
+        match &self.kind {
+            PatternKind::Agate { agate_turb } => {
+                noise_based::agate(p, *agate_turb, turbulence, generator)
+            }
+            PatternKind::Boxed => geometric::boxed(p),
+            PatternKind::Bozo | PatternKind::Bumps => noise_based::bozo(p, generator),
+            PatternKind::Cells => noise_based::cells(p),
+            PatternKind::Crackle(settings) => noise_based::crackle(p, settings),
+            PatternKind::Cylindrical => geometric::cylindrical(p),
+            PatternKind::Dents => noise_based::dents(p, generator),
+            PatternKind::Facets { .. } => 0.0,
+            PatternKind::Fractal(fractal) => fractal.value(p.x, p.y),
+            PatternKind::Gradient(direction) => geometric::gradient_raw(p, *direction),
+            PatternKind::Granite => noise_based::granite(p, generator),
+            PatternKind::Leopard => geometric::leopard(p),
+            PatternKind::Marble => noise_based::marble(p, turbulence, generator),
+            PatternKind::Onion => geometric::onion(p),
+            PatternKind::Planar => geometric::planar(p),
+            PatternKind::Quilted { control0, control1 } => {
+                normals::quilted_value(p, *control0, *control1)
+            }
+            PatternKind::Radial => geometric::radial(p),
+            PatternKind::Ripples => noise_based::ripples(p, generator),
+            PatternKind::Spherical => geometric::spherical(p),
+            PatternKind::SquareTiles => geometric::square_tiles(p),
+            PatternKind::Spiral1(arms) => {
+                geometric::spiral1(p, arms.trunc(), self.scalar_turbulence(p))
+            }
+            PatternKind::Spiral2(arms) => {
+                geometric::spiral2(p, arms.trunc(), self.scalar_turbulence(p))
+            }
+            PatternKind::Waves => noise_based::waves(p, generator),
+            PatternKind::Wood => noise_based::wood(p, turbulence, generator),
+            PatternKind::Wrinkles => noise_based::wrinkles(p, generator),
+            PatternKind::Checker
+            | PatternKind::Brick { .. }
+            | PatternKind::Hexagon
+            | PatternKind::Square
+            | PatternKind::Triangular
+            | PatternKind::Cubic => self.block(p) as f64,
+        }
     }
 }
 
 /// The gradient pattern's value in [0, 1] at a pattern-space point.
 pub fn gradient_value(point: DVec3, direction: DVec3) -> f64 {
-    let length = direction.length();
-    if !(length > 0.0 && length.is_finite()) {
-        return 0.0;
-    }
-    let mut value = point.dot(direction / length);
-    if value > 1.0 {
-        value %= 1.0;
-    }
-    ramp_wave(value)
+    Wave::new(WaveShape::Ramp).apply(geometric::gradient_raw(point, direction))
 }
 
-/// POV-Ray's default `ramp_wave` applied to a raw pattern value.
-fn ramp_wave(value: f64) -> f64 {
-    let mut wrapped = value % RAMP_WAVE_PERIOD;
-    if wrapped < 0.0 {
-        wrapped -= wrapped.floor();
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn gradient_x() -> PatternSpec {
+        PatternSpec::new(PatternKind::Gradient(DVec3::X))
     }
-    if wrapped.is_finite() {
-        wrapped
-    } else {
-        0.0
+
+    #[test]
+    fn warps_and_transforms_apply_in_written_order() {
+        // POV-Ray: `gradient x warp { repeat x*0.5 } translate x*0.2` at x = 0.05 is 0.35;
+        // with the translation written before the warp it is 0.85.
+        let shift = Transform::translation(DVec3::new(0.2, 0.0, 0.0));
+        let repeat = Warp::Repeat(Repeat {
+            axis: 0,
+            width: 0.5,
+            offset: DVec3::ZERO,
+            flip: [false; 3],
+        });
+        let mut warp_first = gradient_x();
+        warp_first.add_warp(repeat.clone());
+        warp_first.note_transform(&shift);
+        let inner = shift.point_to_inner(DVec3::new(0.05, 0.0, 0.0));
+        assert!((warp_first.value(inner) - 0.35).abs() < 1e-9);
+
+        let mut translate_first = gradient_x();
+        translate_first.note_transform(&shift);
+        translate_first.add_warp(repeat);
+        assert!((translate_first.value(inner) - 0.85).abs() < 1e-9);
+    }
+
+    #[test]
+    fn block_patterns_report_their_counts() {
+        assert_eq!(
+            PatternSpec::new(PatternKind::Hexagon).block_count(),
+            Some(3)
+        );
+        assert_eq!(PatternSpec::new(PatternKind::Onion).block_count(), None);
+        assert_eq!(gradient_x().value(DVec3::splat(f64::NAN)), 0.0);
     }
 }

@@ -42,6 +42,8 @@ pub struct GlobalSettings {
     pub adc_bailout: f64,
     /// Multiplies every finish's ambient term (default white).
     pub ambient_light: DVec3,
+    /// The noise generator patterns use unless they name their own (default 2).
+    pub noise_generator: crate::noise::NoiseGenerator,
 }
 
 impl Default for GlobalSettings {
@@ -53,6 +55,7 @@ impl Default for GlobalSettings {
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
+            noise_generator: crate::noise::NoiseGenerator::default(),
         }
     }
 }

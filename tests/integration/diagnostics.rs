@@ -171,3 +171,33 @@ fn vturbulence_with_too_few_arguments_names_the_count() {
         &["`vturbulence` takes 4 arguments, found 3", "called here"],
     );
 }
+
+#[test]
+fn pattern_modifier_of_another_pattern_names_its_pattern() {
+    check(
+        "pattern_modifier_elsewhere",
+        2,
+        45,
+        &["`mortar` only applies to brick"],
+    );
+}
+
+#[test]
+fn repeat_warp_along_two_axes_is_refused() {
+    check(
+        "warp_repeat_two_axes",
+        3,
+        10,
+        &["the `repeat` direction must lie along one axis"],
+    );
+}
+
+#[test]
+fn noise_generator_out_of_range_is_refused() {
+    check(
+        "bad_noise_generator",
+        2,
+        45,
+        &["the noise generator must be 0, 1, 2 or 3"],
+    );
+}

@@ -1,0 +1,2 @@
+#version 3.7;
+plane { y, 0 pigment { checker rgb 1, rgb 0 mortar 0.2 } }
