@@ -158,18 +158,6 @@ pub fn waves(point: DVec3, generator: NoiseGenerator) -> f64 {
     0.5 + sum / (2.0 * WAVE_COUNT as f64)
 }
 
-/// A deterministic pseudo-random number in [0, 1) for an integer cell and a salt.
-fn cell_random(cell: [i64; 3], salt: u64) -> f64 {
-    let mut state = (cell[0] as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
-        ^ (cell[1] as u64).wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
-        ^ (cell[2] as u64).wrapping_mul(0x1656_67B1_9E37_79F9)
-        ^ salt.wrapping_mul(0x27D4_EB2F_1656_67C5);
-    state ^= state >> 31;
-    state = state.wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    state ^= state >> 29;
-    (state >> 11) as f64 / (1u64 << 53) as f64
-}
-
 /// The integer cell of a point (coordinates clamped so the conversion cannot overflow).
 fn cell_of(point: DVec3) -> [i64; 3] {
     let limit = 1e15;
@@ -179,9 +167,9 @@ fn cell_of(point: DVec3) -> [i64; 3] {
     [cell.x as i64, cell.y as i64, cell.z as i64]
 }
 
-/// `cells`: one random value per unit cube.
+/// `cells`: one random value per unit cube, from POV-Ray's table of random numbers.
 pub fn cells(point: DVec3) -> f64 {
-    cell_random(cell_of(point), 0)
+    crate::noise::cells_value(point)
 }
 
 /// `crackle`: the Voronoi diagram of one random point per unit cube; the value combines
@@ -195,11 +183,7 @@ pub fn crackle(point: DVec3, settings: &Crackle) -> f64 {
         for dy in -1..=1 {
             for dz in -1..=1 {
                 let cell = [home[0] + dx, home[1] + dy, home[2] + dz];
-                let site = DVec3::new(
-                    cell[0] as f64 + cell_random(cell, 1),
-                    cell[1] as f64 + cell_random(cell, 2),
-                    cell[2] as f64 + cell_random(cell, 3),
-                );
+                let site = crate::noise::crackle_feature_point(cell);
                 let distance = metric_distance(point - site, settings.metric);
                 if distance < nearest[0] {
                     nearest = [distance, nearest[0], nearest[1]];
@@ -213,7 +197,7 @@ pub fn crackle(point: DVec3, settings: &Crackle) -> f64 {
         }
     }
     if settings.solid {
-        return cell_random(nearest_cell, 4);
+        return crate::noise::cube_random_value(nearest_cell);
     }
     let value = settings.form.x * nearest[0]
         + settings.form.y * nearest[1]
