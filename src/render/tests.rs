@@ -34,6 +34,7 @@ fn scene(objects: Vec<Object>, lights: Vec<LightSource>, settings: GlobalSetting
         lights,
         objects,
         background: Colour::BLACK,
+        atmosphere: Default::default(),
         settings,
     }
 }
