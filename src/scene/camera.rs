@@ -44,10 +44,10 @@ impl CylinderKind {
     /// The kind for POV-Ray's `cylinder N` number; `None` outside 1 to 4.
     pub fn from_number(number: f64) -> Option<CylinderKind> {
         match number {
-            n if n == 1.0 => Some(CylinderKind::VerticalFixed),
-            n if n == 2.0 => Some(CylinderKind::HorizontalFixed),
-            n if n == 3.0 => Some(CylinderKind::VerticalMoving),
-            n if n == 4.0 => Some(CylinderKind::HorizontalMoving),
+            1.0 => Some(CylinderKind::VerticalFixed),
+            2.0 => Some(CylinderKind::HorizontalFixed),
+            3.0 => Some(CylinderKind::VerticalMoving),
+            4.0 => Some(CylinderKind::HorizontalMoving),
             _ => None,
         }
     }
