@@ -10,16 +10,23 @@
 //!   last on top: each layer shows `1 − filter − transmit` of its colour and lets
 //!   `filter · colour + transmit` of the layers below through; what passes every layer
 //!   shows the background. The result is multiplied by `emission`.
-//! - fog: with depth d, constant fog keeps `a = exp(−d / distance)` of the colour behind;
-//!   ground fog uses the density integrated between the heights (along `up`) of the ray's
-//!   ends: density 1 up to `fog_offset`, `1 / (1 + (h − offset) / alt)²` above. The fog's
-//!   share `1 − a` is weakened by its transmit (`(1 − a)(1 − transmit)`) and is made of
-//!   `1 − filter` of the fog colour plus `filter` of the fog colour times the colour behind.
-//!   A distance of zero turns the fog off. Fog turbulence is not applied yet.
+//! - fog: with depth d, constant fog lets `a = exp(−d / distance)` through; ground fog
+//!   uses the density integrated along the ray instead of d, with density 1 up to height
+//!   `fog_offset` (along `up`) and `1 / (1 + ((h − offset) / alt)²)` above (measured: 0.8,
+//!   0.5 and 0.2 at 0.5, 1 and 2 alts above the offset, not the manual's
+//!   `1/(1 + (h − offset)/alt)²`; rays climbing through it match the integral
+//!   `alt · atan((h − offset)/alt)`). With k = max(a, transmit), the colour C behind becomes
+//!   `k · C · (1 − filter + filter · F) + (1 − k) · F` for fog colour F (measured on single
+//!   pixels for rgb, rgbt, rgbf and rgbft fogs, thin and thick). A distance of zero turns
+//!   the fog off. Several layers do not hide each other: the factors on C multiply and the
+//!   `(1 − k) · F` terms add (measured with two fogs in either order). Fog turbulence is
+//!   not applied yet.
 //! - rainbow: the angle between the ray and the rainbow's direction indexes the colour map
 //!   from `angle − width/2` (0) to `angle + width/2` (1); around the direction the arc
-//!   spans `arc_angle` centred on `up`, fading linearly to nothing between
-//!   `falloff_angle/2` and `arc_angle/2`; the colour is mixed in like a fog of the
+//!   spans `arc_angle` centred on `up`, fading to nothing between `falloff_angle/2` and
+//!   `arc_angle/2` as `1 − smoothstep(t)` (measured along a white bow: 0.98, 0.92, 0.74,
+//!   0.49, 0.26 a twelfth, a sixth, a third, a half, two thirds of the way); the colour is
+//!   mixed in like a fog of the
 //!   rainbow's `distance`. Jitter adds a hashed offset of up to `jitter` to the index.
 
 use super::antialias::unit_hash;
@@ -61,7 +68,6 @@ impl<'a> AtmosphereShader<'a> {
     pub fn along(&self, origin: DVec3, direction: DVec3, depth: f64) -> (DVec3, DVec3) {
         let mut keep = DVec3::ONE;
         let mut add = DVec3::ZERO;
-        // Layers nearer the end of the list are applied last, i.e. seen in front.
         for fog in &self.atmosphere.fogs {
             let share = fog_share(fog, origin, direction, depth);
             mix_layer(&mut keep, &mut add, share, fog.colour);
@@ -75,18 +81,18 @@ impl<'a> AtmosphereShader<'a> {
     }
 }
 
-/// Applies one fog-like layer with fog share `share` and colour `colour` in front of what
-/// `keep` and `add` already describe.
+/// Adds one fog-like layer with fog share `share` (1 − a) and colour `colour` to what `keep`
+/// and `add` already describe (layers are independent of their order).
 fn mix_layer(keep: &mut DVec3, add: &mut DVec3, share: f64, colour: Colour) {
-    if share <= 0.0 || !share.is_finite() {
+    if share <= 0.0 || share.is_nan() {
         return;
     }
-    let share = share.min(1.0) * (1.0 - colour.transmit);
+    let passed = (1.0 - share.min(1.0)).max(colour.transmit);
     let tint = colour.rgb_vec();
-    let through = DVec3::splat(1.0 - share) + share * colour.filter * tint;
-    let own = share * (1.0 - colour.filter) * tint;
+    let through = passed * (DVec3::splat(1.0 - colour.filter) + colour.filter * tint);
+    let own = (1.0 - passed) * tint;
     *keep *= through;
-    *add = *add * through + own;
+    *add += own;
 }
 
 /// The fraction `1 − a` of fog between a ray's start and `depth`.
@@ -109,31 +115,32 @@ fn fog_share(fog: &Fog, origin: DVec3, direction: DVec3, depth: f64) -> f64 {
 /// The density of ground fog integrated along a path of length `depth` that starts at
 /// height `start` and climbs `rise` per unit of length.
 fn ground_fog_depth(start: f64, rise: f64, depth: f64, offset: f64, altitude: f64) -> f64 {
-    // F(h): the integral of the density from `offset` to h.
-    let cumulative = |h: f64| {
+    let altitude = altitude.abs();
+    let density = |h: f64| {
         if h <= offset {
-            h - offset
+            1.0
         } else if altitude > 0.0 {
-            altitude * (1.0 - 1.0 / (1.0 + (h - offset) / altitude))
+            1.0 / (1.0 + ((h - offset) / altitude).powi(2))
         } else {
             0.0
         }
     };
-    if rise.abs() < 1e-10 {
-        let density = if start <= offset {
-            1.0
-        } else if altitude > 0.0 {
-            1.0 / (1.0 + (start - offset) / altitude).powi(2)
+    // F(h): the integral of the density from `offset` to h.
+    let cumulative = |h: f64| {
+        if h <= offset {
+            h - offset
         } else {
-            0.0
-        };
-        return density * depth;
+            altitude * ((h - offset) / altitude.max(f64::MIN_POSITIVE)).atan()
+        }
+    };
+    if rise.abs() < 1e-10 {
+        return density(start) * depth;
     }
     let end = start + rise * depth;
     if !end.is_finite() {
         // An endless ray: upwards only the thinning part remains, downwards it is dense.
         return if rise > 0.0 {
-            (altitude.max(0.0) - cumulative(start)) / rise
+            (altitude * std::f64::consts::FRAC_PI_2 - cumulative(start)) / rise
         } else {
             f64::INFINITY
         };
@@ -168,7 +175,8 @@ fn rainbow_share(rainbow: &Rainbow, direction: DVec3, depth: f64) -> Option<(f64
                 return None;
             }
             if around > falloff && arc > falloff {
-                (arc - around) / (arc - falloff)
+                let t = (around - falloff) / (arc - falloff);
+                1.0 - t * t * (3.0 - 2.0 * t)
             } else {
                 1.0
             }
@@ -232,10 +240,14 @@ mod tests {
     fn ground_fog_density_integrates() {
         // Level at the offset: full density.
         assert_eq!(ground_fog_depth(0.0, 0.0, 5.0, 0.0, 1.0), 5.0);
-        // Straight up from the offset to offset + alt: ∫ 1/(1+h)² from 0 to 1 = 1/2.
-        assert!((ground_fog_depth(0.0, 1.0, 1.0, 0.0, 1.0) - 0.5).abs() < 1e-12);
-        // Endlessly up: ∫ 1/(1+h)² from 0 to ∞ = 1.
-        assert!((ground_fog_depth(0.0, 1.0, f64::INFINITY, 0.0, 1.0) - 1.0).abs() < 1e-12);
+        // Level one alt above the offset: half density.
+        assert_eq!(ground_fog_depth(1.0, 0.0, 5.0, 0.0, 1.0), 2.5);
+        // Straight up from 3 below the offset, 10 units: 3 + atan(7).
+        let climb = ground_fog_depth(-3.0, 1.0, 10.0, 0.0, 1.0);
+        assert!((climb - (3.0 + 7f64.atan())).abs() < 1e-12);
+        // Endlessly up from the offset: alt · π/2.
+        let endless = ground_fog_depth(0.0, 1.0, f64::INFINITY, 0.0, 2.0);
+        assert!((endless - std::f64::consts::PI).abs() < 1e-12);
     }
 
     #[test]
@@ -250,6 +262,9 @@ mod tests {
         let shader = AtmosphereShader::new(&atmosphere, DVec3::ZERO);
         let (keep, _) = shader.along(DVec3::ZERO, DVec3::Z, f64::INFINITY);
         assert!((keep - DVec3::splat(0.3)).length() < 1e-12);
+        // Thinner fog than the transmit floor changes nothing.
+        let (keep, _) = shader.along(DVec3::ZERO, DVec3::Z, 1.0);
+        assert!((keep - DVec3::splat((-0.1f64).exp())).length() < 1e-12);
     }
 
     #[test]

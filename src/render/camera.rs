@@ -29,7 +29,10 @@
 //!
 //! Focal blur: all rays through one image point meet on the plane of focus (through
 //! `focal_point`, parallel to the image plane); a lens sample (s, t) in the unit disc moves
-//! the ray's start by `aperture/2 · (s R̂ + t Û)` and aims it at that meeting point.
+//! the ray's start by `aperture/4 · (s R̂ + t Û)` and aims it at that meeting point. The
+//! quarter was measured: a POV-Ray render with `aperture 0.4` is matched best by a uniform
+//! lens disc of radius 0.1 (0.10% of pixels over, against 0.25% and 0.20% for radii 0.08
+//! and 0.12, and 2.1% for radius 0.2).
 
 use crate::geometry::Ray;
 use crate::scene::{Camera, CylinderKind, Projection};
@@ -61,7 +64,7 @@ pub struct CameraRays {
 /// The focal-blur lens: where rays start on it and where they meet.
 #[derive(Clone, Copy, Debug)]
 struct Lens {
-    /// Half the aperture.
+    /// A quarter of the aperture.
     radius: f64,
     /// Distance from the eye to the plane of focus, along the view direction.
     focal_distance: f64,
@@ -81,7 +84,7 @@ impl CameraRays {
             let focal_distance = (blur.focal_point - camera.location).dot(unit_direction);
             let usable = blur.aperture > 0.0 && focal_distance.is_finite() && blur.max_samples > 0;
             usable.then_some(Lens {
-                radius: blur.aperture / 2.0,
+                radius: blur.aperture / 4.0,
                 focal_distance,
             })
         });
@@ -374,7 +377,7 @@ mod tests {
         let rays = CameraRays::new(&blurred, 10, 10);
         let pinhole = rays.ray(2, 7).unwrap();
         let moved = rays.through_lens(pinhole, DVec2::new(1.0, 0.0));
-        assert!((moved.origin - DVec3::new(0.25, 0.0, 0.0)).length() < 1e-12);
+        assert!((moved.origin - DVec3::new(0.125, 0.0, 0.0)).length() < 1e-12);
         let meet = |ray: Ray| ray.origin + ray.direction * ((4.0 - ray.origin.z) / ray.direction.z);
         assert!((meet(pinhole) - meet(moved)).length() < 1e-12);
     }

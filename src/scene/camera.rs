@@ -97,11 +97,11 @@ impl Default for Camera {
 /// POV-Ray's camera angle when the scene gives none.
 pub const DEFAULT_ANGLE: f64 = 90.0;
 
-/// Focal blur: rays start from points on a disc of radius `aperture / 2` around the eye
-/// and meet again on the plane of focus.
+/// Focal blur: rays start from points on a lens disc around the eye (its size set by
+/// `aperture`) and meet again on the plane of focus.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FocalBlur {
-    /// Diameter of the lens.
+    /// Size of the lens (POV-Ray's arbitrary unit; see `render::camera`).
     pub aperture: f64,
     /// A point on the plane of focus (the plane through it parallel to the image plane).
     pub focal_point: DVec3,
