@@ -9,9 +9,15 @@
 //! Measured against POV-Ray 3.7 renders of a slanted black/white edge seen through an
 //! orthographic camera (one unit per pixel) and of two greys either side of an edge:
 //! - colours are compared as `Σ |a^(1/2.5) − b^(1/2.5)|` over red, green and blue (clipped
-//!   to [0, 1]; the anti-aliasing gamma 2.5); a pixel is supersampled when that difference
-//!   to a neighbour (left, right, above or below) exceeds the threshold. A 0.2/0.4 grey
-//!   edge (difference 0.50) is supersampled at threshold 0.49, not at 0.51.
+//!   to [0, 1]; the anti-aliasing gamma 2.5). A 0.2/0.4 grey edge (difference 0.50) is
+//!   supersampled at threshold 0.49, not at 0.51.
+//! - method 1 decides in scan order (left to right, top to bottom, as POV-Ray renders with
+//!   one thread): a pixel's first sample is compared with its left and upper neighbours as
+//!   they are at that moment (already supersampled or not), both differences taken before
+//!   either is supersampled; each pair differing by more than the threshold has both pixels
+//!   supersampled (each pixel at most once). Comparing with first samples only instead
+//!   left 0.13% of a test scene's pixels different; the scan order leaves one pixel (0.005%)
+//!   at threshold 0.3, none at 0.1 with a 4×4 grid.
 //! - method 1 (non-recursive): a supersampled pixel is the mean of its centre sample and
 //!   an n×n grid (n = depth) at offsets (k + 0.5)/n, so n = 3 averages 10 samples; the
 //!   edge renders as 0, 3/10, 7/10, 1 exactly.
@@ -78,7 +84,7 @@ pub fn difference(a: DVec3, b: DVec3) -> f64 {
 }
 
 /// Which pixels of a `width`-wide image of first samples differ from a neighbour by more
-/// than `threshold`.
+/// than `threshold`: the pixels method 1 most likely supersamples (its scan decides).
 pub fn pixels_to_supersample(first: &[DVec3], width: usize, threshold: f64) -> Vec<bool> {
     let mut marked = vec![false; first.len()];
     for index in 0..first.len() {
@@ -93,6 +99,37 @@ pub fn pixels_to_supersample(first: &[DVec3], width: usize, threshold: f64) -> V
         }
     }
     marked
+}
+
+/// Method 1's decisions in POV-Ray's scan order: each pixel, left to right and top to
+/// bottom, is compared with its left and upper neighbours as they are by then (already
+/// supersampled or not); when they differ by more than `threshold`, both are supersampled
+/// (each at most once). `supersampled(index)` gives a pixel's supersampled colour.
+pub fn scan_supersample(
+    centres: &[DVec3],
+    width: u32,
+    threshold: f64,
+    supersampled: impl Fn(usize) -> DVec3,
+) -> Vec<DVec3> {
+    let width = width.max(1) as usize;
+    let mut colours = centres.to_vec();
+    let mut done = vec![false; centres.len()];
+    for index in 0..colours.len() {
+        let left = (index % width > 0).then(|| index - 1);
+        let above = index.checked_sub(width);
+        let differing = [left, above].map(|neighbour| {
+            neighbour.filter(|&n| difference(colours[index], colours[n]) > threshold)
+        });
+        for neighbour in differing.into_iter().flatten() {
+            for pixel in [neighbour, index] {
+                if !done[pixel] {
+                    colours[pixel] = supersampled(pixel);
+                    done[pixel] = true;
+                }
+            }
+        }
+    }
+    colours
 }
 
 /// Method 1: the mean of the pixel's `centre` sample and a jittered `depth`×`depth` grid.

@@ -124,13 +124,27 @@ pub fn render(
         }),
         Some(aa) if aa.method == Method::NonRecursive => {
             let centres = map_rows(width, height, None, first);
-            let marked = antialias::pixels_to_supersample(&centres, width as usize, aa.threshold);
-            map_rows(width, height, Some(progress), |column, row| {
+            // Supersample in parallel every pixel the first samples alone mark; the scan
+            // below decides which are used and traces the few others it needs.
+            let likely = antialias::pixels_to_supersample(&centres, width as usize, aa.threshold);
+            let grid = |column: u32, row: u32| {
                 let index = row as usize * width as usize + column as usize;
-                if marked[index] {
-                    antialias::grid_mean(column, row, centres[index], &aa, &point)
+                antialias::grid_mean(column, row, centres[index], &aa, &point)
+            };
+            let prepared = map_rows(width, height, Some(progress), |column, row| {
+                let index = row as usize * width as usize + column as usize;
+                if likely[index] {
+                    grid(column, row)
                 } else {
                     centres[index]
+                }
+            });
+            antialias::scan_supersample(&centres, width, aa.threshold, |index| {
+                if likely[index] {
+                    prepared[index]
+                } else {
+                    let (column, row) = (index % width as usize, index / width as usize);
+                    grid(column as u32, row as u32)
                 }
             })
         }
