@@ -320,6 +320,17 @@ mod tests {
     }
 
     #[test]
+    fn scan_compares_with_neighbours_as_already_supersampled() {
+        // One row: black, white, white. The first pair differs, so pixels 0 and 1 become
+        // grey (their supersampled value); pixel 2 then differs from grey pixel 1 by less
+        // than the threshold and keeps its first sample.
+        let centres = [DVec3::ZERO, DVec3::ONE, DVec3::ONE];
+        let grey = DVec3::splat(0.9);
+        let colours = scan_supersample(&centres, 3, 0.3, |_| grey);
+        assert_eq!(colours, vec![grey, grey, DVec3::ONE]);
+    }
+
+    #[test]
     fn jitter_is_deterministic_and_bounded() {
         let a = jitter_offset(3, 4, 5, 1.0);
         assert_eq!(a, jitter_offset(3, 4, 5, 1.0));
