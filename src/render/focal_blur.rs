@@ -9,12 +9,16 @@
 //! (`confidence`, `variance`). durer follows the same plan; its stopping rule is its own:
 //! stop when z² · s² / n ≤ variance in every channel, with s² the sample variance and z
 //! the two-sided normal quantile of `confidence`. Renders therefore agree with POV-Ray's
-//! only within the noise of both (reference scenes state a tolerance).
+//! only within the noise of both. At most [`MAX_SAMPLES`] rays are traced per pixel.
 
 use super::antialias::jitter_offset;
 use super::camera::CameraRays;
 use crate::scene::FocalBlur;
 use glam::{DVec2, DVec3};
+
+/// At most this many lens rays are traced per pixel, whatever `blur_samples` asks for, so a
+/// huge count cannot stall a render.
+pub const MAX_SAMPLES: u32 = 4096;
 
 /// The mean colour of lens rays through the pixel at (`column`, `row`); `trace` gives the
 /// colour of an image point seen from a lens point (`None`: no ray there, black).
@@ -25,7 +29,7 @@ pub fn blurred_pixel(
     blur: &FocalBlur,
     trace: &impl Fn(&crate::geometry::Ray) -> DVec3,
 ) -> DVec3 {
-    let max_samples = blur.max_samples.max(1);
+    let max_samples = blur.max_samples.clamp(1, MAX_SAMPLES);
     let min_samples = blur.min_samples.clamp(1, max_samples);
     let z = normal_quantile(blur.confidence);
     let mut mean = DVec3::ZERO;
