@@ -26,8 +26,10 @@
 //!   spans `arc_angle` centred on `up`, fading to nothing between `falloff_angle/2` and
 //!   `arc_angle/2` as `1 − smoothstep(t)` (measured along a white bow: 0.98, 0.92, 0.74,
 //!   0.49, 0.26 a twelfth, a sixth, a third, a half, two thirds of the way); the colour is
-//!   mixed in like a fog of the
-//!   rainbow's `distance`. Jitter adds a hashed offset of up to `jitter` to the index.
+//!   mixed in like a fog of the rainbow's `distance`, and the falloff weight w then blends
+//!   that result with the colour behind (`(1 − w) · C + w · fogged`, so the weight also
+//!   thins the bow's transmit floor). Jitter adds a hashed offset of up to `jitter` to the
+//!   index.
 
 use super::antialias::unit_hash;
 use super::pattern::{colour_map_lookup, pigment_colour};
@@ -73,8 +75,12 @@ impl<'a> AtmosphereShader<'a> {
             mix_layer(&mut keep, &mut add, share, fog.colour);
         }
         for rainbow in &self.atmosphere.rainbows {
-            if let Some((share, colour)) = rainbow_share(rainbow, direction, depth) {
-                mix_layer(&mut keep, &mut add, share, colour);
+            if let Some((share, colour, weight)) = rainbow_share(rainbow, direction, depth) {
+                // The arc's falloff weakens the whole layer, transparency included.
+                let (mut layer_keep, mut layer_add) = (DVec3::ONE, DVec3::ZERO);
+                mix_layer(&mut layer_keep, &mut layer_add, share, colour);
+                keep *= DVec3::splat(1.0 - weight) + weight * layer_keep;
+                add += weight * layer_add;
             }
         }
         (keep, add)
@@ -148,8 +154,9 @@ fn ground_fog_depth(start: f64, rise: f64, depth: f64, offset: f64, altitude: f6
     (cumulative(end) - cumulative(start)) / rise
 }
 
-/// The rainbow's fog share and colour for a ray along unit `direction`, if it is in the bow.
-fn rainbow_share(rainbow: &Rainbow, direction: DVec3, depth: f64) -> Option<(f64, Colour)> {
+/// The rainbow's fog share, colour and arc weight for a ray along unit `direction`, if it is
+/// in the bow.
+fn rainbow_share(rainbow: &Rainbow, direction: DVec3, depth: f64) -> Option<(f64, Colour, f64)> {
     let axis = rainbow.direction.try_normalize()?;
     if rainbow.width <= 0.0 || rainbow.distance == 0.0 {
         return None;
@@ -185,7 +192,7 @@ fn rainbow_share(rainbow: &Rainbow, direction: DVec3, depth: f64) -> Option<(f64
     };
     let share = 1.0 - (-depth / rainbow.distance.abs()).exp();
     let colour = colour_map_lookup(&rainbow.colour_map, index);
-    Some((share * weight, colour))
+    Some((share, colour, weight))
 }
 
 /// The sky sphere's colour in unit `direction`, over `background`.
