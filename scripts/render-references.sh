@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Re-render the reference images tests/reference/NAME.png from tests/reference/NAME.pov with
 # POV-Ray 3.7, single-threaded (+WT1) for determinism, at 160x120 without anti-aliasing.
+# A scene line `// povray-options: +A0.3 +AM2 +R3 -J` replaces the default `-A` with those
+# options (anti-aliasing: +A[threshold], +AM method, +R depth, +J[amount] / -J).
 #
 # usage: scripts/render-references.sh [--verbose] [NAME.pov ...]   (default: every scene)
 #   --verbose  show POV-Ray's warnings and statistics instead of silencing them (-GA)
@@ -32,8 +34,12 @@ failed=0
 for scene in "$@"; do
     scene=$(basename "$scene")
     name=${scene%.pov}
+    # Per-scene options from a `// povray-options:` line (word splitting intended).
+    options=$(sed -n 's|^// povray-options:||p' "$scene" | head -n 1)
+    options=${options:--A}
     start=$(date +%s%N)
-    if povray -D "+I$scene" "+O$name.png" "+W$WIDTH" "+H$HEIGHT" -A $quiet +WT1 >"$log" 2>&1; then
+    # shellcheck disable=SC2086
+    if povray -D "+I$scene" "+O$name.png" "+W$WIDTH" "+H$HEIGHT" $options $quiet +WT1 >"$log" 2>&1; then
         milliseconds=$((($(date +%s%N) - start) / 1000000))
         printf '%-28s %6d ms %7d bytes\n' "$name" "$milliseconds" "$(stat -c %s "$name.png")"
         if [ -z "$quiet" ]; then
@@ -42,7 +48,8 @@ for scene in "$@"; do
     else
         echo "FAILED: $scene" >&2
         # -GA hides the parse error; render again with messages on to show it.
-        povray -D "+I$scene" "+O/dev/null" "+W$WIDTH" "+H$HEIGHT" -A +WT1 2>&1 \
+        # shellcheck disable=SC2086
+        povray -D "+I$scene" "+O/dev/null" "+W$WIDTH" "+H$HEIGHT" $options +WT1 2>&1 \
             | grep -A3 -i 'error' >&2 || true
         failed=1
     fi

@@ -59,6 +59,66 @@ struct RenderArgs {
     /// Print nothing but errors.
     #[arg(short, long)]
     quiet: bool,
+    #[command(flatten)]
+    antialias: AntialiasArgs,
+}
+
+/// Anti-aliasing options, as POV-Ray's `+A`, `+AM`, `+R` and `+J`.
+#[derive(Args)]
+struct AntialiasArgs {
+    /// Turn anti-aliasing on: supersample pixels differing from a neighbour by more than
+    /// THRESHOLD (0 to 3; POV-Ray's +A uses 0.3).
+    #[arg(long, value_name = "THRESHOLD", value_parser = parse_threshold)]
+    antialias: Option<f64>,
+    /// Supersampling method: 1 non-recursive grid, 2 recursive (POV-Ray's +AM).
+    #[arg(long, value_name = "1|2", value_parser = clap::value_parser!(u32).range(1..=2))]
+    aa_method: Option<u32>,
+    /// Grid size (method 1) or recursion depth (method 2), 1 to 9 (POV-Ray's +R; default 3).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=9))]
+    aa_depth: Option<u32>,
+    /// Jitter of the supersamples, 0 (off) to 1 (POV-Ray's +J; default 1).
+    #[arg(long, value_name = "AMOUNT", value_parser = parse_jitter)]
+    jitter: Option<f64>,
+}
+
+impl AntialiasArgs {
+    /// The anti-aliasing asked for; the method, depth and jitter alone do not turn it on.
+    fn options(&self) -> Option<durer::render::antialias::Antialias> {
+        use durer::render::antialias::{Antialias, Method};
+        let threshold = self.antialias?;
+        let defaults = Antialias::default();
+        Some(Antialias {
+            threshold,
+            method: match self.aa_method {
+                Some(2) => Method::Recursive,
+                _ => Method::NonRecursive,
+            },
+            depth: self.aa_depth.unwrap_or(defaults.depth),
+            jitter: self.jitter.unwrap_or(defaults.jitter),
+        })
+    }
+}
+
+/// A float from `text` within `range`, or a message naming the range.
+fn parse_float_in(text: &str, range: std::ops::RangeInclusive<f64>) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(value) if range.contains(&value) => Ok(value),
+        _ => Err(format!(
+            "expected a number from {} to {}",
+            range.start(),
+            range.end()
+        )),
+    }
+}
+
+/// `--antialias`: a threshold from 0 to 3.
+fn parse_threshold(text: &str) -> Result<f64, String> {
+    parse_float_in(text, 0.0..=3.0)
+}
+
+/// `--jitter`: an amount from 0 to 1.
+fn parse_jitter(text: &str) -> Result<f64, String> {
+    parse_float_in(text, 0.0..=1.0)
 }
 
 /// Runs the command line and returns the process exit code.
@@ -172,6 +232,7 @@ fn render(args: RenderArgs) -> i32 {
     let options = durer::render::RenderOptions {
         width: args.scene.width.max(1),
         height: args.scene.height.max(1),
+        antialias: args.antialias.options(),
     };
     let show_progress = !args.quiet && std::io::stderr().is_terminal();
     let bar = show_progress.then(|| {

@@ -491,6 +491,7 @@ fn object_world(
                 lights: Vec::new(),
                 objects: vec![(*object).clone()],
                 background: crate::scene::Colour::BLACK,
+                atmosphere: Default::default(),
                 settings: Default::default(),
             };
             let world = Rc::new(crate::geometry::World::build(&scene));

@@ -5,7 +5,9 @@
 //! bodies are evaluated from their AST at each call; every limit ends in a diagnostic.
 
 mod appearance;
+mod atmosphere;
 mod builtins;
+mod camera;
 mod expr;
 mod files;
 mod literals;
@@ -20,7 +22,9 @@ mod view;
 pub use value::{Array, Value, Vector};
 
 use crate::diag::{did_you_mean, Diagnostic, FileId, SourceMap, Span, TraceEntry};
-use crate::scene::{Camera, Colour, GlobalSettings, LightSource, Object, Scene, Texture};
+use crate::scene::{
+    Atmosphere, Camera, Colour, GlobalSettings, LightSource, Object, Scene, Texture,
+};
 use crate::syntax::ast::Item;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
@@ -154,6 +158,7 @@ pub(crate) struct Evaluator {
     lights: Vec<LightSource>,
     objects: Vec<Object>,
     background: Colour,
+    atmosphere: Atmosphere,
     pub(crate) settings: GlobalSettings,
     warned_once: std::collections::HashSet<String>,
     /// States of the random streams made by `seed`, indexed by stream number.
@@ -184,6 +189,7 @@ impl Evaluator {
             lights: Vec::new(),
             objects: Vec::new(),
             background: Colour::BLACK,
+            atmosphere: Atmosphere::default(),
             settings: GlobalSettings::default(),
             warned_once: Default::default(),
             random_streams: Vec::new(),
@@ -443,6 +449,7 @@ impl Evaluator {
             }
             Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),
             Value::Light(light) => self.lights.push(Rc::unwrap_or_clone(light)),
+            Value::Atmospheric(effect) => self.add_atmospheric_effect(&effect),
             Value::Colour(colour) if matches!(item, Item::Block(_)) => self.background = colour,
             Value::Nothing => {} // settings blocks and left-out features
             other => {
@@ -470,7 +477,21 @@ impl Evaluator {
             lights: std::mem::take(&mut self.lights),
             objects: std::mem::take(&mut self.objects),
             background: self.background,
+            atmosphere: std::mem::take(&mut self.atmosphere),
             settings,
+        }
+    }
+
+    /// Adds a fog or rainbow layer, or sets the sky sphere (the last one wins).
+    fn add_atmospheric_effect(&mut self, effect: &atmosphere::AtmosphericEffect) {
+        match effect {
+            atmosphere::AtmosphericEffect::Fog(fog) => self.atmosphere.fogs.push(fog.clone()),
+            atmosphere::AtmosphericEffect::SkySphere(sky) => {
+                self.atmosphere.sky_sphere = Some(sky.clone())
+            }
+            atmosphere::AtmosphericEffect::Rainbow(rainbow) => {
+                self.atmosphere.rainbows.push(rainbow.clone())
+            }
         }
     }
 

@@ -38,6 +38,8 @@ pub enum Value {
     Camera(Rc<Camera>),
     /// A light source.
     Light(Rc<LightSource>),
+    /// A fog, sky sphere or rainbow.
+    Atmospheric(Rc<super::atmosphere::AtmosphericEffect>),
     /// A macro.
     Macro(Rc<MacroDefinition>),
     /// A user-defined function.
@@ -110,6 +112,7 @@ impl Value {
             Value::Transform(_) => "a transform",
             Value::Camera(_) => "a camera",
             Value::Light(_) => "a light source",
+            Value::Atmospheric(_) => "an atmospheric effect",
             Value::Macro(_) => "a macro",
             Value::Function(_) => "a function",
             Value::Reference { .. } => "a reference",

@@ -1,11 +1,13 @@
 //! Blocks that set up the view: camera, light sources, background and global settings;
 //! and the dispatch of every block keyword to its evaluator.
 
+use super::atmosphere::AtmosphericEffect;
+use super::camera::FocalBlurItems;
 use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::did_you_mean;
-use crate::scene::{Camera, LightSource, Projection, Spotlight, Transform};
+use crate::scene::{Camera, CylinderKind, LightSource, Projection, Spotlight, Transform};
 use crate::syntax::ast::{Block, BlockHead, Item};
 use glam::DVec3;
 use std::rc::Rc;
@@ -21,6 +23,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "cylinder",
     "difference",
     "disc",
+    "fog",
     "finish",
     "global_settings",
     "interior",
@@ -33,6 +36,8 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "pigment",
     "plane",
     "quadric",
+    "rainbow",
+    "sky_sphere",
     "sphere",
     "texture",
     "torus",
@@ -57,7 +62,6 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
 /// Block keywords of POV-Ray that durer does not evaluate yet.
 const UNSUPPORTED_BLOCKS: &[&str] = &[
     "bicubic_patch",
-    "fog",
     "bounded_by",
     "clipped_by",
     "photons",
@@ -78,8 +82,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "media",
     "parametric",
     "photons",
-    "rainbow",
-    "sky_sphere",
     "sphere_sweep",
     "spline",
     "ovus",
@@ -140,6 +142,13 @@ impl Evaluator {
             }
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
+            "fog" => Ok(atmospheric(AtmosphericEffect::Fog(self.eval_fog(stream)?))),
+            "sky_sphere" => Ok(atmospheric(AtmosphericEffect::SkySphere(
+                self.eval_sky_sphere(stream)?,
+            ))),
+            "rainbow" => Ok(atmospheric(AtmosphericEffect::Rainbow(
+                self.eval_rainbow(stream)?,
+            ))),
             "background" => {
                 let (value, span) = self.expect_value(stream, "a colour")?;
                 let colour = self.to_colour(value, span)?;
@@ -310,6 +319,8 @@ impl Evaluator {
         let mut angle: Option<f64> = None;
         let mut image_plane_given = false;
         let mut transforms: Vec<Transform> = Vec::new();
+        let mut vertical_angle: Option<f64> = None;
+        let mut blur = FocalBlurItems::default();
         while let Some(item) = self.next_item(stream)? {
             match &item {
                 Item::Keyword(word, span) => {
@@ -332,7 +343,12 @@ impl Evaluator {
                             // `angle` may stand alone for orthographic cameras.
                             match self.peek_item(stream)? {
                                 Some(Item::Expr(_)) => {
-                                    angle = Some(self.expect_float(stream, "an angle")?)
+                                    angle = Some(self.expect_float(stream, "an angle")?);
+                                    if camera.projection == Projection::Spherical {
+                                        vertical_angle = self
+                                            .optional_second_value(stream)?
+                                            .map(|(value, _)| value);
+                                    }
                                 }
                                 _ => angle = Some(f64::NAN),
                             }
@@ -340,16 +356,34 @@ impl Evaluator {
                         "translate" | "rotate" | "scale" | "matrix" | "transform" => {
                             transforms.push(self.transform_keyword(word, *span, stream)?)
                         }
-                        "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "cylinder"
-                        | "spherical" | "mesh_camera" => {
-                            self.warn(*span, format!("`{word}` cameras are not supported yet; a perspective camera is used"));
-                            if &**word == "cylinder" {
-                                let _ = self.expect_value(stream, "the cylinder camera type")?;
-                            }
+                        "fisheye" => camera.projection = Projection::Fisheye,
+                        "ultra_wide_angle" => camera.projection = Projection::UltraWideAngle,
+                        "omnimax" => camera.projection = Projection::Omnimax,
+                        "panoramic" => camera.projection = Projection::Panoramic,
+                        "spherical" => camera.projection = Projection::Spherical,
+                        "cylinder" => {
+                            let (value, value_span) =
+                                self.expect_value(stream, "the cylinder camera type")?;
+                            let number = self.to_float(value, value_span)?;
+                            let Some(kind) = CylinderKind::from_number(number) else {
+                                return Err(self
+                                    .error(
+                                        value_span,
+                                        format!("unknown cylinder camera type {number}"),
+                                    )
+                                    .with_label("expected 1, 2, 3 or 4")
+                                    .into());
+                            };
+                            camera.projection = Projection::Cylinder(kind);
+                        }
+                        "mesh_camera" => {
+                            self.warn(
+                                *span,
+                                "`mesh_camera` is not supported yet; a perspective camera is used",
+                            );
                         }
                         "focal_point" | "aperture" | "blur_samples" | "confidence" | "variance" => {
-                            self.warn(*span, format!("camera `{word}` (focal blur) is not supported yet; it is ignored"));
-                            let _ = self.expect_value(stream, "a value")?;
+                            self.eval_focal_blur_item(word, stream, &mut blur)?
                         }
                         _ => return Err(self.unexpected_in(&item, "camera")),
                     }
@@ -367,6 +401,17 @@ impl Evaluator {
                 Item::Comma(_) => {}
                 _ => return Err(self.unexpected_in(&item, "camera")),
             }
+        }
+        if let Some(given) = angle.filter(|a| a.is_finite()) {
+            camera.angle = given;
+            camera.vertical_angle = vertical_angle.unwrap_or(given / 2.0);
+        } else if camera.projection == Projection::Spherical {
+            // Without `angle` the spherical camera sees everything.
+            camera.angle = 360.0;
+            camera.vertical_angle = 180.0;
+        }
+        if let Some(focal_blur) = blur.resolve() {
+            camera.focal_blur = Some(focal_blur);
         }
         // Angle sets the direction's length so the horizontal field of view is `angle`.
         if let Some(angle) = angle.filter(|a| a.is_finite()) {
@@ -417,6 +462,9 @@ impl Evaluator {
             camera.direction = t.vector_to_outer(camera.direction);
             camera.right = t.vector_to_outer(camera.right);
             camera.up = t.vector_to_outer(camera.up);
+            if let Some(focal_blur) = &mut camera.focal_blur {
+                focal_blur.focal_point = t.point_to_outer(focal_blur.focal_point);
+            }
         }
         Ok(camera)
     }
@@ -579,6 +627,11 @@ impl Evaluator {
         }
         Ok(())
     }
+}
+
+/// An atmospheric effect as a value.
+fn atmospheric(effect: AtmosphericEffect) -> Value {
+    Value::Atmospheric(Rc::new(effect))
 }
 
 /// A short description of an item for messages.

@@ -82,6 +82,7 @@ pub fn scene_of(objects: Vec<Object>) -> Scene {
         lights: Vec::new(),
         objects,
         background: Colour::BLACK,
+        atmosphere: Default::default(),
         settings: Default::default(),
     }
 }

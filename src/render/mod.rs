@@ -13,8 +13,11 @@
 //! [`trace`] (transparency, refraction, reflection, trace levels), [`encoding`] (gamma and
 //! rounding to bytes) and [`output`] (PNG file).
 
+pub mod antialias;
+pub mod atmosphere;
 pub mod camera;
 pub mod encoding;
+pub mod focal_blur;
 pub mod lights;
 pub mod output;
 pub mod pattern;
@@ -28,18 +31,22 @@ pub use output::write_png_atomic;
 
 use crate::geometry::World;
 use crate::scene::Scene;
+use antialias::{Antialias, Method};
 use camera::CameraRays;
 use encoding::OutputEncoding;
+use glam::DVec3;
 use rayon::prelude::*;
 use trace::Tracer;
 
-/// Size of the image to render.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Size of the image to render and how to sample it.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderOptions {
     /// Width in pixels.
     pub width: u32,
     /// Height in pixels.
     pub height: u32,
+    /// Anti-aliasing (`None`: one ray through each pixel centre).
+    pub antialias: Option<Antialias>,
 }
 
 /// A rendered image: 8-bit RGB, as POV-Ray writes its PNG.
@@ -68,6 +75,10 @@ impl Image {
 ///
 /// `progress(n)` is called, from worker threads, each time `n` more rows are finished. An
 /// image with a zero dimension (or too large to address) comes back empty.
+///
+/// Where a projection has no ray (outside a fisheye's circle, a degenerate camera) the
+/// pixel is black, as in POV-Ray. With focal blur every pixel is already a mean of many
+/// rays, and anti-aliasing options are not applied on top.
 pub fn render(
     scene: &Scene,
     world: &World,
@@ -91,28 +102,107 @@ pub fn render(
     }
     let camera = CameraRays::new(&scene.camera, width, height);
     let tracer = Tracer::new(scene, world);
-    let encoding = OutputEncoding::for_settings(&scene.settings);
-    let mut pixels = vec![[0u8; 3]; count];
-    pixels
-        .par_chunks_mut(width as usize)
-        .enumerate()
-        .for_each(|(row, line)| {
-            for (column, pixel) in line.iter_mut().enumerate() {
-                let colour = match camera.ray(column as u32, row as u32) {
-                    Some(ray) => tracer.trace_camera_ray(&ray),
-                    None => scene.background.rgb_vec(),
-                };
-                *pixel = [
-                    encoding.encode(colour.x),
-                    encoding.encode(colour.y),
-                    encoding.encode(colour.z),
+    let point = |x: f64, y: f64| {
+        camera
+            .ray_at(x, y)
+            .map_or(DVec3::ZERO, |ray| tracer.trace_camera_ray(&ray))
+    };
+    let blur = scene
+        .camera
+        .focal_blur
+        .as_ref()
+        .filter(|_| camera.has_focal_blur());
+    let first = |column: u32, row: u32| match blur {
+        Some(blur) => focal_blur::blurred_pixel(column, row, &camera, blur, &|ray| {
+            tracer.trace_camera_ray(ray)
+        }),
+        None => point(f64::from(column) + 0.5, f64::from(row) + 0.5),
+    };
+    let colours = match options.antialias.filter(|_| blur.is_none()) {
+        None => map_rows(width, height, Some(progress), |column, row| {
+            first(column, row)
+        }),
+        Some(aa) if aa.method == Method::NonRecursive => {
+            let centres = map_rows(width, height, None, first);
+            // Supersample in parallel every pixel the first samples alone mark; the scan
+            // below decides which are used and traces the few others it needs.
+            let likely = antialias::pixels_to_supersample(&centres, width as usize, aa.threshold);
+            let grid = |column: u32, row: u32| {
+                let index = row as usize * width as usize + column as usize;
+                antialias::grid_mean(column, row, centres[index], &aa, &point)
+            };
+            let prepared = map_rows(width, height, Some(progress), |column, row| {
+                let index = row as usize * width as usize + column as usize;
+                if likely[index] {
+                    grid(column, row)
+                } else {
+                    centres[index]
+                }
+            });
+            antialias::scan_supersample(&centres, width, aa.threshold, |index| {
+                if likely[index] {
+                    prepared[index]
+                } else {
+                    let (column, row) = (index % width as usize, index / width as usize);
+                    grid(column as u32, row as u32)
+                }
+            })
+        }
+        Some(aa) => {
+            // Pixel corners, shared between neighbouring pixels.
+            let corners = map_rows(width + 1, height + 1, None, |x, y| {
+                point(f64::from(x), f64::from(y))
+            });
+            let stride = width as usize + 1;
+            map_rows(width, height, Some(progress), |column, row| {
+                let at = |x: u32, y: u32| corners[y as usize * stride + x as usize];
+                let four = [
+                    at(column, row),
+                    at(column + 1, row),
+                    at(column, row + 1),
+                    at(column + 1, row + 1),
                 ];
-            }
-            progress(1);
-        });
+                antialias::recursive_mean(column, row, four, &aa, &point)
+            })
+        }
+    };
+    let encoding = OutputEncoding::for_settings(&scene.settings);
+    let pixels = colours
+        .iter()
+        .map(|colour| {
+            [
+                encoding.encode(colour.x),
+                encoding.encode(colour.y),
+                encoding.encode(colour.z),
+            ]
+        })
+        .collect();
     Image {
         width,
         height,
         pixels,
     }
+}
+
+/// `colour(column, row)` for every pixel of a `width` × `height` grid, rows in parallel;
+/// `progress` (when given) hears of each finished row.
+fn map_rows(
+    width: u32,
+    height: u32,
+    progress: Option<&(dyn Fn(u32) + Sync)>,
+    colour: impl Fn(u32, u32) -> DVec3 + Sync,
+) -> Vec<DVec3> {
+    let mut colours = vec![DVec3::ZERO; width as usize * height as usize];
+    colours
+        .par_chunks_mut(width.max(1) as usize)
+        .enumerate()
+        .for_each(|(row, line)| {
+            for (column, slot) in line.iter_mut().enumerate() {
+                *slot = colour(column as u32, row as u32);
+            }
+            if let Some(progress) = progress {
+                progress(1);
+            }
+        });
+    colours
 }

@@ -34,6 +34,7 @@ fn scene(objects: Vec<Object>, lights: Vec<LightSource>, settings: GlobalSetting
         lights,
         objects,
         background: Colour::BLACK,
+        atmosphere: Default::default(),
         settings,
     }
 }
@@ -75,6 +76,7 @@ fn centre_pixel(scene: &Scene) -> [u8; 3] {
     let options = RenderOptions {
         width: 3,
         height: 3,
+        antialias: None,
     };
     render(scene, &world, &options, &|_| {})
         .pixel(1, 1)
@@ -341,6 +343,7 @@ fn same_image_with_one_and_four_threads() {
     let options = RenderOptions {
         width: 48,
         height: 36,
+        antialias: None,
     };
     let render_with = |threads: usize| {
         rayon::ThreadPoolBuilder::new()
@@ -371,6 +374,7 @@ fn progress_counts_every_row() {
     let options = RenderOptions {
         width: 8,
         height: 7,
+        antialias: None,
     };
     let image = render(&busy, &world, &options, &|n| {
         rows.fetch_add(n, Ordering::Relaxed);
@@ -395,6 +399,7 @@ fn hostile_values_do_not_panic() {
         &RenderOptions {
             width: 4,
             height: 3,
+            antialias: None,
         },
         &|_| {},
     );
@@ -405,6 +410,7 @@ fn hostile_values_do_not_panic() {
         &RenderOptions {
             width: 0,
             height: 3,
+            antialias: None,
         },
         &|_| {},
     );
@@ -433,6 +439,7 @@ fn hostile_values_do_not_panic() {
         &RenderOptions {
             width: 5,
             height: 4,
+            antialias: None,
         },
         &|_| {},
     );

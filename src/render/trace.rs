@@ -38,6 +38,7 @@
 //!   0.4 · 0.7. (Not matched: in isolated tests a mirror seen that way reflects only up to
 //!   bailout (parent · max(T))² · reflection.)
 
+use super::atmosphere::AtmosphereShader;
 use super::encoding::is_legacy_scene;
 use super::lights::transmission;
 use super::pattern::pigment_colour;
@@ -118,7 +119,7 @@ pub struct Tracer<'a> {
     world: &'a World,
     max_trace_level: u32,
     adc_bailout: f64,
-    background: DVec3,
+    atmosphere: AtmosphereShader<'a>,
     legacy_opacity: bool,
 }
 
@@ -136,7 +137,7 @@ impl<'a> Tracer<'a> {
             world,
             max_trace_level: settings.max_trace_level.clamp(1, TRACE_LEVEL_LIMIT),
             adc_bailout,
-            background: scene.background.rgb_vec(),
+            atmosphere: AtmosphereShader::new(&scene.atmosphere, scene.background.rgb_vec()),
             legacy_opacity: is_legacy_scene(settings),
         }
     }
@@ -159,9 +160,22 @@ impl<'a> Tracer<'a> {
         // Product of the transmission of the surfaces passed so far without bending.
         let mut carried = DVec3::ONE;
         let mut colour = DVec3::ZERO;
+        // Where the stretch of the ray not yet passed through the atmosphere starts.
+        let mut segment_start = 0.0;
         for _ in 0..MAX_CONTINUATIONS {
-            let Some(hit) = self.world.first_hit(&ray, min_distance, f64::INFINITY) else {
-                return colour + carried * self.background;
+            let hit = self.world.first_hit(&ray, min_distance, f64::INFINITY);
+            if !self.atmosphere.is_clear() {
+                let start = ray.origin + ray.direction * segment_start;
+                let end = hit.as_ref().map_or(f64::INFINITY, |hit| hit.distance);
+                let (keep, add) = self
+                    .atmosphere
+                    .along(start, ray.direction, end - segment_start);
+                colour += carried * add;
+                carried *= keep;
+                segment_start = end;
+            }
+            let Some(hit) = hit else {
+                return colour + carried * self.atmosphere.sky(ray.direction);
             };
             let Some(material) = self.world.materials.get(hit.material as usize) else {
                 return colour;

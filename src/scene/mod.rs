@@ -3,9 +3,13 @@
 //! In: nothing (this is a data definition). Out: [`Scene`]. Holds: every value is final
 //! (defaults filled in, camera vectors resolved); no macros, identifiers or spans remain.
 
+mod atmosphere;
+mod camera;
 mod colour;
 mod transform;
 
+pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
+pub use camera::{Camera, CylinderKind, FocalBlur, Projection, DEFAULT_ANGLE};
 pub use colour::Colour;
 pub use transform::Transform;
 
@@ -23,6 +27,8 @@ pub struct Scene {
     pub objects: Vec<Object>,
     /// Colour seen by rays that hit nothing.
     pub background: Colour,
+    /// Fog, sky sphere and rainbows.
+    pub atmosphere: Atmosphere,
     /// `global_settings` and the language version that decides gamma handling.
     pub settings: GlobalSettings,
 }
@@ -56,46 +62,6 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
             noise_generator: crate::noise::NoiseGenerator::default(),
-        }
-    }
-}
-
-/// The kind of projection a camera makes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Projection {
-    /// Rays fan out from `location` through the image plane.
-    Perspective,
-    /// Parallel rays along `direction`; the image spans `right` by `up`.
-    Orthographic,
-}
-
-/// A camera with all vectors resolved (look_at, angle, sky and transformations applied).
-///
-/// A perspective ray through image coordinates (u, v) in [-0.5, 0.5] (v up) has direction
-/// `direction + u * right + v * up`, starting at `location`. An orthographic ray starts at
-/// `location + u * right + v * up` and runs along `direction`.
-#[derive(Clone, Debug)]
-pub struct Camera {
-    /// Projection type.
-    pub projection: Projection,
-    /// The eye point (centre of the image plane for orthographic).
-    pub location: DVec3,
-    /// From the eye to the centre of the image plane.
-    pub direction: DVec3,
-    /// The full width of the image plane (POV-Ray's default is `<1.33, 0, 0>`).
-    pub right: DVec3,
-    /// The full height of the image plane.
-    pub up: DVec3,
-}
-
-impl Default for Camera {
-    fn default() -> Self {
-        Camera {
-            projection: Projection::Perspective,
-            location: DVec3::ZERO,
-            direction: DVec3::Z,
-            right: DVec3::new(1.33, 0.0, 0.0),
-            up: DVec3::Y,
         }
     }
 }

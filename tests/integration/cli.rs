@@ -112,3 +112,68 @@ fn output_is_identical_for_any_thread_count() {
     }
     assert_eq!(images[0], images[1]);
 }
+
+#[test]
+fn antialiasing_options_render_deterministically() {
+    let dir = scratch("antialias");
+    let scene = dir.join("scene.pov");
+    std::fs::write(&scene, SMALL_SCENE).unwrap();
+    let render = |name: &str, extra: &[&str], threads: &str| {
+        let output = dir.join(name);
+        let status = durer()
+            .args(["render", path(&scene), "-o", path(&output)])
+            .args([
+                "--width",
+                "32",
+                "--height",
+                "24",
+                "--quiet",
+                "--threads",
+                threads,
+            ])
+            .args(extra)
+            .status()
+            .unwrap();
+        assert_eq!(status.code(), Some(0), "{extra:?}");
+        std::fs::read(output).unwrap()
+    };
+    let plain = render("plain.png", &[], "1");
+    let method1 = render("aa1.png", &["--antialias", "0.1", "--jitter", "1"], "1");
+    let method1_again = render("aa1b.png", &["--antialias", "0.1", "--jitter", "1"], "3");
+    assert_ne!(plain, method1);
+    assert_eq!(method1, method1_again, "jittered renders depend on threads");
+    let method2 = [
+        "--antialias",
+        "0.1",
+        "--aa-method",
+        "2",
+        "--aa-depth",
+        "2",
+        "--jitter",
+        "0",
+    ];
+    assert_ne!(render("aa2.png", &method2, "2"), method1);
+}
+
+#[test]
+fn bad_antialiasing_values_are_usage_errors() {
+    let dir = scratch("antialias-bad");
+    let scene = dir.join("scene.pov");
+    std::fs::write(&scene, SMALL_SCENE).unwrap();
+    for (flag, value, message) in [
+        ("--antialias", "3.5", "expected a number from 0 to 3"),
+        ("--antialias", "lots", "expected a number from 0 to 3"),
+        ("--aa-method", "3", "3 is not in 1..=2"),
+        ("--aa-depth", "0", "0 is not in 1..=9"),
+        ("--aa-depth", "10", "10 is not in 1..=9"),
+        ("--jitter", "2", "expected a number from 0 to 1"),
+    ] {
+        let result = durer()
+            .args(["render", path(&scene), flag, value])
+            .output()
+            .unwrap();
+        assert_eq!(result.status.code(), Some(2), "{flag} {value}");
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert!(stderr.contains(message), "{flag} {value}: {stderr}");
+    }
+}

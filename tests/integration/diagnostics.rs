@@ -201,3 +201,46 @@ fn noise_generator_out_of_range_is_refused() {
         &["the noise generator must be 0, 1, 2 or 3"],
     );
 }
+
+#[test]
+fn unknown_cylinder_camera_type_is_named() {
+    check(
+        "camera_cylinder_type",
+        2,
+        12,
+        &["unknown cylinder camera type 5", "expected 1, 2, 3 or 4"],
+    );
+}
+
+#[test]
+fn zero_blur_samples_are_refused() {
+    check(
+        "camera_blur_samples",
+        1,
+        56,
+        &["0 is not a number of samples", "at least 1"],
+    );
+}
+
+#[test]
+fn confidence_must_be_a_probability() {
+    check(
+        "camera_confidence",
+        1,
+        47,
+        &["confidence 1.5 is not a probability"],
+    );
+}
+
+#[test]
+fn unknown_fog_type_is_named() {
+    check(
+        "fog_type",
+        3,
+        12,
+        &[
+            "unknown fog_type 3",
+            "expected 1 (constant) or 2 (ground fog)",
+        ],
+    );
+}

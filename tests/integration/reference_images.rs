@@ -4,7 +4,9 @@
 //! `scripts/render-references.sh`) is rendered by the durer binary at the reference's size,
 //! and the two images are compared. A scene passes when at most 2% of its pixels differ by
 //! more than 24/255 in any channel; a line `// tolerance: 0.05` in the scene raises that
-//! fraction for scenes with inherent speckle. The test needs no POV-Ray installed.
+//! fraction for scenes with inherent speckle. A line `// povray-options: +A0.3 +AM2 +R3 -J`
+//! gives the anti-aliasing POV-Ray rendered the reference with; durer renders with the
+//! same options. The test needs no POV-Ray installed.
 //!
 //! Failing renders, the reference and a diff image (red: pixel over the threshold) are
 //! written to `target/reference-failures/`. Set `DURER_REFERENCE_FILTER=sphere` to run only
@@ -150,6 +152,45 @@ fn tolerance_override(source: &str) -> Result<Option<f64>, String> {
     Ok(None)
 }
 
+/// durer's command-line options for the scene's `// povray-options:` line (none without
+/// one); `Err` for a POV-Ray option that has no durer equivalent.
+fn durer_options(source: &str) -> Result<Vec<String>, String> {
+    let Some(line) = source
+        .lines()
+        .find_map(|line| line.trim().strip_prefix("// povray-options:"))
+    else {
+        return Ok(Vec::new());
+    };
+    let mut options = Vec::new();
+    let mut add = |flag: &str, value: &str| {
+        options.push(flag.to_string());
+        options.push(value.to_string());
+    };
+    for word in line.split_whitespace() {
+        if let Some(method) = word.strip_prefix("+AM") {
+            add("--aa-method", method);
+        } else if let Some(threshold) = word.strip_prefix("+A") {
+            add(
+                "--antialias",
+                if threshold.is_empty() {
+                    "0.3"
+                } else {
+                    threshold
+                },
+            );
+        } else if let Some(depth) = word.strip_prefix("+R") {
+            add("--aa-depth", depth);
+        } else if let Some(amount) = word.strip_prefix("+J") {
+            add("--jitter", if amount.is_empty() { "1" } else { amount });
+        } else if word == "-J" {
+            add("--jitter", "0");
+        } else if word != "-A" {
+            return Err(format!("povray option `{word}` has no durer equivalent"));
+        }
+    }
+    Ok(options)
+}
+
 /// The reference, darkened, with pixels over the threshold in red.
 fn diff_image(reference: &RgbImage, render: &RgbImage) -> RgbImage {
     RgbImage::from_fn(reference.width(), reference.height(), |x, y| {
@@ -173,7 +214,13 @@ struct Failure {
 }
 
 /// Runs durer with a timeout; returns the first line of stderr on failure.
-fn run_durer(scene: &Path, output: &Path, width: u32, height: u32) -> Result<(), String> {
+fn run_durer(
+    scene: &Path,
+    output: &Path,
+    width: u32,
+    height: u32,
+    options: &[String],
+) -> Result<(), String> {
     let mut child = Command::new(env!("CARGO_BIN_EXE_durer"))
         .arg("render")
         .arg(scene)
@@ -186,6 +233,7 @@ fn run_durer(scene: &Path, output: &Path, width: u32, height: u32) -> Result<(),
             &height.to_string(),
             "--quiet",
         ])
+        .args(options)
         .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
@@ -252,13 +300,20 @@ fn check_scene(
     let tolerance = tolerance_override(&source)
         .map_err(|note| fail(DEFAULT_TOLERANCE, None, note))?
         .unwrap_or(DEFAULT_TOLERANCE);
+    let options = durer_options(&source).map_err(|note| fail(tolerance, None, note))?;
     let reference = image::open(reference_png)
         .map_err(|error| fail(tolerance, None, format!("cannot read reference: {error}")))?
         .to_rgb8();
 
     let output = scratch.join(format!("{name}.png"));
-    run_durer(scene, &output, reference.width(), reference.height())
-        .map_err(|note| fail(tolerance, None, note))?;
+    run_durer(
+        scene,
+        &output,
+        reference.width(),
+        reference.height(),
+        &options,
+    )
+    .map_err(|note| fail(tolerance, None, note))?;
     let render = image::open(&output)
         .map_err(|error| {
             fail(
@@ -505,4 +560,26 @@ fn tolerance_comment_is_read() {
     );
     assert!(tolerance_override("// tolerance: lots\n").is_err());
     assert!(tolerance_override("// tolerance: 2\n").is_err());
+}
+
+#[test]
+fn povray_options_become_durer_options() {
+    let scene = "// povray-options: +A0.1 +AM2 +R4 -J\nsphere { 0, 1 }\n";
+    let expected = [
+        "--antialias",
+        "0.1",
+        "--aa-method",
+        "2",
+        "--aa-depth",
+        "4",
+        "--jitter",
+        "0",
+    ];
+    assert_eq!(durer_options(scene).unwrap(), expected);
+    assert_eq!(
+        durer_options("// povray-options: +A +J0.5\n").unwrap(),
+        ["--antialias", "0.3", "--jitter", "0.5"]
+    );
+    assert!(durer_options("sphere { 0, 1 }\n").unwrap().is_empty());
+    assert!(durer_options("// povray-options: +Q3\n").is_err());
 }

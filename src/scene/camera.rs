@@ -1,0 +1,116 @@
+//! The evaluated camera: projection type, resolved vectors and focal blur.
+//!
+//! In: nothing (data definition). Out: [`Camera`], [`Projection`], [`FocalBlur`]. Holds:
+//! vectors are final (look_at, angle, sky and transformations applied); angles in degrees.
+
+use glam::DVec3;
+
+/// The kind of projection a camera makes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Projection {
+    /// Rays fan out from `location` through the image plane.
+    Perspective,
+    /// Parallel rays along `direction`; the image spans `right` by `up`.
+    Orthographic,
+    /// Polar projection onto a circle: the distance from the image centre is the angle from
+    /// `direction` (`angle` across the circle).
+    Fisheye,
+    /// Like fisheye but onto a rectangle (`x²+y²+z² = x²y² + 1`).
+    UltraWideAngle,
+    /// A 180 degree fisheye squeezed vertically, as for Omnimax domes.
+    Omnimax,
+    /// Cylindrical equirectangular: 180 degrees across, 90 degrees high.
+    Panoramic,
+    /// Projection onto a cylinder; the number (1 to 4) is POV-Ray's cylinder type.
+    Cylinder(CylinderKind),
+    /// Rectangular longitude/latitude coordinates on a sphere.
+    Spherical,
+}
+
+/// The four cylindrical camera types of POV-Ray.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CylinderKind {
+    /// 1: vertical cylinder, fixed viewpoint.
+    VerticalFixed,
+    /// 2: horizontal cylinder, fixed viewpoint.
+    HorizontalFixed,
+    /// 3: vertical cylinder, viewpoint moving along the axis.
+    VerticalMoving,
+    /// 4: horizontal cylinder, viewpoint moving along the axis.
+    HorizontalMoving,
+}
+
+impl CylinderKind {
+    /// The kind for POV-Ray's `cylinder N` number; `None` outside 1 to 4.
+    pub fn from_number(number: f64) -> Option<CylinderKind> {
+        match number {
+            1.0 => Some(CylinderKind::VerticalFixed),
+            2.0 => Some(CylinderKind::HorizontalFixed),
+            3.0 => Some(CylinderKind::VerticalMoving),
+            4.0 => Some(CylinderKind::HorizontalMoving),
+            _ => None,
+        }
+    }
+}
+
+/// A camera with all vectors resolved (look_at, angle, sky and transformations applied).
+///
+/// A perspective ray through image coordinates (u, v) in [-0.5, 0.5] (v up) has direction
+/// `direction + u * right + v * up`, starting at `location`. An orthographic ray starts at
+/// `location + u * right + v * up` and runs along `direction`. The other projections are
+/// described in `render::camera`.
+#[derive(Clone, Debug)]
+pub struct Camera {
+    /// Projection type.
+    pub projection: Projection,
+    /// The eye point (centre of the image plane for orthographic).
+    pub location: DVec3,
+    /// From the eye to the centre of the image plane.
+    pub direction: DVec3,
+    /// The full width of the image plane (POV-Ray's default is `<1.33, 0, 0>`).
+    pub right: DVec3,
+    /// The full height of the image plane.
+    pub up: DVec3,
+    /// Horizontal viewing angle in degrees for the non-planar projections.
+    pub angle: f64,
+    /// Vertical viewing angle in degrees of the spherical camera.
+    pub vertical_angle: f64,
+    /// Depth of field, when `aperture` and `blur_samples` ask for it.
+    pub focal_blur: Option<FocalBlur>,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        Camera {
+            projection: Projection::Perspective,
+            location: DVec3::ZERO,
+            direction: DVec3::Z,
+            right: DVec3::new(1.33, 0.0, 0.0),
+            up: DVec3::Y,
+            angle: DEFAULT_ANGLE,
+            vertical_angle: DEFAULT_ANGLE / 2.0,
+            focal_blur: None,
+        }
+    }
+}
+
+/// POV-Ray's camera angle when the scene gives none.
+pub const DEFAULT_ANGLE: f64 = 90.0;
+
+/// Focal blur: rays start from points on a lens disc around the eye (its size set by
+/// `aperture`) and meet again on the plane of focus.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FocalBlur {
+    /// Size of the lens (POV-Ray's arbitrary unit; see `render::camera`).
+    pub aperture: f64,
+    /// A point on the plane of focus (the plane through it parallel to the image plane).
+    pub focal_point: DVec3,
+    /// Samples taken before the confidence test may stop sampling.
+    pub min_samples: u32,
+    /// Largest number of samples per pixel.
+    pub max_samples: u32,
+    /// Probability that the mean is within the variance when sampling stops (default 0.9).
+    pub confidence: f64,
+    /// Accepted variance of the samples' mean (default 1/128).
+    pub variance: f64,
+}

@@ -1,0 +1,4 @@
+fog {
+  distance 10
+  fog_type 3
+}

@@ -1,0 +1,12 @@
+// atmosphere_fog: constant fog (fog_type 1) with a distance of 8
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+background { rgb <0.5, 0.6, 0.8> }
+camera { location <0, 2, -5> look_at <0, 1, 2> angle 50 }
+light_source { <-5, 8, -6> rgb 1 }
+plane { y, 0 pigment { checker rgb <0.9, 0.9, 0.8> rgb <0.3, 0.4, 0.5> } }
+sphere { <0, 1, 2>, 1 pigment { rgb <0.9, 0.3, 0.2> } finish { phong 0.5 } }
+sphere { <-2.2, 0.7, 1>, 0.7 pigment { rgb <0.2, 0.6, 0.9> } }
+box { <1.5, 0, 0.5>, <2.7, 1.2, 1.7> pigment { rgb <0.3, 0.8, 0.3> } rotate y*20 }
+cylinder { <-1, 0, 5>, <-1, 3, 5>, 0.4 pigment { rgb <0.9, 0.8, 0.2> } }
+fog { distance 8 colour rgb <0.7, 0.7, 0.75> }
