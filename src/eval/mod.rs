@@ -8,12 +8,14 @@ mod appearance;
 mod builtins;
 mod expr;
 mod files;
+mod image_map;
 mod literals;
 mod macros;
 mod objects;
 mod pattern;
 mod shapes;
 mod stream;
+mod texture_maps;
 mod value;
 mod view;
 
