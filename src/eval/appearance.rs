@@ -351,7 +351,7 @@ impl Evaluator {
                 }
                 if head == "image_map" {
                     let mut body = Stream::new(block.body.clone());
-                    let image = self.eval_image_map(&mut body, block.head_span)?;
+                    let (image, _) = self.eval_image_map(&mut body, block.head_span)?;
                     pigment = Pigment::Image {
                         image: Arc::new(image),
                         transform: Transform::IDENTITY,

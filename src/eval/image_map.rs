@@ -17,12 +17,14 @@ use crate::scene::{ImageGamma, ImageMap, ImageProjection};
 use crate::syntax::ast::Item;
 
 impl Evaluator {
-    /// Reads an `image_map` or `bump_map` body (`head_span` is the block's keyword).
+    /// Reads an `image_map` or `bump_map` body (`head_span` is the block's keyword), with
+    /// the `bump_size` given inside it.
     pub(crate) fn eval_image_map(
         &mut self,
         stream: &mut Stream,
         head_span: Span,
-    ) -> EvalResult<ImageMap> {
+    ) -> EvalResult<(ImageMap, Option<f64>)> {
+        let mut bump_size = None;
         let mut format = RasterFormat::System;
         let mut file: Option<(String, Span)> = None;
         let mut projection = ImageProjection::Planar;
@@ -94,15 +96,7 @@ impl Evaluator {
                     }
                     "use_color" | "use_colour" => use_index = false,
                     "use_index" => use_index = true,
-                    "bump_size" => {
-                        // Handled by the normal that owns the bump map: durer takes the
-                        // amount from here.
-                        let _ = self.expect_float(stream, "a float")?;
-                        self.warn(
-                            *span,
-                            "`bump_size` inside `bump_map` is not supported yet; it is ignored",
-                        );
-                    }
+                    "bump_size" => bump_size = Some(self.expect_float(stream, "a float")?),
                     _ => return Err(self.unexpected_in(&item, "image_map")),
                 },
                 Item::Expr(expr) if file.is_none() => {
@@ -158,7 +152,7 @@ impl Evaluator {
                 ]
             })
             .collect();
-        Ok(ImageMap {
+        let image = ImageMap {
             width: raster.width,
             height: raster.height,
             pixels,
@@ -168,7 +162,8 @@ impl Evaluator {
             filter_all,
             transmit_all,
             use_index,
-        })
+        };
+        Ok((image, bump_size))
     }
 }
 

@@ -126,7 +126,7 @@ impl Evaluator {
             ))),
             "slope_map" => Value::Map(Rc::new(AppearanceMap::Slopes(self.eval_slope_map(stream)?))),
             "image_map" => {
-                let image = self.eval_image_map(stream, block.head_span)?;
+                let (image, _) = self.eval_image_map(stream, block.head_span)?;
                 Value::Pigment(Rc::new(Pigment::Image {
                     image: Arc::new(image),
                     transform: Transform::IDENTITY,
@@ -134,8 +134,10 @@ impl Evaluator {
             }
             _ => {
                 // bump_map on its own: a normal.
-                let image = self.eval_image_map(stream, block.head_span)?;
-                Value::Normal(Rc::new(Normal::new(NormalSource::BumpMap(Arc::new(image)))))
+                let (image, bump_size) = self.eval_image_map(stream, block.head_span)?;
+                let mut normal = Normal::new(NormalSource::BumpMap(Arc::new(image)));
+                normal.amount = bump_size.unwrap_or(1.0);
+                Value::Normal(Rc::new(normal))
             }
         })
     }
@@ -446,9 +448,10 @@ impl Evaluator {
                             }
                         }
                         "bump_map" => {
-                            let image = self.eval_image_map(&mut body, block.head_span)?;
+                            let (image, bump_size) =
+                                self.eval_image_map(&mut body, block.head_span)?;
                             let mut fresh = Normal::new(NormalSource::BumpMap(Arc::new(image)));
-                            fresh.amount = 1.0;
+                            fresh.amount = bump_size.unwrap_or(1.0);
                             normal = Some(fresh);
                             pattern_started = true;
                         }

@@ -11,6 +11,11 @@
 //!   the north pole (1).
 //! - 2 cylindrical: u is the angle around Y, v is y (one unit high).
 //! - 5 torus: u the angle around Y, v the angle around the tube of a unit major radius.
+//!
+//! Measured (planar maps, 16-bit output): pixel (column, row) covers
+//! `[column/width, (column+1)/width)` in u and rows count down from v = 1; `interpolate 2`
+//! is bilinear between the four nearest pixel centres; `interpolate 4` weights those four by
+//! the inverse square of the distance to each centre (in pixels).
 
 use crate::scene::{Colour, ImageMap, ImageProjection};
 use glam::DVec3;
@@ -71,8 +76,8 @@ fn image_coordinates(image: &ImageMap, point: DVec3) -> Option<(f64, f64)> {
     Some((u.rem_euclid(1.0), v.rem_euclid(1.0)))
 }
 
-/// The angle around the Y axis as a fraction of a turn, 0 on the -Z side... measured from
-/// the +X axis towards -Z... (POV-Ray's convention for image projections).
+/// The angle around the Y axis as a fraction of a turn, from the +X axis towards +Z
+/// (matches POV-Ray's spherical and cylindrical image maps).
 fn longitude(point: DVec3) -> f64 {
     (point.z.atan2(point.x) / TAU).rem_euclid(1.0)
 }
@@ -84,24 +89,35 @@ fn sample(image: &ImageMap, u: f64, v: f64) -> [f32; 4] {
     let x = u * width;
     let y = (1.0 - v) * height;
     if image.interpolation == 0 {
-        return pixel(image, x.floor() as i64, y.floor() as i64);
+        // v = 0 exactly gives the bottom row (y = height), as POV-Ray renders it.
+        let row = (y.floor() as i64).min(i64::from(image.height) - 1);
+        return pixel(image, x.floor() as i64, row);
     }
-    // Bilinear (and normalised distance, approximated by it) between pixel centres.
+    // Between the four nearest pixel centres.
     let x = x - 0.5;
     let y = y - 0.5;
     let (column, row) = (x.floor(), y.floor());
-    let (fx, fy) = ((x - column) as f32, (y - row) as f32);
+    let (fx, fy) = (x - column, y - row);
     let (column, row) = (column as i64, row as i64);
-    let corners = [
-        (pixel(image, column, row), (1.0 - fx) * (1.0 - fy)),
-        (pixel(image, column + 1, row), fx * (1.0 - fy)),
-        (pixel(image, column, row + 1), (1.0 - fx) * fy),
-        (pixel(image, column + 1, row + 1), fx * fy),
-    ];
+    let offsets = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)];
+    let mut weights = [0.0f64; 4];
+    for (weight, (dx, dy)) in weights.iter_mut().zip(offsets) {
+        *weight = if image.interpolation == 4 {
+            let squared = (fx - dx) * (fx - dx) + (fy - dy) * (fy - dy);
+            if squared == 0.0 {
+                return pixel(image, column + dx as i64, row + dy as i64);
+            }
+            1.0 / squared
+        } else {
+            (1.0 - (fx - dx).abs()) * (1.0 - (fy - dy).abs())
+        };
+    }
+    let total: f64 = weights.iter().sum();
     let mut result = [0.0f32; 4];
-    for (value, weight) in corners {
+    for (weight, (dx, dy)) in weights.iter().zip(offsets) {
+        let value = pixel(image, column + dx as i64, row + dy as i64);
         for (acc, channel) in result.iter_mut().zip(value) {
-            *acc += weight * channel;
+            *acc += (weight / total) as f32 * channel;
         }
     }
     result
