@@ -344,7 +344,7 @@ impl Evaluator {
             }
             Value::Interior(interior) => object.interior = Some(Rc::unwrap_or_clone(interior)),
             Value::Transform(t) => apply_transform(object, &t),
-            Value::Nothing => {} // a left-out block such as `normal { .. }`
+            Value::Nothing => {} // a left-out block such as `media { .. }`
             other => {
                 return Err(self
                     .error(
