@@ -16,6 +16,13 @@
 //! - bump scaling: s = |Fᵀ N| with F the pattern-to-world map, so scaling a pattern
 //!   uniformly keeps the bumps' steepness (`scale 2`: same picture; `scale <1,2,1>` on a
 //!   plane `y`: twice as steep; `scale <2,1,1>`: half). `no_bump_scale` makes s = 1.
+//! - the four samples lie at `point + accuracy · corner` (in pattern space) for the corners
+//!   of a regular tetrahedron with corners on +Y and towards +X: where bumps appear along a
+//!   pattern's discontinuity (the wrap of `gradient x`, checker edges) then matches POV-Ray
+//!   to a pixel. Block patterns (`checker`) are heights 0 on the first block, 1 on the
+//!   second (their value).
+//! - a reflected ray that a perturbed normal would send into the surface is mirrored about
+//!   the unperturbed normal instead (see `render::trace`).
 //! - the tilt is applied to the normal facing the viewer (the same picture from above and
 //!   below a plane lit from the viewer's side).
 //! - `normal_map`, block normals and `average`: the weighted sum of the entries' perturbed
@@ -32,8 +39,9 @@ const TILT_PER_SLOPE: f64 = 2.0 / 15.0;
 /// How far nested normals are followed.
 const MAX_NORMAL_NESTING: u32 = 64;
 
-/// Corners of a regular tetrahedron of unit circumradius, one on +Y: the sample directions
-/// of the numeric slope.
+/// Corners of a regular tetrahedron of unit circumradius, one on +Y and one on +X: the
+/// sample directions of the numeric slope (this orientation reproduces where POV-Ray's bumps
+/// appear along a pattern's discontinuities).
 const TETRAHEDRON: [DVec3; 4] = [
     DVec3::new(0.942809041582063, -1.0 / 3.0, 0.0),
     DVec3::new(-0.471404520791032, -1.0 / 3.0, 0.816496580927726),

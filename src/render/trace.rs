@@ -309,7 +309,7 @@ impl<'a> Tracer<'a> {
 
         // Mirror reflection.
         if reflection_weight.0 > 0.0 && reflection_weight.0 >= self.adc_bailout {
-            if let Some(direction) = mirror(ray.direction, normal).try_normalize() {
+            if let Some(direction) = reflected_direction(ray.direction, normal, facing) {
                 let reflected = Ray {
                     origin: hit.point,
                     direction,
@@ -320,6 +320,17 @@ impl<'a> Tracer<'a> {
         }
         shaded
     }
+}
+
+/// The mirror direction of `direction` about the (possibly perturbed) unit `normal`; when a
+/// perturbed normal would send it into the surface (against the geometric `facing` normal),
+/// the mirror direction about `facing` instead.
+fn reflected_direction(direction: DVec3, normal: DVec3, facing: DVec3) -> Option<DVec3> {
+    let reflected = mirror(direction, normal).try_normalize()?;
+    if reflected.dot(facing) < 0.0 {
+        return mirror(direction, facing).try_normalize();
+    }
+    Some(reflected)
 }
 
 /// A ray's importance for adaptive depth control: compared with `adc_bailout` before the
