@@ -1,19 +1,23 @@
 //! Appearance blocks: texture, pigment, finish, interior, colour maps and `#default`.
 
 use super::stream::Stream;
+use super::texture_maps::{layered, AppearanceMap, UnsupportedWord};
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{Colour, Finish, Interior, Pattern, Pigment, PigmentMap, Texture, Transform};
+use crate::scene::{
+    BlendMap, Colour, CompoundTexture, Finish, Interior, Pattern, Pigment, PigmentMap, Texture,
+    Transform,
+};
 use crate::syntax::ast::{BlockHead, Item};
 use glam::DVec3;
 use std::rc::Rc;
+use std::sync::Arc;
 
 /// Patterns POV-Ray has that durer does not render yet (they fall back to their first colour).
-const UNSUPPORTED_PATTERNS: &[&str] = &[
+pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &[
     "agate",
     "aoi",
-    "average",
     "boxed",
     "bozo",
     "brick",
@@ -27,7 +31,6 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
     "function",
     "granite",
     "hexagon",
-    "image_map",
     "image_pattern",
     "julia",
     "leopard",
@@ -56,68 +59,306 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
 ];
 
 impl Evaluator {
-    /// `texture { [Ident] pigment finish normal transforms }`.
+    /// `texture { [Ident] pigment normal finish transforms }`, or a pattern of whole
+    /// textures (`checker texture {..} texture {..}`, `PATTERN texture_map {..}`,
+    /// `average texture_map {..}`, `tiles {..}`).
     pub(crate) fn eval_texture(&mut self, stream: &mut Stream) -> EvalResult<Texture> {
         let mut texture = self.default_texture.clone();
+        // A pattern of whole textures, with its map once given.
+        let mut pattern: Option<(Pattern, Option<BlendMap<Texture>>, Span)> = None;
+        let mut pattern_transform = Transform::IDENTITY;
+        let mut average = false;
         while let Some(item) = self.next_item(stream)? {
+            if let Item::Keyword(word, span) = &item {
+                if &**word == "average" {
+                    average = true;
+                    continue;
+                }
+                if let Some(spec) = self.pattern_keyword(word, *span, stream)? {
+                    let blocks = match spec.block_count() {
+                        Some(count) => self.texture_block_list(stream, count)?,
+                        None => None,
+                    };
+                    pattern = Some((spec, blocks.map(BlendMap::Blocks), *span));
+                    pattern_transform = Transform::IDENTITY;
+                    continue;
+                }
+                if let Some((spec, _, _)) = &mut pattern {
+                    if self.pattern_modifier(word, *span, stream, spec)? {
+                        continue;
+                    }
+                }
+            }
+            if let Item::Block(block) = &item {
+                if let Some((spec, _, _)) = &mut pattern {
+                    if self.pattern_block(block, spec)? {
+                        continue;
+                    }
+                }
+            }
+            if let Item::Keyword(word, span) = &item {
+                match self.unsupported_pattern_word(word, *span, stream, "texture")? {
+                    UnsupportedWord::Other => {}
+                    UnsupportedWord::Modifier => continue,
+                    UnsupportedWord::Pattern(spec) => {
+                        let count = match &**word {
+                            "brick" => Some(2),
+                            "hexagon" => Some(3),
+                            _ => None,
+                        };
+                        let blocks = match count {
+                            Some(count) => self.texture_block_list(stream, count)?,
+                            None => None,
+                        };
+                        pattern = Some((spec, blocks.map(BlendMap::Blocks), *span));
+                        pattern_transform = Transform::IDENTITY;
+                        continue;
+                    }
+                }
+            }
             match &item {
                 Item::Keyword(word, span) => match &**word {
                     "translate" | "rotate" | "scale" | "matrix" | "transform" => {
                         let t = self.transform_keyword(word, *span, stream)?;
-                        transform_pigment(&mut texture.pigment, &t);
+                        if let Some((spec, map, _)) = &mut pattern {
+                            spec.note_transform(&t);
+                            pattern_transform = pattern_transform.then(&t);
+                            if let Some(map) = map {
+                                map.for_each_mut(|inner| inner.transform(&t));
+                            }
+                        }
+                        texture.transform(&t);
                     }
                     "uv_mapping" => {
                         self.warn(*span, "`uv_mapping` is not supported yet; it is ignored");
                     }
-                    w if w == "gradient" || w == "checker" || UNSUPPORTED_PATTERNS.contains(&w) => {
-                        self.warn(*span, format!("texture patterns (`{w}` in `texture`) are not supported yet; it is ignored"));
-                        if w == "gradient" {
-                            let _ = self.expect_value(stream, "a direction")?;
-                        }
-                    }
-                    "turbulence" | "octaves" | "omega" | "lambda" | "frequency" | "phase" => {
-                        self.warn(
-                            *span,
-                            format!("texture `{word}` is not supported yet; it is ignored"),
-                        );
-                        let _ = self.expect_value(stream, "a value")?;
-                    }
                     _ => return Err(self.unexpected_in(&item, "texture")),
                 },
                 Item::Block(block) => {
-                    if let BlockHead::Word(w) = &block.head {
-                        if &**w == "finish" {
-                            let mut body = Stream::new(block.body.clone());
+                    let head = match &block.head {
+                        BlockHead::Word(w) => w.clone(),
+                        _ => Rc::from(""),
+                    };
+                    let mut body = Stream::new(block.body.clone());
+                    match &*head {
+                        "finish" => {
                             texture.finish =
                                 self.eval_finish(&mut body, Some(texture.finish.clone()))?;
-                            continue;
                         }
-                    }
-                    match self.eval_block(block)? {
-                        Value::Pigment(p) => texture.pigment = Rc::unwrap_or_clone(p),
-                        Value::Transform(t) => transform_pigment(&mut texture.pigment, &t),
-                        Value::Nothing => {} // a left-out block such as `normal`
-                        _ => return Err(self.unexpected_in(&item, "texture")),
+                        "texture_map" => {
+                            let entries = self.eval_texture_map(&mut body)?;
+                            self.attach_texture_map(
+                                &mut pattern,
+                                entries,
+                                average,
+                                &mut texture,
+                                block.head_span,
+                            )?;
+                        }
+                        "tiles" => {
+                            let blocks = self.eval_tiles(&mut body, block.head_span)?;
+                            pattern = Some((
+                                Pattern::new(crate::pattern::PatternKind::Checker),
+                                Some(BlendMap::Blocks(blocks)),
+                                block.head_span,
+                            ));
+                            pattern_transform = Transform::IDENTITY;
+                        }
+                        "material_map" => {
+                            self.warn(
+                                block.head_span,
+                                "`material_map` is not supported yet; it is ignored",
+                            );
+                        }
+                        _ => match self.eval_block(block)? {
+                            Value::Pigment(p) => texture.pigment = Rc::unwrap_or_clone(p),
+                            Value::Normal(n) => texture.normal = Some(Rc::unwrap_or_clone(n)),
+                            Value::Transform(t) => texture.transform(&t),
+                            Value::Nothing => {}
+                            _ => return Err(self.unexpected_in(&item, "texture")),
+                        },
                     }
                 }
                 Item::Expr(expr) => match self.eval_expr(expr)? {
                     Value::Texture(t) => texture = (*t).clone(),
+                    Value::Map(map) => {
+                        if let AppearanceMap::Textures(entries) = &*map {
+                            let entries = entries.clone();
+                            self.attach_texture_map(
+                                &mut pattern,
+                                entries,
+                                average,
+                                &mut texture,
+                                expr.span(),
+                            )?;
+                        } else {
+                            return Err(self.unexpected_in(&item, "texture"));
+                        }
+                    }
                     _ => return Err(self.unexpected_in(&item, "texture")),
                 },
                 Item::Comma(_) => {}
                 _ => return Err(self.unexpected_in(&item, "texture")),
             }
         }
+        if let Some((spec, map, span)) = pattern {
+            let Some(map) = map else {
+                return Err(self
+                    .error(
+                        span,
+                        "a texture pattern needs a `texture_map` or its block textures",
+                    )
+                    .with_label("pattern without textures")
+                    .into());
+            };
+            texture.compound = Some(Arc::new(CompoundTexture::Pattern {
+                pattern: spec,
+                map,
+                transform: pattern_transform,
+            }));
+        }
         Ok(texture)
+    }
+
+    /// Stores a `texture_map`'s entries: into the pattern, or as an average.
+    fn attach_texture_map(
+        &mut self,
+        pattern: &mut Option<(Pattern, Option<BlendMap<Texture>>, Span)>,
+        entries: Vec<(f64, Texture)>,
+        average: bool,
+        texture: &mut Texture,
+        span: Span,
+    ) -> EvalResult<()> {
+        if average {
+            texture.compound = Some(Arc::new(CompoundTexture::Average(entries)));
+            return Ok(());
+        }
+        match pattern {
+            Some((_, map, _)) => {
+                *map = Some(BlendMap::Entries(entries));
+                Ok(())
+            }
+            None => Err(self
+                .error(span, "a `texture_map` needs a pattern before it")
+                .with_label("no pattern in this texture yet")
+                .into()),
+        }
+    }
+
+    /// The textures of a block pattern in a texture (`checker texture {..} texture {..}`);
+    /// `None` when none are given (a `texture_map` follows instead).
+    fn texture_block_list(
+        &mut self,
+        stream: &mut Stream,
+        count: usize,
+    ) -> EvalResult<Option<Vec<Texture>>> {
+        let mut blocks = Vec::new();
+        while blocks.len() < count {
+            self.skip_comma(stream)?;
+            match self.next_item(stream)? {
+                Some(Item::Block(block)) if matches!(&block.head, BlockHead::Word(w) if &**w == "texture") =>
+                {
+                    let mut body = Stream::new(block.body.clone());
+                    blocks.push(self.eval_texture(&mut body)?);
+                }
+                Some(Item::Expr(expr)) => match self.eval_expr(&expr)? {
+                    Value::Texture(t) => blocks.push(Texture::clone(&t)),
+                    _ => {
+                        stream.push_back(Item::Expr(expr));
+                        break;
+                    }
+                },
+                Some(other) => {
+                    stream.push_back(other);
+                    break;
+                }
+                None => break,
+            }
+        }
+        if blocks.is_empty() {
+            return Ok(None);
+        }
+        while blocks.len() < count {
+            blocks.push(self.default_texture.clone());
+        }
+        Ok(Some(blocks))
+    }
+
+    /// `tiles { texture {..}.. tile2 texture {..}.. }`: a checker of two (layered) textures,
+    /// the first where `checker` has its second colour (as POV-Ray renders it).
+    fn eval_tiles(&mut self, stream: &mut Stream, span: Span) -> EvalResult<Vec<Texture>> {
+        let mut tiles: [Vec<Texture>; 2] = [Vec::new(), Vec::new()];
+        let mut current = 0;
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, _) if &**word == "tile2" => current = 1,
+                Item::Block(block) if matches!(&block.head, BlockHead::Word(w) if &**w == "texture") =>
+                {
+                    let mut body = Stream::new(block.body.clone());
+                    let texture = self.eval_texture(&mut body)?;
+                    tiles[current].push(texture);
+                }
+                Item::Expr(expr) => match self.eval_expr(expr)? {
+                    Value::Texture(t) => tiles[current].push(Texture::clone(&t)),
+                    _ => return Err(self.unexpected_in(&item, "tiles")),
+                },
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "tiles")),
+            }
+        }
+        // POV-Ray puts the first tile where the checker pattern has its second block.
+        tiles.swap(0, 1);
+        let mut result = Vec::with_capacity(2);
+        for layers in tiles {
+            match layers.len() {
+                0 => {
+                    return Err(self
+                        .error(span, "`tiles` needs a texture before and after `tile2`")
+                        .with_label("missing tile texture")
+                        .into())
+                }
+                1 => result.extend(layers),
+                _ => result.push(layered(layers)),
+            }
+        }
+        Ok(result)
     }
 
     /// `pigment { .. }`: a solid colour, checker or gradient with a colour map.
     pub(crate) fn eval_pigment(&mut self, stream: &mut Stream) -> EvalResult<Pigment> {
         let mut pigment = self.default_texture.pigment.clone();
         let mut colour_map: Option<Vec<(f64, Colour)>> = None;
+        let mut average = false;
         let mut frequency = 1.0;
         let mut phase = 0.0;
         while let Some(item) = self.next_item(stream)? {
+            if let Item::Keyword(word, _) = &item {
+                if &**word == "average" {
+                    average = true;
+                    continue;
+                }
+            }
+            if let Item::Block(block) = &item {
+                let head = match &block.head {
+                    BlockHead::Word(w) => &**w,
+                    _ => "",
+                };
+                if head == "pigment_map" {
+                    let mut body = Stream::new(block.body.clone());
+                    let entries = self.eval_pigment_map(&mut body)?;
+                    self.attach_pigment_map(&mut pigment, entries, average, block.head_span)?;
+                    continue;
+                }
+                if head == "image_map" {
+                    let mut body = Stream::new(block.body.clone());
+                    let (image, _) = self.eval_image_map(&mut body, block.head_span)?;
+                    pigment = Pigment::Image {
+                        image: Arc::new(image),
+                        transform: Transform::IDENTITY,
+                    };
+                    continue;
+                }
+            }
             if let Item::Keyword(word, span) = &item {
                 if let Some(spec) = self.pattern_keyword(word, *span, stream)? {
                     let map = match spec.block_count() {
@@ -151,7 +392,7 @@ impl Evaluator {
                         if let Pigment::Pattern { pattern, .. } = &mut pigment {
                             pattern.note_transform(&t);
                         }
-                        transform_pigment(&mut pigment, &t);
+                        pigment.transform(&t);
                     }
                     "frequency" => frequency = self.expect_float(stream, "a float")?,
                     "phase" => phase = self.expect_float(stream, "a float")?,
@@ -225,7 +466,7 @@ impl Evaluator {
                     let value = self.eval_block(block)?;
                     match value {
                         Value::ColourMap(map) if is_colour_map => colour_map = Some((*map).clone()),
-                        Value::Transform(t) => transform_pigment(&mut pigment, &t),
+                        Value::Transform(t) => pigment.transform(&t),
                         Value::Pigment(p) => pigment = Rc::unwrap_or_clone(p),
                         Value::Nothing => {}
                         _ => return Err(self.unexpected_in(&item, "pigment")),
@@ -234,6 +475,12 @@ impl Evaluator {
                 Item::Expr(expr) => match self.eval_expr(expr)? {
                     Value::Pigment(p) => pigment = Rc::unwrap_or_clone(p),
                     Value::ColourMap(map) => colour_map = Some((*map).clone()),
+                    Value::Map(map) if matches!(&*map, AppearanceMap::Pigments(_)) => {
+                        if let AppearanceMap::Pigments(entries) = &*map {
+                            let entries = entries.clone();
+                            self.attach_pigment_map(&mut pigment, entries, average, expr.span())?;
+                        }
+                    }
                     value @ (Value::Colour(_) | Value::Float(_) | Value::Vector(_)) => {
                         pigment = Pigment::Solid(self.to_colour(value, expr.span())?)
                     }
@@ -260,6 +507,30 @@ impl Evaluator {
             }
         }
         Ok(pigment)
+    }
+
+    /// Stores a `pigment_map`'s entries: into the pigment's pattern, or as an average.
+    fn attach_pigment_map(
+        &mut self,
+        pigment: &mut Pigment,
+        entries: Vec<(f64, Pigment)>,
+        average: bool,
+        span: Span,
+    ) -> EvalResult<()> {
+        if average {
+            *pigment = Pigment::Average(entries);
+            return Ok(());
+        }
+        match pigment {
+            Pigment::Pattern { map, .. } => {
+                *map = PigmentMap::Pigments(entries);
+                Ok(())
+            }
+            _ => Err(self
+                .error(span, "a `pigment_map` needs a pattern before it")
+                .with_label("no pattern in this pigment yet")
+                .into()),
+        }
     }
 
     /// The optional pigments of a block pattern (`checker A, B`), POV-Ray's default
@@ -547,6 +818,7 @@ impl Evaluator {
                 Value::Texture(t) => texture = (*t).clone(),
                 Value::Pigment(p) => texture.pigment = Rc::unwrap_or_clone(p),
                 Value::Finish(f) => texture.finish = Rc::unwrap_or_clone(f),
+                Value::Normal(n) => texture.normal = Some(Rc::unwrap_or_clone(n)),
                 Value::Nothing => {}
                 _ => return Err(self.unexpected_in(&item, "#default")),
             }
@@ -559,16 +831,4 @@ impl Evaluator {
 /// POV-Ray's map for a pattern without one: black to white.
 fn grey_ramp() -> Vec<(f64, Colour)> {
     vec![(0.0, Colour::BLACK), (1.0, Colour::WHITE)]
-}
-
-/// Applies a transformation to a pigment's pattern space (nested block pigments too).
-pub(crate) fn transform_pigment(pigment: &mut Pigment, t: &Transform) {
-    if let Pigment::Pattern { transform, map, .. } = pigment {
-        *transform = transform.then(t);
-        if let PigmentMap::Blocks(blocks) = map {
-            for block in blocks {
-                transform_pigment(block, t);
-            }
-        }
-    }
 }

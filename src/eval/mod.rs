@@ -10,12 +10,14 @@ mod builtins;
 mod camera;
 mod expr;
 mod files;
+mod image_map;
 mod literals;
 mod macros;
 mod objects;
 mod pattern;
 mod shapes;
 mod stream;
+mod texture_maps;
 mod value;
 mod view;
 

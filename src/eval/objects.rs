@@ -2,6 +2,7 @@
 //! apply to them.
 
 use super::stream::Stream;
+use super::texture_maps::{change_top_layer, layered, top_layer_finish};
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
@@ -285,11 +286,11 @@ impl Evaluator {
                         return self.eval_clip_or_bound(object, w, block);
                     }
                     if &**w == "finish" {
-                        let base = self.object_texture(object);
+                        let mut texture = self.object_texture(object);
+                        let base = top_layer_finish(&texture).clone();
                         let mut body = Stream::new(block.body.clone());
-                        let finish = self.eval_finish(&mut body, Some(base.finish.clone()))?;
-                        let mut texture = base;
-                        texture.finish = finish;
+                        let finish = self.eval_finish(&mut body, Some(base))?;
+                        change_top_layer(&mut texture, |top| top.finish = finish);
                         object.texture = Some(Arc::new(texture));
                         return Ok(());
                     }
@@ -322,21 +323,28 @@ impl Evaluator {
     ) -> EvalResult<()> {
         match value {
             Value::Texture(texture) => self.attach_texture(object, (*texture).clone()),
+            Value::Normal(normal) => {
+                let mut texture = self.object_texture(object);
+                let mut normal = Rc::unwrap_or_clone(normal);
+                normal.transform(&object.transform.inverse());
+                change_top_layer(&mut texture, |top| top.normal = Some(normal));
+                object.texture = Some(Arc::new(texture));
+            }
             Value::Pigment(pigment) => {
                 let mut texture = self.object_texture(object);
                 let mut pigment = Rc::unwrap_or_clone(pigment);
-                localise_pigment(&mut pigment, &object.transform);
-                texture.pigment = pigment;
+                pigment.transform(&object.transform.inverse());
+                change_top_layer(&mut texture, |top| top.pigment = pigment);
                 object.texture = Some(Arc::new(texture));
             }
             Value::Finish(finish) => {
                 let mut texture = self.object_texture(object);
-                texture.finish = Rc::unwrap_or_clone(finish);
+                change_top_layer(&mut texture, |top| top.finish = Rc::unwrap_or_clone(finish));
                 object.texture = Some(Arc::new(texture));
             }
             Value::Interior(interior) => object.interior = Some(Rc::unwrap_or_clone(interior)),
             Value::Transform(t) => apply_transform(object, &t),
-            Value::Nothing => {} // a left-out block such as `normal { .. }`
+            Value::Nothing => {} // a left-out block such as `media { .. }`
             other => {
                 return Err(self
                     .error(
@@ -398,9 +406,15 @@ impl Evaluator {
     }
 
     /// Attaches a texture given in the object's outer space, re-expressing its patterns in
-    /// the object's local space so later transformations carry it along.
+    /// the object's local space so later transformations carry it along; layered on top of
+    /// a texture the object already has.
     fn attach_texture(&mut self, object: &mut Object, mut texture: Texture) {
-        localise_pigment(&mut texture.pigment, &object.transform);
+        texture.transform(&object.transform.inverse());
+        // POV-Ray lays a texture given to an object that has one on top of it.
+        let texture = match object.texture.take() {
+            Some(below) => layered(vec![Texture::clone(&below), texture]),
+            None => texture,
+        };
         object.texture = Some(Arc::new(texture));
     }
 
@@ -517,19 +531,6 @@ impl Evaluator {
             }
         }
         Ok((texture, interior))
-    }
-}
-
-/// Re-expresses a pigment's pattern transform in the local space of an object whose
-/// local-to-outer map is `object_transform`.
-fn localise_pigment(pigment: &mut crate::scene::Pigment, object_transform: &Transform) {
-    if let crate::scene::Pigment::Pattern { transform, map, .. } = pigment {
-        *transform = transform.then(&object_transform.inverse());
-        if let crate::scene::PigmentMap::Blocks(blocks) = map {
-            for block in blocks {
-                localise_pigment(block, object_transform);
-            }
-        }
     }
 }
 

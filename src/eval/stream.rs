@@ -279,12 +279,7 @@ impl Evaluator {
                 layers,
             } => {
                 let value = self.item_value(value)?;
-                if let Some(layer) = layers.first() {
-                    self.warn(
-                        layer.span,
-                        "layered textures are not supported yet; only the first layer is used",
-                    );
-                }
+                let value = self.layer_textures(value, layers)?;
                 self.assign(*local, target, value)?;
             }
             DirectiveKind::Undef(name, _) => self.undefine(name),

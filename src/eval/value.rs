@@ -1,7 +1,7 @@
 //! Runtime values of the scene language.
 
 use crate::scene::{
-    Camera, Colour, Finish, Interior, LightSource, Object, Pigment, Texture, Transform,
+    Camera, Colour, Finish, Interior, LightSource, Normal, Object, Pigment, Texture, Transform,
 };
 use crate::syntax::ast::{FunctionLiteral, MacroDefinition};
 use std::rc::Rc;
@@ -32,6 +32,10 @@ pub enum Value {
     Interior(Rc<Interior>),
     /// A colour map.
     ColourMap(Rc<Vec<(f64, Colour)>>),
+    /// A normal.
+    Normal(Rc<Normal>),
+    /// A pigment, normal, texture or slope map.
+    Map(Rc<super::texture_maps::AppearanceMap>),
     /// A transformation (boxed: it is large and rare).
     Transform(Rc<Transform>),
     /// A camera.
@@ -109,6 +113,8 @@ impl Value {
             Value::Finish(_) => "a finish",
             Value::Interior(_) => "an interior",
             Value::ColourMap(_) => "a colour map",
+            Value::Normal(_) => "a normal",
+            Value::Map(_) => "a map",
             Value::Transform(_) => "a transform",
             Value::Camera(_) => "a camera",
             Value::Light(_) => "a light source",

@@ -4,6 +4,7 @@
 use super::atmosphere::AtmosphericEffect;
 use super::camera::FocalBlurItems;
 use super::stream::Stream;
+use super::texture_maps::APPEARANCE_BLOCKS;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::did_you_mean;
@@ -31,7 +32,6 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "light_source",
     "material",
     "merge",
-    "normal",
     "object",
     "pigment",
     "plane",
@@ -69,8 +69,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "looks_like",
     "projected_through",
     "warp",
-    "image_map",
-    "bump_map",
     "material_map",
     "uv_vectors",
     "irid",
@@ -87,10 +85,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "ovus",
     "lemon",
     "density",
-    "pigment_map",
-    "normal_map",
-    "texture_map",
-    "slope_map",
     "interior_texture",
 ];
 
@@ -179,12 +173,8 @@ impl Evaluator {
             "material" => Ok(Value::Texture(std::sync::Arc::new(
                 self.eval_material(stream)?.0,
             ))),
-            "normal" => {
-                self.warn(
-                    block.head_span,
-                    "`normal` perturbation is not supported yet; it is ignored",
-                );
-                Ok(Value::Nothing)
+            _ if APPEARANCE_BLOCKS.contains(&head) => {
+                self.eval_appearance_block(head, block, stream)
             }
             _ if UNSUPPORTED_BLOCKS.contains(&head) => {
                 // Leave the feature out of the picture but say so, so the rest still renders.
@@ -198,7 +188,11 @@ impl Evaluator {
                 let mut d = self
                     .error(block.head_span, format!("unknown block keyword `{head}`"))
                     .with_label("not a POV-Ray block");
-                let candidates = BLOCK_KEYWORDS.iter().chain(UNSUPPORTED_BLOCKS).copied();
+                let candidates = BLOCK_KEYWORDS
+                    .iter()
+                    .chain(UNSUPPORTED_BLOCKS)
+                    .chain(APPEARANCE_BLOCKS)
+                    .copied();
                 if let Some(s) = did_you_mean(head, candidates) {
                     d = d.with_help(format!("did you mean `{s}`?"));
                 }

@@ -16,9 +16,7 @@ use super::instance::{MeshGeometry, MeshInstance};
 use super::leaf::{Leaf, LocalShape};
 use super::Material;
 use crate::accel::Aabb;
-use crate::scene::{
-    CsgOperation, Interior, Object, Pigment, PigmentMap, Shape, Texture, Transform,
-};
+use crate::scene::{CsgOperation, Interior, Object, Shape, Texture, Transform};
 use glam::DAffine3;
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -142,36 +140,11 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
     }
 }
 
-/// True when the pigment (or any pigment in its block map) uses a pattern.
-fn has_pattern(pigment: &Pigment) -> bool {
-    matches!(pigment, Pigment::Pattern { .. })
-}
-
-/// The pigment with every pattern transform re-expressed from owner-local to world space.
-fn pigment_to_world(pigment: &Pigment, world_from_owner: &Transform) -> Pigment {
-    if let Pigment::Pattern {
-        pattern,
-        map,
-        transform,
-    } = pigment
-    {
-        let map = match map {
-            PigmentMap::Blocks(blocks) => PigmentMap::Blocks(
-                blocks
-                    .iter()
-                    .map(|block| pigment_to_world(block, world_from_owner))
-                    .collect(),
-            ),
-            other => other.clone(),
-        };
-        Pigment::Pattern {
-            pattern: pattern.clone(),
-            map,
-            transform: transform.then(world_from_owner),
-        }
-    } else {
-        pigment.clone()
-    }
+/// The texture with every pattern transform re-expressed from owner-local to world space.
+fn texture_to_world(texture: &Texture, world_from_owner: &Transform) -> Texture {
+    let mut converted = texture.clone();
+    converted.transform(world_from_owner);
+    converted
 }
 
 /// POV-Ray's bounding box of `object` in its parent's space; `None` when infinite.
@@ -297,10 +270,8 @@ impl Builder {
     ) -> Appearance {
         let mut appearance = inherited.clone();
         if let Some(texture) = &object.texture {
-            if has_pattern(&texture.pigment) && *world_from_local != Transform::IDENTITY {
-                let mut converted = Texture::clone(texture);
-                converted.pigment = pigment_to_world(&texture.pigment, world_from_local);
-                appearance.texture = Arc::new(converted);
+            if texture.depends_on_position() && *world_from_local != Transform::IDENTITY {
+                appearance.texture = Arc::new(texture_to_world(texture, world_from_local));
                 appearance.texture_key = TextureKey::Owned(self.new_owner());
             } else {
                 appearance.texture = Arc::clone(texture);

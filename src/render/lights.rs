@@ -18,7 +18,7 @@
 //!   `max_trace_level`. `shadowless` lights are never blocked. Surfaces closer than 1e-3 to
 //!   the lit point are ignored.
 
-use super::pattern::pigment_colour;
+use super::texture::surface_pigment;
 use crate::geometry::{Ray, World};
 use crate::scene::{Colour, LightSource, Spotlight};
 use glam::DVec3;
@@ -116,7 +116,7 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
         let Some(material) = world.materials.get(hit.material as usize) else {
             return DVec3::ZERO;
         };
-        let pigment = pigment_colour(&material.texture.pigment, hit.point);
+        let pigment = surface_pigment(&material.texture, hit.point);
         filter *= transmission(pigment);
         if !filter.is_finite() || filter.abs().max_element() < 1e-12 {
             return DVec3::ZERO;

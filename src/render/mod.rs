@@ -8,7 +8,8 @@
 //! end as black pixels).
 //!
 //! Each module states the POV-Ray rules it implements and the renders they were measured
-//! from: [`camera`] (pixel to ray), [`pattern`] (checker, gradient, colour maps),
+//! from: [`camera`] (pixel to ray), [`pattern`] (pigments and their maps), [`normal`]
+//! (normal perturbation), [`texture`] (layered and patterned textures), [`image_map`],
 //! [`lights`] (fading, spotlights, shadows), [`shading`] (ambient, diffuse, highlights),
 //! [`trace`] (transparency, refraction, reflection, trace levels), [`encoding`] (gamma and
 //! rounding to bytes) and [`output`] (PNG file).
@@ -18,10 +19,13 @@ pub mod atmosphere;
 pub mod camera;
 pub mod encoding;
 pub mod focal_blur;
+pub mod image_map;
 pub mod lights;
+pub mod normal;
 pub mod output;
 pub mod pattern;
 pub mod shading;
+pub mod texture;
 pub mod trace;
 
 #[cfg(test)]

@@ -10,10 +10,12 @@
 //! - `gradient d`: the projection `v = p · d/|d|`; values above 1 wrap with `fmod(v, 1)`;
 //!   then POV-Ray's ramp wave `fmod(v, 1.00001)`, adding 1 when negative. So `x = 1` gives 1
 //!   (the last colour), `x = 2` gives 0, `x = -0.3` gives 0.7, `x = -2` gives 0.00001.
-//! - colour maps: below the first key the first colour, above the last key the last colour;
+//! - colour and pigment maps: below the first key the first colour, above the last key the last colour;
 //!   otherwise the first entry whose key is `>= v` and the entry before it are interpolated
 //!   linearly in all five components (so at a repeated key the earlier entry wins).
+//! - `average`: the weighted mean of the entries' colours (weights divided by their sum).
 
+use super::image_map::image_colour;
 use crate::scene::{Colour, Pigment, PigmentMap};
 use glam::DVec3;
 
@@ -27,6 +29,9 @@ pub fn pigment_colour(pigment: &Pigment, world_point: DVec3) -> Colour {
 
 /// Evaluates `pigment`, following nested pigments at most [`MAX_PIGMENT_NESTING`] deep.
 fn colour_at_depth(pigment: &Pigment, world_point: DVec3, depth: u32) -> Colour {
+    if depth >= MAX_PIGMENT_NESTING {
+        return Colour::BLACK;
+    }
     match pigment {
         Pigment::Solid(colour) => *colour,
         Pigment::Pattern {
@@ -34,9 +39,6 @@ fn colour_at_depth(pigment: &Pigment, world_point: DVec3, depth: u32) -> Colour 
             map,
             transform,
         } => {
-            if depth >= MAX_PIGMENT_NESTING {
-                return Colour::BLACK;
-            }
             let point = transform.point_to_inner(world_point);
             if !point.is_finite() {
                 return Colour::BLACK;
@@ -49,20 +51,37 @@ fn colour_at_depth(pigment: &Pigment, world_point: DVec3, depth: u32) -> Colour 
                 None => {
                     let value = pattern.value(point);
                     match map {
-                        PigmentMap::Colours(entries) => colour_map_lookup(entries, value),
                         PigmentMap::Blocks(blocks) => {
                             let index = spread_index(value, blocks.len());
                             block_colour(map, index, value, world_point, depth)
                         }
+                        _ => block_colour(map, 0, value, world_point, depth),
                     }
                 }
             }
         }
+        Pigment::Average(entries) => {
+            let total: f64 = entries.iter().map(|entry| entry.0).sum();
+            if total == 0.0 || !total.is_finite() {
+                return Colour::BLACK;
+            }
+            let mut sum = [0.0; 5];
+            for (weight, entry) in entries {
+                let colour = colour_at_depth(entry, world_point, depth + 1).to_array();
+                for (acc, component) in sum.iter_mut().zip(colour) {
+                    *acc += weight / total * component;
+                }
+            }
+            Colour::from_array(sum)
+        }
+        Pigment::Image { image, transform } => {
+            image_colour(image, transform.point_to_inner(world_point))
+        }
     }
 }
 
-/// The colour of block `index` of `map`; a colour map given to a block pattern is looked up
-/// at `value`.
+/// The colour `map` gives for block `index` (block maps) or for the pattern `value` (colour
+/// and pigment maps).
 fn block_colour(
     map: &PigmentMap,
     index: usize,
@@ -76,6 +95,26 @@ fn block_colour(
             None => Colour::BLACK,
         },
         PigmentMap::Colours(entries) => colour_map_lookup(entries, value),
+        PigmentMap::Pigments(entries) => {
+            let Some((low, high, fraction)) = blend_position(entries, value) else {
+                return Colour::BLACK;
+            };
+            let below = colour_at_depth(&entries[low].1, world_point, depth + 1);
+            if fraction == 0.0 {
+                return below;
+            }
+            let above = colour_at_depth(&entries[high].1, world_point, depth + 1);
+            below.lerp(above, fraction)
+        }
+    }
+}
+
+/// The block a pattern selects at a pattern-space point among `count` blocks: the pattern's
+/// own block for block patterns, else the value's share of [0, 1].
+pub fn block_index(pattern: &crate::scene::Pattern, point: DVec3, count: usize) -> usize {
+    match pattern.block_count() {
+        Some(_) => pattern.block(point),
+        None => spread_index(pattern.value(point), count),
     }
 }
 
@@ -92,24 +131,35 @@ fn spread_index(value: f64, count: usize) -> usize {
     }
 }
 
-/// Looks `value` up in sorted (key, colour) entries, interpolating between neighbours.
-pub fn colour_map_lookup(entries: &[(f64, Colour)], value: f64) -> Colour {
-    let Some(first) = entries.first() else {
-        return Colour::BLACK;
-    };
+/// Where `value` falls among the sorted keys of a map: the entries below and above it and
+/// how far it is from the one below (0 when only one entry applies). `None` for an empty map.
+///
+/// Below the first key the first entry applies, above the last key the last; otherwise the
+/// first entry whose key is `>= value` and the entry before it (at a repeated key the
+/// earlier entry wins).
+pub fn blend_position<T>(entries: &[(f64, T)], value: f64) -> Option<(usize, usize, f64)> {
+    let first = entries.first()?;
     if value.is_nan() || value <= first.0 {
-        return first.1;
+        return Some((0, 0, 0.0));
     }
     let Some(upper) = entries.iter().position(|entry| entry.0 >= value) else {
-        return entries[entries.len() - 1].1;
+        let last = entries.len() - 1;
+        return Some((last, last, 0.0));
     };
-    let (low_key, low_colour) = entries[upper - 1];
-    let (high_key, high_colour) = entries[upper];
-    let span = high_key - low_key;
+    let span = entries[upper].0 - entries[upper - 1].0;
     if span > 0.0 {
-        low_colour.lerp(high_colour, (value - low_key) / span)
+        Some((upper - 1, upper, (value - entries[upper - 1].0) / span))
     } else {
-        high_colour
+        Some((upper, upper, 0.0))
+    }
+}
+
+/// Looks `value` up in sorted (key, colour) entries, interpolating between neighbours.
+pub fn colour_map_lookup(entries: &[(f64, Colour)], value: f64) -> Colour {
+    match blend_position(entries, value) {
+        None => Colour::BLACK,
+        Some((low, _, 0.0)) => entries[low].1,
+        Some((low, high, fraction)) => entries[low].1.lerp(entries[high].1, fraction),
     }
 }
 

@@ -50,7 +50,11 @@ fn finish(ambient: f64, diffuse: f64) -> Finish {
 /// An object with a texture and, optionally, an index of refraction.
 fn textured(shape: Shape, pigment: Pigment, finish: Finish, ior: Option<f64>) -> Object {
     let mut object = Object::new(shape);
-    object.texture = Some(Arc::new(Texture { pigment, finish }));
+    object.texture = Some(Arc::new(Texture {
+        pigment,
+        finish,
+        ..Texture::default()
+    }));
     object.interior = ior.map(|ior| Interior { ior });
     object
 }
@@ -429,6 +433,7 @@ fn hostile_values_do_not_panic() {
                 brilliance: -3.0,
                 ..Finish::default()
             },
+            ..Texture::default()
         }));
         object.interior = Some(Interior { ior: 0.0 });
     }

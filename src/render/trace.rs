@@ -41,10 +41,12 @@
 use super::atmosphere::AtmosphereShader;
 use super::encoding::is_legacy_scene;
 use super::lights::transmission;
+use super::normal::perturbed_normal;
 use super::pattern::pigment_colour;
 use super::shading::{local_light, mirror, SurfaceSample};
+use super::texture::for_each_component;
 use crate::geometry::{Material, Ray, SurfaceHit, World};
-use crate::scene::Scene;
+use crate::scene::{Scene, Texture};
 use glam::DVec3;
 
 /// Camera, reflected and transmitted rays ignore surfaces closer than this to their start
@@ -195,7 +197,8 @@ impl<'a> Tracer<'a> {
     }
 
     /// The light leaving a surface towards the ray, and how the ray continues through it
-    /// when it passes without bending.
+    /// when it passes without bending: the blend of the shaded plain textures the material's
+    /// texture is made of (see [`for_each_component`]).
     fn shade(
         &self,
         ray: &Ray,
@@ -206,14 +209,54 @@ impl<'a> Tracer<'a> {
         media: &Media,
     ) -> Shaded {
         let texture = &material.texture;
+        if texture.compound.is_none() {
+            return self.shade_plain(ray, hit, material, texture, true, level, weight, media);
+        }
+        let mut total = Shaded {
+            colour: DVec3::ZERO,
+            continued: None,
+        };
+        for_each_component(texture, hit.point, &mut |plain, share, passes_light| {
+            let part = self.shade_plain(
+                ray,
+                hit,
+                material,
+                plain,
+                passes_light,
+                level,
+                weight,
+                media,
+            );
+            total.add(share, part);
+        });
+        total
+    }
+
+    /// [`Self::shade`] for one plain texture; `passes_light` false for an upper layer of a
+    /// layered texture (the layers below stand for what is seen through it).
+    #[allow(clippy::too_many_arguments)]
+    fn shade_plain(
+        &self,
+        ray: &Ray,
+        hit: &SurfaceHit,
+        material: &Material,
+        texture: &Texture,
+        passes_light: bool,
+        level: u32,
+        weight: RayWeight,
+        media: &Media,
+    ) -> Shaded {
         let pigment = pigment_colour(&texture.pigment, hit.point);
         let entering = ray.direction.dot(hit.normal) <= 0.0;
         let facing = if entering { hit.normal } else { -hit.normal };
-        let normal = if facing.is_finite() {
+        let mut normal = if facing.is_finite() {
             facing
         } else {
             -ray.direction
         };
+        if let Some(perturbation) = &texture.normal {
+            normal = perturbed_normal(perturbation, hit.point, normal);
+        }
         let sample = SurfaceSample {
             point: hit.point,
             normal,
@@ -244,7 +287,11 @@ impl<'a> Tracer<'a> {
         // Light coming through the surface.
         let mut reflection = texture.finish.reflection;
         let mut reflection_weight = weight.reflected(reflection);
-        let pass = transmission(pigment);
+        let pass = if passes_light {
+            transmission(pigment)
+        } else {
+            DVec3::ZERO
+        };
         let pass_weight = weight.transmitted(pass);
         let surface_passes = pass.dot(GREY_WEIGHTS) >= self.adc_bailout;
         if pass_weight.0 > 0.0 && pass_weight.0 >= self.adc_bailout && surface_passes {
@@ -276,7 +323,7 @@ impl<'a> Tracer<'a> {
 
         // Mirror reflection.
         if reflection_weight.0 > 0.0 && reflection_weight.0 >= self.adc_bailout {
-            if let Some(direction) = mirror(ray.direction, normal).try_normalize() {
+            if let Some(direction) = reflected_direction(ray.direction, normal, facing) {
                 let reflected = Ray {
                     origin: hit.point,
                     direction,
@@ -287,6 +334,17 @@ impl<'a> Tracer<'a> {
         }
         shaded
     }
+}
+
+/// The mirror direction of `direction` about the (possibly perturbed) unit `normal`; when a
+/// perturbed normal would send it into the surface (against the geometric `facing` normal),
+/// the mirror direction about `facing` instead.
+fn reflected_direction(direction: DVec3, normal: DVec3, facing: DVec3) -> Option<DVec3> {
+    let reflected = mirror(direction, normal).try_normalize()?;
+    if reflected.dot(facing) < 0.0 {
+        return mirror(direction, facing).try_normalize();
+    }
+    Some(reflected)
 }
 
 /// A ray's importance for adaptive depth control: compared with `adc_bailout` before the
@@ -316,6 +374,22 @@ struct Shaded {
     colour: DVec3,
     /// How the ray goes on when it passes the surface without bending.
     continued: Option<Continued>,
+}
+
+impl Shaded {
+    /// Adds `part` weighted by `share` (one component of a blended texture).
+    fn add(&mut self, share: DVec3, part: Shaded) {
+        self.colour += share * part.colour;
+        if let Some(part) = part.continued {
+            let continued = self.continued.get_or_insert(Continued {
+                filter: DVec3::ZERO,
+                weight: RayWeight(0.0),
+                media: part.media,
+            });
+            continued.filter += share * part.filter;
+            continued.weight = RayWeight(continued.weight.0.max(part.weight.0));
+        }
+    }
 }
 
 /// A ray passing a surface without bending.

@@ -6,11 +6,16 @@
 mod atmosphere;
 mod camera;
 mod colour;
+mod texture;
 mod transform;
 
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
 pub use camera::{Camera, CylinderKind, FocalBlur, Projection, DEFAULT_ANGLE};
 pub use colour::Colour;
+pub use texture::{
+    BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
+    Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
+};
 pub use transform::Transform;
 
 use glam::DVec3;
@@ -316,52 +321,6 @@ pub enum CsgOperation {
     Difference,
     /// A union without the surfaces that lie inside other children.
     Merge,
-}
-
-/// Surface appearance: pigment, finish and (later) normal perturbation.
-#[derive(Clone, Debug)]
-pub struct Texture {
-    /// Colour and transparency at each point.
-    pub pigment: Pigment,
-    /// How the surface reacts to light.
-    pub finish: Finish,
-}
-
-impl Default for Texture {
-    fn default() -> Self {
-        Texture {
-            pigment: Pigment::Solid(Colour::BLACK),
-            finish: Finish::default(),
-        }
-    }
-}
-
-/// A pigment: a colour function of position.
-// Pigments live inside shared textures, never in large arrays, so the size of the pattern
-// variant does not matter.
-#[allow(clippy::large_enum_variant)]
-#[derive(Clone, Debug)]
-pub enum Pigment {
-    /// The same colour everywhere.
-    Solid(Colour),
-    /// A pattern looked up through a map; the point is first mapped by `transform`'s
-    /// `inner_from_outer` (object local space to pattern space).
-    Pattern {
-        pattern: Pattern,
-        map: PigmentMap,
-        transform: Transform,
-    },
-}
-
-pub use crate::pattern::{PatternKind, PatternSpec as Pattern};
-
-/// What a pattern's value is looked up in.
-#[derive(Clone, Debug)]
-pub enum PigmentMap {
-    /// A colour map: sorted (value, colour) entries, interpolated.
-    Colours(Vec<(f64, Colour)>),
-    /// For block patterns (checker): one pigment per block.
-    Blocks(Vec<Pigment>),
 }
 
 /// POV-Ray's `finish` with its defaults.

@@ -244,3 +244,40 @@ fn unknown_fog_type_is_named() {
         ],
     );
 }
+
+#[test]
+fn missing_image_file_lists_the_folders_searched() {
+    check(
+        "missing_image",
+        2,
+        40,
+        &[
+            "image file \"no_such_image.png\" not found",
+            "searched:",
+            "diagnostics",
+        ],
+    );
+}
+
+#[test]
+fn map_entry_without_a_key_is_an_error() {
+    check(
+        "bad_map_entry",
+        2,
+        60,
+        &[
+            "a `pigment_map` entry starts with its key, a float",
+            "expected a float key",
+        ],
+    );
+}
+
+#[test]
+fn map_entry_with_only_a_key_is_an_error() {
+    check(
+        "empty_map_entry",
+        2,
+        28,
+        &["this `texture_map` entry has a key but nothing after it"],
+    );
+}

@@ -1,0 +1,183 @@
+//! `image_map { .. }` and `bump_map { .. }` bodies: the file, its projection and options.
+//!
+//! In: the body items. Out: an [`ImageMap`] with the pixels decoded and made linear.
+//! Holds: a missing or unreadable file is an error at the file name's span listing the
+//! folders searched.
+//!
+//! Gamma (POV-Ray 3.7): an image's stored values are decoded with the `gamma` given in the
+//! block (`gamma srgb` or a number), else with the sRGB transfer function, except for HDR
+//! files, which are linear already.
+
+use super::stream::Stream;
+use super::value::Value;
+use super::{EvalResult, Evaluator};
+use crate::diag::Span;
+use crate::raster::{load, RasterFormat};
+use crate::scene::{ImageGamma, ImageMap, ImageProjection};
+use crate::syntax::ast::Item;
+
+impl Evaluator {
+    /// Reads an `image_map` or `bump_map` body (`head_span` is the block's keyword), with
+    /// the `bump_size` given inside it.
+    pub(crate) fn eval_image_map(
+        &mut self,
+        stream: &mut Stream,
+        head_span: Span,
+    ) -> EvalResult<(ImageMap, Option<f64>)> {
+        let mut bump_size = None;
+        let mut format = RasterFormat::System;
+        let mut file: Option<(String, Span)> = None;
+        let mut projection = ImageProjection::Planar;
+        let mut once = false;
+        let mut interpolation = 0u8;
+        let mut filter_all = 0.0;
+        let mut transmit_all = 0.0;
+        let mut gamma: Option<ImageGamma> = None;
+        let mut use_index = false;
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, span) => match &**word {
+                    w if RasterFormat::from_keyword(w).is_some() && file.is_none() => {
+                        format = RasterFormat::from_keyword(w).unwrap_or(RasterFormat::System);
+                    }
+                    "map_type" => {
+                        let kind = self.expect_float(stream, "a map type")?;
+                        projection = match kind as i64 {
+                            0 => ImageProjection::Planar,
+                            1 => ImageProjection::Spherical,
+                            2 => ImageProjection::Cylindrical,
+                            5 => ImageProjection::Torus,
+                            _ => {
+                                return Err(self
+                                    .error(
+                                        *span,
+                                        format!("`map_type {kind}` is not one of 0, 1, 2 or 5"),
+                                    )
+                                    .with_label("unsupported map type")
+                                    .into())
+                            }
+                        };
+                    }
+                    "once" => once = true,
+                    "interpolate" => interpolation = self.expect_float(stream, "2 or 4")? as u8,
+                    "filter" | "transmit" => {
+                        let amount = match self.peek_item(stream)? {
+                            Some(Item::Keyword(all, _)) if &*all == "all" => {
+                                let _ = self.next_item(stream)?;
+                                Some(self.expect_float(stream, "a float")?)
+                            }
+                            _ => {
+                                let _index = self.expect_float(stream, "a palette index")?;
+                                let _ = self.expect_float(stream, "a float")?;
+                                self.warn(*span, format!("`{word}` of one palette entry is not supported yet; it is ignored"));
+                                None
+                            }
+                        };
+                        if let Some(amount) = amount {
+                            if &**word == "filter" {
+                                filter_all = amount;
+                            } else {
+                                transmit_all = amount;
+                            }
+                        }
+                    }
+                    "gamma" => {
+                        let (value, value_span) = self.expect_value(stream, "a gamma")?;
+                        let value = self.to_float(value, value_span)?;
+                        gamma = Some(if value > 0.0 {
+                            ImageGamma::Power(value)
+                        } else {
+                            ImageGamma::Srgb
+                        });
+                    }
+                    "srgb" => gamma = Some(ImageGamma::Srgb),
+                    "premultiplied" | "use_alpha" => {
+                        let _ = self.optional_bool(stream)?;
+                    }
+                    "use_color" | "use_colour" => use_index = false,
+                    "use_index" => use_index = true,
+                    "bump_size" => bump_size = Some(self.expect_float(stream, "a float")?),
+                    _ => return Err(self.unexpected_in(&item, "image_map")),
+                },
+                Item::Expr(expr) if file.is_none() => {
+                    let value = self.eval_expr(expr)?;
+                    match value {
+                        Value::String(name) => file = Some((name.to_string(), expr.span())),
+                        _ => return Err(self.unexpected_in(&item, "image_map")),
+                    }
+                }
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "image_map")),
+            }
+        }
+        let Some((name, name_span)) = file else {
+            return Err(self
+                .error(head_span, "this image map names no image file")
+                .with_label("expected a file name in quotes")
+                .into());
+        };
+        let path = match self.find_include(&name) {
+            Ok(path) => path,
+            Err(folders) => {
+                let searched: Vec<String> =
+                    folders.iter().map(|f| f.display().to_string()).collect();
+                return Err(self
+                    .error(name_span, format!("image file \"{name}\" not found"))
+                    .with_label("no such file")
+                    .with_help(format!("searched: {}", searched.join(", ")))
+                    .into());
+            }
+        };
+        let raster = load(&path, format).map_err(|message| {
+            self.error(
+                name_span,
+                format!("cannot read image \"{name}\": {message}"),
+            )
+            .with_label("unreadable image")
+        })?;
+        let decoding = match gamma {
+            Some(gamma) => gamma,
+            None if raster.high_dynamic_range => ImageGamma::Linear,
+            None => ImageGamma::Srgb,
+        };
+        let pixels = raster
+            .pixels
+            .iter()
+            .map(|&[r, g, b, a]| {
+                [
+                    linear(r, decoding),
+                    linear(g, decoding),
+                    linear(b, decoding),
+                    a,
+                ]
+            })
+            .collect();
+        let image = ImageMap {
+            width: raster.width,
+            height: raster.height,
+            pixels,
+            projection,
+            once,
+            interpolation,
+            filter_all,
+            transmit_all,
+            use_index,
+        };
+        Ok((image, bump_size))
+    }
+}
+
+/// A stored channel value turned into linear light.
+fn linear(value: f32, gamma: ImageGamma) -> f32 {
+    match gamma {
+        ImageGamma::Linear => value,
+        ImageGamma::Power(exponent) => value.max(0.0).powf(exponent as f32),
+        ImageGamma::Srgb => {
+            if value <= 0.04045 {
+                value / 12.92
+            } else {
+                ((value + 0.055) / 1.055).powf(2.4)
+            }
+        }
+    }
+}

@@ -1,0 +1,662 @@
+//! Maps of pigments, normals, textures and slopes, `normal { }` blocks, layered textures and
+//! the appearance blocks that may be declared on their own.
+//!
+//! In: the items of a map block (`pigment_map { [key P] .. }`), a `normal` body, the extra
+//! layers of a layered `#declare`. Out: sorted map entries, a [`Normal`], a layered
+//! [`Texture`]. Holds: bad entries (no key, a key that is not a float, nothing after the key,
+//! more than 256 entries) are errors at the entry's span.
+
+use super::appearance::UNSUPPORTED_PATTERNS;
+use super::stream::Stream;
+use super::value::Value;
+use super::{EvalResult, Evaluator};
+use crate::diag::Span;
+use crate::scene::{
+    BlendMap, CompoundTexture, Normal, NormalSource, Pattern, PatternKind, Pigment, SlopeEntry,
+    Texture, Transform,
+};
+use crate::syntax::ast::{Block, BlockHead, Item};
+use std::rc::Rc;
+use std::sync::Arc;
+
+/// POV-Ray's limit on the entries of one map.
+pub(crate) const MAX_MAP_ENTRIES: usize = 256;
+
+/// Appearance blocks evaluated here when they stand on their own (in a `#declare` or as an
+/// object modifier).
+pub(crate) const APPEARANCE_BLOCKS: &[&str] = &[
+    "normal",
+    "pigment_map",
+    "normal_map",
+    "texture_map",
+    "slope_map",
+    "image_map",
+    "bump_map",
+];
+
+/// A declared map: what `#declare M = pigment_map { .. }` (and friends) holds.
+#[derive(Clone, Debug)]
+pub enum AppearanceMap {
+    /// `pigment_map`.
+    Pigments(Vec<(f64, Pigment)>),
+    /// `normal_map`.
+    Normals(Vec<(f64, Normal)>),
+    /// `texture_map`.
+    Textures(Vec<(f64, Texture)>),
+    /// `slope_map`.
+    Slopes(Vec<SlopeEntry>),
+}
+
+/// What [`Evaluator::unsupported_pattern_word`] found.
+pub(crate) enum UnsupportedWord {
+    /// Not a pattern keyword or modifier durer leaves out.
+    Other,
+    /// A modifier, skipped.
+    Modifier,
+    /// A pattern durer cannot render yet: a stand-in with the value 0 everywhere (the first
+    /// entry of a map, no bumps).
+    Pattern(Pattern),
+}
+
+impl Evaluator {
+    /// Pattern keywords and modifiers durer does not render yet, inside `normal` and
+    /// `texture`: warns once and skips their operands.
+    pub(crate) fn unsupported_pattern_word(
+        &mut self,
+        word: &str,
+        span: Span,
+        stream: &mut Stream,
+        owner: &str,
+    ) -> EvalResult<UnsupportedWord> {
+        match word {
+            "turbulence" | "octaves" | "omega" | "lambda" | "frequency" | "phase"
+            | "agate_turb" => {
+                self.warn(
+                    span,
+                    format!("{owner} `{word}` is not supported yet; it is ignored"),
+                );
+                let _ = self.expect_value(stream, "a value")?;
+                Ok(UnsupportedWord::Modifier)
+            }
+            "ramp_wave" | "triangle_wave" | "sine_wave" | "scallop_wave" | "cubic_wave" => {
+                self.warn(
+                    span,
+                    format!("`{word}` is not supported yet; it is ignored"),
+                );
+                Ok(UnsupportedWord::Modifier)
+            }
+            "poly_wave" => {
+                self.warn(span, "`poly_wave` is not supported yet; it is ignored");
+                let _ = self.optional_bool(stream)?;
+                Ok(UnsupportedWord::Modifier)
+            }
+            w if UNSUPPORTED_PATTERNS.contains(&w) => {
+                self.warn(
+                    span,
+                    format!("pattern `{w}` in `{owner}` is not supported yet; it is left flat"),
+                );
+                if matches!(w, "mandel" | "julia" | "magnet") {
+                    let _ = self.expect_value(stream, "a value")?;
+                }
+                Ok(UnsupportedWord::Pattern(Pattern::new(
+                    PatternKind::Gradient(glam::DVec3::ZERO),
+                )))
+            }
+            _ => Ok(UnsupportedWord::Other),
+        }
+    }
+
+    /// Evaluates one of [`APPEARANCE_BLOCKS`].
+    pub(crate) fn eval_appearance_block(
+        &mut self,
+        head: &str,
+        block: &Block,
+        stream: &mut Stream,
+    ) -> EvalResult<Value> {
+        Ok(match head {
+            "normal" => Value::Normal(Rc::new(self.eval_normal(stream)?)),
+            "pigment_map" => Value::Map(Rc::new(AppearanceMap::Pigments(
+                self.eval_pigment_map(stream)?,
+            ))),
+            "normal_map" => Value::Map(Rc::new(AppearanceMap::Normals(
+                self.eval_normal_map(stream)?,
+            ))),
+            "texture_map" => Value::Map(Rc::new(AppearanceMap::Textures(
+                self.eval_texture_map(stream)?,
+            ))),
+            "slope_map" => Value::Map(Rc::new(AppearanceMap::Slopes(self.eval_slope_map(stream)?))),
+            "image_map" => {
+                let (image, _) = self.eval_image_map(stream, block.head_span)?;
+                Value::Pigment(Rc::new(Pigment::Image {
+                    image: Arc::new(image),
+                    transform: Transform::IDENTITY,
+                }))
+            }
+            _ => {
+                // bump_map on its own: a normal.
+                let (image, bump_size) = self.eval_image_map(stream, block.head_span)?;
+                let mut normal = Normal::new(NormalSource::BumpMap(Arc::new(image)));
+                normal.amount = bump_size.unwrap_or(1.0);
+                Value::Normal(Rc::new(normal))
+            }
+        })
+    }
+
+    /// `pigment_map { [key pigment-body] .. }`, or a declared one.
+    pub(crate) fn eval_pigment_map(
+        &mut self,
+        stream: &mut Stream,
+    ) -> EvalResult<Vec<(f64, Pigment)>> {
+        self.eval_map(
+            stream,
+            "pigment_map",
+            |this, body| this.eval_pigment(body),
+            |map| match map {
+                AppearanceMap::Pigments(entries) => Some(entries.clone()),
+                _ => None,
+            },
+        )
+    }
+
+    /// `normal_map { [key normal-body] .. }`, or a declared one.
+    pub(crate) fn eval_normal_map(
+        &mut self,
+        stream: &mut Stream,
+    ) -> EvalResult<Vec<(f64, Normal)>> {
+        self.eval_map(
+            stream,
+            "normal_map",
+            |this, body| this.eval_normal(body),
+            |map| match map {
+                AppearanceMap::Normals(entries) => Some(entries.clone()),
+                _ => None,
+            },
+        )
+    }
+
+    /// `texture_map { [key texture-body] .. }`, or a declared one.
+    pub(crate) fn eval_texture_map(
+        &mut self,
+        stream: &mut Stream,
+    ) -> EvalResult<Vec<(f64, Texture)>> {
+        self.eval_map(
+            stream,
+            "texture_map",
+            |this, body| this.eval_texture(body),
+            |map| match map {
+                AppearanceMap::Textures(entries) => Some(entries.clone()),
+                _ => None,
+            },
+        )
+    }
+
+    /// `slope_map { [key <height, slope>] .. }`, or a declared one.
+    pub(crate) fn eval_slope_map(&mut self, stream: &mut Stream) -> EvalResult<Vec<SlopeEntry>> {
+        let entries = self.eval_map(
+            stream,
+            "slope_map",
+            |this, body| {
+                let point = this.expect_vector(body, "`<height, slope>`")?;
+                this.expect_end(body, "slope_map entry")?;
+                Ok((point.x, point.y))
+            },
+            |map| match map {
+                AppearanceMap::Slopes(entries) => Some(
+                    entries
+                        .iter()
+                        .map(|e| (e.key, (e.height, e.slope)))
+                        .collect(),
+                ),
+                _ => None,
+            },
+        )?;
+        Ok(entries
+            .into_iter()
+            .map(|(key, (height, slope))| SlopeEntry { key, height, slope })
+            .collect())
+    }
+
+    /// The entries of a map block: `[key item]` entries whose item `parse_item` reads from
+    /// the rest of the entry, or an identifier holding a map of the same kind
+    /// (`declared` extracts its entries). Sorted by key.
+    fn eval_map<T>(
+        &mut self,
+        stream: &mut Stream,
+        what: &str,
+        parse_item: impl Fn(&mut Self, &mut Stream) -> EvalResult<T>,
+        declared: impl Fn(&AppearanceMap) -> Option<Vec<(f64, T)>>,
+    ) -> EvalResult<Vec<(f64, T)>> {
+        let mut entries: Vec<(f64, T)> = Vec::new();
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::MapEntry(inner, span) => {
+                    if entries.len() == MAX_MAP_ENTRIES {
+                        return Err(self
+                            .error(
+                                *span,
+                                format!("a `{what}` may have at most {MAX_MAP_ENTRIES} entries"),
+                            )
+                            .with_label("one entry too many")
+                            .into());
+                    }
+                    let mut body = Stream::new(inner.clone());
+                    let key = self.map_key(&mut body, *span, what)?;
+                    self.skip_comma(&mut body)?;
+                    if self.peek_item(&mut body)?.is_none() {
+                        return Err(self
+                            .error(
+                                *span,
+                                format!("this `{what}` entry has a key but nothing after it"),
+                            )
+                            .with_label("expected `[key item]`")
+                            .into());
+                    }
+                    entries.push((key, parse_item(self, &mut body)?));
+                }
+                Item::Expr(expr) => {
+                    let value = self.eval_expr(expr)?;
+                    match &value {
+                        Value::Map(map) => match declared(map) {
+                            Some(found) => entries = found,
+                            None => return Err(self.unexpected_in(&item, what)),
+                        },
+                        _ => return Err(self.unexpected_in(&item, what)),
+                    }
+                }
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, what)),
+            }
+        }
+        entries.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Ok(entries)
+    }
+
+    /// The key at the start of a map entry.
+    fn map_key(&mut self, body: &mut Stream, span: Span, what: &str) -> EvalResult<f64> {
+        match self.next_item(body)? {
+            Some(Item::Expr(expr)) => {
+                let value = self.eval_expr(&expr)?;
+                match value {
+                    Value::Float(key) => Ok(key),
+                    other => Err(self
+                        .error(
+                            expr.span(),
+                            format!(
+                                "a `{what}` entry starts with its key, a float, not {}",
+                                other.type_name()
+                            ),
+                        )
+                        .with_label("expected a float key")
+                        .into()),
+                }
+            }
+            Some(other) => Err(self
+                .error(
+                    other.span(),
+                    format!("a `{what}` entry starts with its key, a float"),
+                )
+                .with_label("expected a float key")
+                .into()),
+            None => Err(self
+                .error(span, format!("empty `{what}` entry"))
+                .with_label("expected `[key item]`")
+                .into()),
+        }
+    }
+
+    /// `normal { [N] PATTERN [bump_size] modifiers | bump_map {..} | average normal_map {..} }`.
+    pub(crate) fn eval_normal(&mut self, stream: &mut Stream) -> EvalResult<Normal> {
+        let mut normal = self.default_texture.normal.clone();
+        let mut average = false;
+        let mut pattern_started = false;
+        while let Some(item) = self.next_item(stream)? {
+            if let Item::Keyword(word, span) = &item {
+                if &**word == "average" {
+                    average = true;
+                    continue;
+                }
+                if let Some(spec) = self.pattern_keyword(word, *span, stream)? {
+                    let mut fresh = Normal::new(NormalSource::Pattern {
+                        pattern: spec.clone(),
+                        slope_map: None,
+                    });
+                    if let Some(count) = spec.block_count() {
+                        let blocks = self.normal_block_list(stream, count)?;
+                        if !blocks.is_empty() {
+                            fresh.source = NormalSource::Map {
+                                pattern: spec,
+                                map: BlendMap::Blocks(blocks),
+                            };
+                        }
+                    }
+                    if let Some(amount) = self.optional_amount(stream)? {
+                        fresh.amount = amount;
+                    }
+                    normal = Some(fresh);
+                    pattern_started = true;
+                    continue;
+                }
+                if let Some(Normal {
+                    source:
+                        NormalSource::Pattern { pattern, .. } | NormalSource::Map { pattern, .. },
+                    ..
+                }) = &mut normal
+                {
+                    if self.pattern_modifier(word, *span, stream, pattern)? {
+                        continue;
+                    }
+                }
+            }
+            if let Item::Block(block) = &item {
+                if let Some(Normal {
+                    source:
+                        NormalSource::Pattern { pattern, .. } | NormalSource::Map { pattern, .. },
+                    ..
+                }) = &mut normal
+                {
+                    if self.pattern_block(block, pattern)? {
+                        continue;
+                    }
+                }
+            }
+            if let Item::Keyword(word, span) = &item {
+                match self.unsupported_pattern_word(word, *span, stream, "normal")? {
+                    UnsupportedWord::Other => {}
+                    UnsupportedWord::Modifier => continue,
+                    UnsupportedWord::Pattern(pattern) => {
+                        let mut fresh = Normal::new(NormalSource::Pattern {
+                            pattern,
+                            slope_map: None,
+                        });
+                        if let Some(amount) = self.optional_amount(stream)? {
+                            fresh.amount = amount;
+                        }
+                        normal = Some(fresh);
+                        pattern_started = true;
+                        continue;
+                    }
+                }
+            }
+            match &item {
+                Item::Keyword(word, span) => match &**word {
+                    "translate" | "rotate" | "scale" | "matrix" | "transform" => {
+                        let t = self.transform_keyword(word, *span, stream)?;
+                        if let Some(normal) = &mut normal {
+                            if let NormalSource::Pattern { pattern, .. }
+                            | NormalSource::Map { pattern, .. } = &mut normal.source
+                            {
+                                pattern.note_transform(&t);
+                            }
+                            normal.transform(&t);
+                        }
+                    }
+                    "bump_size" => {
+                        let amount = self.expect_float(stream, "a float")?;
+                        if let Some(normal) = &mut normal {
+                            normal.amount = amount;
+                        }
+                    }
+                    "accuracy" => {
+                        let accuracy = self.expect_float(stream, "a float")?;
+                        if let Some(normal) = &mut normal {
+                            normal.accuracy = accuracy;
+                        }
+                    }
+                    "no_bump_scale" => {
+                        let on = self.optional_bool(stream)?;
+                        if let Some(normal) = &mut normal {
+                            normal.no_bump_scale = on;
+                        }
+                    }
+                    "uv_mapping" => {
+                        self.warn(*span, "`uv_mapping` is not supported yet; it is ignored");
+                    }
+                    _ => return Err(self.unexpected_in(&item, "normal")),
+                },
+                Item::Block(block) => {
+                    let head = match &block.head {
+                        BlockHead::Word(w) => w.clone(),
+                        _ => Rc::from(""),
+                    };
+                    let mut body = Stream::new(block.body.clone());
+                    match &*head {
+                        "normal_map" => {
+                            let entries = self.eval_normal_map(&mut body)?;
+                            normal = Some(self.normal_with_map(
+                                normal,
+                                entries,
+                                average,
+                                block.head_span,
+                            )?);
+                        }
+                        "slope_map" => {
+                            let entries = self.eval_slope_map(&mut body)?;
+                            match &mut normal {
+                                Some(Normal {
+                                    source: NormalSource::Pattern { slope_map, .. },
+                                    ..
+                                }) => *slope_map = Some(entries),
+                                _ => {
+                                    return Err(self
+                                        .error(
+                                            block.head_span,
+                                            "a `slope_map` needs a pattern before it",
+                                        )
+                                        .with_label("no pattern in this normal yet")
+                                        .into())
+                                }
+                            }
+                        }
+                        "bump_map" => {
+                            let (image, bump_size) =
+                                self.eval_image_map(&mut body, block.head_span)?;
+                            let mut fresh = Normal::new(NormalSource::BumpMap(Arc::new(image)));
+                            fresh.amount = bump_size.unwrap_or(1.0);
+                            normal = Some(fresh);
+                            pattern_started = true;
+                        }
+                        _ => match self.eval_block(block)? {
+                            Value::Normal(n) => normal = Some(Rc::unwrap_or_clone(n)),
+                            Value::Transform(t) => {
+                                if let Some(normal) = &mut normal {
+                                    normal.transform(&t);
+                                }
+                            }
+                            _ => return Err(self.unexpected_in(&item, "normal")),
+                        },
+                    }
+                }
+                Item::Expr(expr) => {
+                    let value = self.eval_expr(expr)?;
+                    match value {
+                        Value::Normal(n) => normal = Some(Rc::unwrap_or_clone(n)),
+                        Value::Map(map) if matches!(&*map, AppearanceMap::Normals(_)) => {
+                            if let AppearanceMap::Normals(entries) = &*map {
+                                normal = Some(self.normal_with_map(
+                                    normal,
+                                    entries.clone(),
+                                    average,
+                                    expr.span(),
+                                )?);
+                            }
+                        }
+                        Value::Float(amount) if pattern_started => {
+                            if let Some(normal) = &mut normal {
+                                normal.amount = amount;
+                            }
+                        }
+                        _ => return Err(self.unexpected_in(&item, "normal")),
+                    }
+                }
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "normal")),
+            }
+        }
+        match normal {
+            Some(normal) => Ok(normal),
+            None if average => Ok(Normal::new(NormalSource::Average(Vec::new()))),
+            None => Ok(Normal::new(NormalSource::Average(Vec::new()))),
+        }
+    }
+
+    /// The normal a `normal_map` turns `current` into: the map over its pattern, or an
+    /// average of the entries.
+    fn normal_with_map(
+        &mut self,
+        current: Option<Normal>,
+        entries: Vec<(f64, Normal)>,
+        average: bool,
+        span: Span,
+    ) -> EvalResult<Normal> {
+        if average {
+            return Ok(Normal::new(NormalSource::Average(entries)));
+        }
+        match current {
+            Some(Normal {
+                source: NormalSource::Pattern { pattern, .. } | NormalSource::Map { pattern, .. },
+                transform,
+                ..
+            }) => {
+                let mut normal = Normal::new(NormalSource::Map {
+                    pattern,
+                    map: BlendMap::Entries(entries),
+                });
+                normal.transform = transform;
+                Ok(normal)
+            }
+            _ => Err(self
+                .error(span, "a `normal_map` needs a pattern before it")
+                .with_label("no pattern in this normal yet")
+                .into()),
+        }
+    }
+
+    /// A float right after a normal's pattern: its bump size.
+    fn optional_amount(&mut self, stream: &mut Stream) -> EvalResult<Option<f64>> {
+        let mut item = self.next_item(stream)?;
+        if let Some(Item::Comma(_)) = item {
+            item = self.next_item(stream)?;
+        }
+        if let Some(Item::Expr(expr)) = &item {
+            if let Value::Float(amount) = self.eval_expr(expr)? {
+                return Ok(Some(amount));
+            }
+        }
+        if let Some(item) = item {
+            stream.push_back(item);
+        }
+        Ok(None)
+    }
+
+    /// The normals of a block pattern in a normal (`checker normal {..}, normal {..}`);
+    /// empty when none are given.
+    fn normal_block_list(&mut self, stream: &mut Stream, count: usize) -> EvalResult<Vec<Normal>> {
+        let mut blocks = Vec::new();
+        while blocks.len() < count {
+            self.skip_comma(stream)?;
+            let item = self.next_item(stream)?;
+            let normal = match &item {
+                Some(Item::Block(block)) if matches!(&block.head, BlockHead::Word(w) if &**w == "normal") => {
+                    match self.eval_block(block)? {
+                        Value::Normal(n) => Rc::unwrap_or_clone(n),
+                        _ => {
+                            return Err(self.unexpected_in(
+                                item.as_ref().unwrap_or(&Item::Comma(block.span)),
+                                "normal",
+                            ))
+                        }
+                    }
+                }
+                Some(Item::Expr(expr)) => {
+                    let value = self.eval_expr(expr)?;
+                    match value {
+                        Value::Normal(n) => Rc::unwrap_or_clone(n),
+                        _ => {
+                            stream.push_back(Item::Expr(expr.clone()));
+                            break;
+                        }
+                    }
+                }
+                Some(other) => {
+                    stream.push_back(other.clone());
+                    break;
+                }
+                None => break,
+            };
+            blocks.push(normal);
+        }
+        if !blocks.is_empty() {
+            while blocks.len() < count {
+                blocks.push(Normal::new(NormalSource::Average(Vec::new())));
+            }
+        }
+        Ok(blocks)
+    }
+
+    /// The texture a layered `#declare` (`T = texture {..} texture {..}`) makes of its first
+    /// value and the extra layers.
+    pub(crate) fn layer_textures(
+        &mut self,
+        first: Value,
+        layers: &[Rc<Block>],
+    ) -> EvalResult<Value> {
+        if layers.is_empty() {
+            return Ok(first);
+        }
+        let Value::Texture(bottom) = first else {
+            return Err(self
+                .error(layers[0].span, "only textures can be layered")
+                .with_label("a layer after something that is not a texture")
+                .into());
+        };
+        let mut stack = vec![Texture::clone(&bottom)];
+        for layer in layers {
+            match self.eval_block(layer)? {
+                Value::Texture(t) => stack.push(Texture::clone(&t)),
+                _ => return Err(self.error(layer.span, "expected a texture layer").into()),
+            }
+        }
+        Ok(Value::Texture(Arc::new(layered(stack))))
+    }
+}
+
+/// One texture made of layers (bottom first); layers that are layered themselves are
+/// flattened.
+pub(crate) fn layered(layers: Vec<Texture>) -> Texture {
+    let mut flat = Vec::with_capacity(layers.len());
+    for layer in layers {
+        match layer.compound.as_deref() {
+            Some(CompoundTexture::Layered(inner)) => flat.extend(inner.iter().cloned()),
+            _ => flat.push(layer),
+        }
+    }
+    Texture {
+        compound: Some(Arc::new(CompoundTexture::Layered(flat))),
+        ..Texture::default()
+    }
+}
+
+/// Applies `change` to the layer that `pigment`, `normal` and `finish` given to an object
+/// modify: the top layer of a layered texture, else the texture itself.
+pub(crate) fn change_top_layer(texture: &mut Texture, change: impl FnOnce(&mut Texture)) {
+    if let Some(compound) = texture.compound.as_mut() {
+        if let CompoundTexture::Layered(layers) = Arc::make_mut(compound) {
+            if let Some(top) = layers.last_mut() {
+                change(top);
+            }
+            return;
+        }
+    }
+    change(texture);
+}
+
+/// The finish of the layer [`change_top_layer`] changes.
+pub(crate) fn top_layer_finish(texture: &Texture) -> &crate::scene::Finish {
+    match texture.compound.as_deref() {
+        Some(CompoundTexture::Layered(layers)) => match layers.last() {
+            Some(top) => top_layer_finish(top),
+            None => &texture.finish,
+        },
+        _ => &texture.finish,
+    }
+}
