@@ -7,6 +7,8 @@
 //! leaves out (per-triangle textures, uv data) are warned about once and ignored.
 
 mod blob;
+mod function;
+mod isosurface;
 mod prism;
 mod text;
 

@@ -52,6 +52,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "blob",
     "superellipsoid",
     "sor",
+    "isosurface",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -73,7 +74,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "subsurface",
     "media_attenuation",
     "height_field",
-    "isosurface",
     "julia_fractal",
     "media",
     "parametric",
@@ -132,7 +132,7 @@ impl Evaluator {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
-            | "object" | "union" | "intersection" | "difference" | "merge" => {
+            | "isosurface" | "object" | "union" | "intersection" | "difference" | "merge" => {
                 Ok(match self.eval_object(head, block, stream)? {
                     Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,

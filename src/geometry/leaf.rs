@@ -11,6 +11,7 @@
 use super::blob::Blob;
 use super::extrusion::ExtrudedOutline;
 use super::flat::{Cuboid, Disc, Plane, Triangle};
+use super::isosurface::Isosurface;
 use super::lathe::Lathe;
 use super::poly::PolySurface;
 use super::polygon::{Polygon, SmoothTriangle};
@@ -62,6 +63,8 @@ pub enum LocalShape {
     Superellipsoid(Superellipsoid),
     /// A surface of revolution.
     Sor(Box<Sor>),
+    /// An isosurface.
+    Isosurface(Box<Isosurface>),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -133,6 +136,10 @@ impl LocalShape {
             Shape::Sor { ref points, open } => {
                 Sor::new(points, open).map(|s| Self::Sor(Box::new(s)))
             }
+            Shape::Isosurface(ref spec) => {
+                Isosurface::new(spec).map(|i| Self::Isosurface(Box::new(i)))
+            }
+            Shape::HeightField(_) | Shape::SphereSweep(_) => None,
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -197,6 +204,7 @@ impl LocalShape {
             LocalShape::Blob(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Superellipsoid(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Sor(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Isosurface(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -219,6 +227,7 @@ impl LocalShape {
             LocalShape::Blob(shape) => shape.inside(point),
             LocalShape::Superellipsoid(shape) => shape.inside(point),
             LocalShape::Sor(shape) => shape.inside(point),
+            LocalShape::Isosurface(shape) => shape.inside(point),
         }
     }
 
@@ -242,6 +251,7 @@ impl LocalShape {
             LocalShape::Blob(shape) => shape.normal(point),
             LocalShape::Superellipsoid(shape) => shape.normal(point),
             LocalShape::Sor(shape) => shape.normal(point, part),
+            LocalShape::Isosurface(shape) => shape.normal(point, part),
         }
     }
 
@@ -263,6 +273,7 @@ impl LocalShape {
             LocalShape::Blob(shape) => Some(shape.bounds()),
             LocalShape::Superellipsoid(shape) => Some(shape.bounds()),
             LocalShape::Sor(shape) => Some(shape.bounds()),
+            LocalShape::Isosurface(shape) => Some(shape.bounds()),
         }
     }
 

@@ -14,6 +14,7 @@ mod csg;
 mod extrusion;
 mod flat;
 mod instance;
+mod isosurface;
 mod lathe;
 mod leaf;
 mod poly;
@@ -35,6 +36,7 @@ mod test_support;
 #[cfg(test)]
 mod tests;
 
+pub use roots::MAX_ROOTS as MAX_CROSSINGS;
 pub use world::World;
 
 use crate::scene::{Interior, Texture};

@@ -4,9 +4,11 @@
 //! (defaults filled in, camera vectors resolved); no macros, identifiers or spans remain.
 
 mod colour;
+mod implicit;
 mod transform;
 
 pub use colour::Colour;
+pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
 pub use transform::Transform;
 
 use glam::DVec3;
@@ -245,6 +247,12 @@ pub enum Shape {
     /// `lathe { .. }`: a curve in the (radius, height) plane, as cubic Béziers of `<r, y>`
     /// points, turned around the Y axis.
     Lathe(Arc<Vec<[glam::DVec2; 4]>>),
+    /// `isosurface { .. }`: where a function equals its threshold.
+    Isosurface(Arc<Isosurface>),
+    /// `height_field { .. }`: a grid of heights over the unit square.
+    HeightField(Arc<HeightField>),
+    /// `sphere_sweep { .. }`: a sphere moved along a spline.
+    SphereSweep(Arc<SphereSweep>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,
