@@ -8,6 +8,7 @@
 
 mod blob;
 mod function;
+mod height_field;
 mod isosurface;
 mod prism;
 mod text;

@@ -53,6 +53,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "superellipsoid",
     "sor",
     "isosurface",
+    "height_field",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -73,7 +74,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "irid",
     "subsurface",
     "media_attenuation",
-    "height_field",
     "julia_fractal",
     "media",
     "parametric",
@@ -132,12 +132,11 @@ impl Evaluator {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
-            | "isosurface" | "object" | "union" | "intersection" | "difference" | "merge" => {
-                Ok(match self.eval_object(head, block, stream)? {
-                    Some(object) => Value::Object(std::sync::Arc::new(object)),
-                    None => Value::Nothing,
-                })
-            }
+            | "isosurface" | "height_field" | "object" | "union" | "intersection"
+            | "difference" | "merge" => Ok(match self.eval_object(head, block, stream)? {
+                Some(object) => Value::Object(std::sync::Arc::new(object)),
+                None => Value::Nothing,
+            }),
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
             "background" => {

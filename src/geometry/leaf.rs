@@ -11,6 +11,7 @@
 use super::blob::Blob;
 use super::extrusion::ExtrudedOutline;
 use super::flat::{Cuboid, Disc, Plane, Triangle};
+use super::height_field::HeightField;
 use super::isosurface::Isosurface;
 use super::lathe::Lathe;
 use super::poly::PolySurface;
@@ -65,6 +66,8 @@ pub enum LocalShape {
     Sor(Box<Sor>),
     /// An isosurface.
     Isosurface(Box<Isosurface>),
+    /// A height field.
+    HeightField(Box<HeightField>),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -139,7 +142,10 @@ impl LocalShape {
             Shape::Isosurface(ref spec) => {
                 Isosurface::new(spec).map(|i| Self::Isosurface(Box::new(i)))
             }
-            Shape::HeightField(_) | Shape::SphereSweep(_) => None,
+            Shape::HeightField(ref spec) => {
+                HeightField::new(spec).map(|h| Self::HeightField(Box::new(h)))
+            }
+            Shape::SphereSweep(_) => None,
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -205,6 +211,7 @@ impl LocalShape {
             LocalShape::Superellipsoid(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Sor(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Isosurface(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::HeightField(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -228,6 +235,7 @@ impl LocalShape {
             LocalShape::Superellipsoid(shape) => shape.inside(point),
             LocalShape::Sor(shape) => shape.inside(point),
             LocalShape::Isosurface(shape) => shape.inside(point),
+            LocalShape::HeightField(shape) => shape.inside(point),
         }
     }
 
@@ -252,6 +260,7 @@ impl LocalShape {
             LocalShape::Superellipsoid(shape) => shape.normal(point),
             LocalShape::Sor(shape) => shape.normal(point, part),
             LocalShape::Isosurface(shape) => shape.normal(point, part),
+            LocalShape::HeightField(shape) => shape.normal(point),
         }
     }
 
@@ -274,6 +283,7 @@ impl LocalShape {
             LocalShape::Superellipsoid(shape) => Some(shape.bounds()),
             LocalShape::Sor(shape) => Some(shape.bounds()),
             LocalShape::Isosurface(shape) => Some(shape.bounds()),
+            LocalShape::HeightField(shape) => Some(shape.bounds()),
         }
     }
 

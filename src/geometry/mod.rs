@@ -13,6 +13,7 @@ mod build;
 mod csg;
 mod extrusion;
 mod flat;
+mod height_field;
 mod instance;
 mod isosurface;
 mod lathe;

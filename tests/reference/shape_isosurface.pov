@@ -2,12 +2,12 @@
 // internal function (f_torus) in a sphere container, and an open container cutting a box
 // function.
 #version 3.7;
-#include "functions.inc"
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 3, -6> look_at <0, 0.6, 0> angle 55 }
 light_source { <-5, 8, -6> rgb 1 }
 light_source { <6, 4, -3> rgb 0.4 }
 plane { y, 0 pigment { rgb <0.8, 0.8, 0.7> } }
+#declare f_torus = function { internal(70) } // as functions.inc declares it
 #declare Radius = 0.8;
 #declare Wavy = function { sqrt(x*x + y*y + z*z) - Radius + 0.08 * sin(8 * x) * cos(6 * y) }
 isosurface {
