@@ -78,7 +78,7 @@ impl HeightField {
             entry = entry.max(first.min(second));
             exit = exit.min(first.max(second));
         }
-        if !(entry <= exit) || !entry.is_finite() || !exit.is_finite() {
+        if entry > exit || !entry.is_finite() || !exit.is_finite() {
             return;
         }
         // Walk the cells in grid coordinates.
