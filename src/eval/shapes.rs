@@ -11,6 +11,7 @@ mod function;
 mod height_field;
 mod isosurface;
 mod prism;
+mod sphere_sweep;
 mod text;
 
 use super::stream::Stream;

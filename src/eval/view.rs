@@ -54,6 +54,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "sor",
     "isosurface",
     "height_field",
+    "sphere_sweep",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -80,7 +81,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "photons",
     "rainbow",
     "sky_sphere",
-    "sphere_sweep",
     "spline",
     "ovus",
     "lemon",
@@ -132,11 +132,13 @@ impl Evaluator {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
-            | "isosurface" | "height_field" | "object" | "union" | "intersection"
-            | "difference" | "merge" => Ok(match self.eval_object(head, block, stream)? {
-                Some(object) => Value::Object(std::sync::Arc::new(object)),
-                None => Value::Nothing,
-            }),
+            | "isosurface" | "height_field" | "sphere_sweep" | "object" | "union"
+            | "intersection" | "difference" | "merge" => {
+                Ok(match self.eval_object(head, block, stream)? {
+                    Some(object) => Value::Object(std::sync::Arc::new(object)),
+                    None => Value::Nothing,
+                })
+            }
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
             "background" => {

@@ -20,6 +20,7 @@ use super::quadric::Quadric;
 use super::roots::Roots;
 use super::round::{Cone, Sphere};
 use super::sor::Sor;
+use super::sphere_sweep::SphereSweep;
 use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
 use super::Ray;
@@ -68,6 +69,8 @@ pub enum LocalShape {
     Isosurface(Box<Isosurface>),
     /// A height field.
     HeightField(Box<HeightField>),
+    /// A sphere sweep.
+    SphereSweep(Box<SphereSweep>),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -145,7 +148,9 @@ impl LocalShape {
             Shape::HeightField(ref spec) => {
                 HeightField::new(spec).map(|h| Self::HeightField(Box::new(h)))
             }
-            Shape::SphereSweep(_) => None,
+            Shape::SphereSweep(ref spec) => {
+                SphereSweep::new(spec).map(|s| Self::SphereSweep(Box::new(s)))
+            }
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -212,6 +217,7 @@ impl LocalShape {
             LocalShape::Sor(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Isosurface(shape) => shape.intersect(origin, direction, roots),
             LocalShape::HeightField(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::SphereSweep(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -236,6 +242,7 @@ impl LocalShape {
             LocalShape::Sor(shape) => shape.inside(point),
             LocalShape::Isosurface(shape) => shape.inside(point),
             LocalShape::HeightField(shape) => shape.inside(point),
+            LocalShape::SphereSweep(shape) => shape.inside(point),
         }
     }
 
@@ -261,6 +268,7 @@ impl LocalShape {
             LocalShape::Sor(shape) => shape.normal(point, part),
             LocalShape::Isosurface(shape) => shape.normal(point, part),
             LocalShape::HeightField(shape) => shape.normal(point),
+            LocalShape::SphereSweep(shape) => shape.normal(point),
         }
     }
 
@@ -284,6 +292,7 @@ impl LocalShape {
             LocalShape::Sor(shape) => Some(shape.bounds()),
             LocalShape::Isosurface(shape) => Some(shape.bounds()),
             LocalShape::HeightField(shape) => Some(shape.bounds()),
+            LocalShape::SphereSweep(shape) => Some(shape.bounds()),
         }
     }
 

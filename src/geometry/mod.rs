@@ -24,6 +24,7 @@ mod quadric;
 mod roots;
 mod round;
 mod sor;
+mod sphere_sweep;
 mod superellipsoid;
 mod torus;
 mod world;
