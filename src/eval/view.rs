@@ -55,11 +55,11 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "isosurface",
     "height_field",
     "sphere_sweep",
+    "bicubic_patch",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
 const UNSUPPORTED_BLOCKS: &[&str] = &[
-    "bicubic_patch",
     "fog",
     "bounded_by",
     "clipped_by",
@@ -132,8 +132,8 @@ impl Evaluator {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
-            | "isosurface" | "height_field" | "sphere_sweep" | "object" | "union"
-            | "intersection" | "difference" | "merge" => {
+            | "isosurface" | "height_field" | "sphere_sweep" | "bicubic_patch" | "object"
+            | "union" | "intersection" | "difference" | "merge" => {
                 Ok(match self.eval_object(head, block, stream)? {
                     Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,
