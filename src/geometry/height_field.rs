@@ -4,7 +4,7 @@
 //! In: a [`HeightField`](crate::scene::HeightField) (heights row by row from z = 0, smooth
 //! flag, water level). Out: crossings of a line (the line walks the grid cell by cell, nearest
 //! first), inside test (below the surface over the unit square), flat or interpolated normals,
-//! bounds from the water level (or 0) to the highest point. Holds: each cell from (x0, z0) to (x1, z1) is split
+//! bounds from the water level (or the lowest point) to the highest point, as POV-Ray's. Holds: each cell from (x0, z0) to (x1, z1) is split
 //! along the diagonal from (x1, z0) to (x0, z1), as POV-Ray splits it (measured with
 //! `trace`); crossings below the water level are dropped; nothing allocates.
 
@@ -21,6 +21,7 @@ pub struct HeightField {
     heights: Vec<f64>,
     smooth: bool,
     water_level: f64,
+    lowest: f64,
     highest: f64,
 }
 
@@ -36,12 +37,14 @@ impl HeightField {
             return None;
         }
         let highest = spec.heights.iter().copied().fold(0.0, f64::max);
+        let lowest = spec.heights.iter().copied().fold(highest, f64::min);
         Some(HeightField {
             columns: spec.columns,
             rows: spec.rows,
             heights: spec.heights.clone(),
             smooth: spec.smooth,
             water_level: spec.water_level,
+            lowest,
             highest,
         })
     }
@@ -62,7 +65,7 @@ impl HeightField {
     /// Pushes the crossings of the line `origin + t direction`, nearest first.
     pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
         // Clip the line to the grid's box.
-        let low = DVec3::new(0.0, 0.0, 0.0);
+        let low = DVec3::new(0.0, self.lowest, 0.0);
         let high = DVec3::new(1.0, self.highest, 1.0);
         let mut entry = f64::NEG_INFINITY;
         let mut exit = f64::INFINITY;
@@ -253,9 +256,9 @@ impl HeightField {
         DVec3::new(-slope_x, 1.0, -slope_z).normalize()
     }
 
-    /// Bounds: the unit square from the water level (or 0) to the highest point.
+    /// Bounds: the unit square from the water level (or the lowest point) to the highest.
     pub fn bounds(&self) -> Aabb {
-        let lowest = self.water_level.clamp(0.0, self.highest);
+        let lowest = self.water_level.clamp(self.lowest, self.highest);
         Aabb::from_points([
             DVec3::new(0.0, lowest, 0.0),
             DVec3::new(1.0, self.highest, 1.0),

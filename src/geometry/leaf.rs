@@ -309,6 +309,9 @@ impl LocalShape {
             LocalShape::SmoothTriangle(triangle) => {
                 Some(Aabb::from_points(triangle.corners().map(map)))
             }
+            // POV-Ray leaves a height field out of the box of a CSG intersection (measured with
+            // min_extent): its inside reaches down without limit.
+            LocalShape::HeightField(_) => None,
             _ => self
                 .bounds()
                 .map(|bounds| bounds.transformed(world_from_local)),
@@ -325,7 +328,8 @@ impl LocalShape {
             LocalShape::Plane(_)
             | LocalShape::Quadric(_)
             | LocalShape::Poly(_)
-            | LocalShape::Disc(_) => InsideReach::Unbounded,
+            | LocalShape::Disc(_)
+            | LocalShape::HeightField(_) => InsideReach::Unbounded,
             LocalShape::Blob(blob) if blob.inside_everywhere_far() => InsideReach::Unbounded,
             _ => InsideReach::Bounded,
         }

@@ -30,6 +30,8 @@ mod torus;
 mod world;
 
 #[cfg(test)]
+mod implicit_tests;
+#[cfg(test)]
 mod more_shape_tests;
 #[cfg(test)]
 mod shape_tests;
