@@ -371,10 +371,12 @@ impl Evaluator {
         call: &Call,
     ) -> EvalResult<Value> {
         let compiled = self.compile_function(function).map_err(|error| {
-            Box::new(
-                self.error(call.span, format!("`{}`: {}", call.name, error.message))
-                    .with_label("called here"),
-            )
+            let mut diagnostic = self
+                .error(call.span, format!("`{}`: {}", call.name, error.message))
+                .with_label("called here")
+                .with_secondary(error.span, "defined here");
+            diagnostic.help = error.help.clone();
+            Box::new(diagnostic)
         })?;
         if call.arguments.len() != compiled.arity() {
             return Err(self
