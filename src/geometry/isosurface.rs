@@ -6,7 +6,7 @@
 //! until it is shorter than `accuracy`, and dropped when the function values at its ends are
 //! too far from the threshold for a function whose slope stays under `max_gradient` to reach
 //! it in between. A too-low `max_gradient` therefore loses pieces of the surface, as in
-//! POV-Ray. Where the function is below the threshold on the container's boundary, the
+//! POV-Ray. A ray spends at most [`MAX_EVALUATIONS`] function values. Where the function is below the threshold on the container's boundary, the
 //! container's surface shows unless `open`. Nothing allocates.
 
 use super::roots::{Roots, MAX_ROOTS};
@@ -22,6 +22,9 @@ const FUNCTION_PART: u8 = 0;
 const CONTAINER_PART: u8 = 1;
 /// Deepest halving of a ray interval (far beyond any useful accuracy).
 const MAX_DEPTH: u32 = 60;
+/// Most function evaluations one ray may spend (a huge `max_gradient` with a tiny `accuracy`
+/// would otherwise take hours); past it the search gives up on the rest of the ray.
+const MAX_EVALUATIONS: u32 = 1 << 16;
 
 /// An isosurface in its local space.
 #[derive(Clone, Debug)]
@@ -40,11 +43,12 @@ struct Found {
     crossings: [(f64, u8); MAX_ROOTS],
     len: usize,
     limit: usize,
+    evaluations: u32,
 }
 
 impl Found {
     fn full(&self) -> bool {
-        self.len >= self.limit
+        self.len >= self.limit || self.evaluations >= MAX_EVALUATIONS
     }
 
     fn push(&mut self, distance: f64, part: u8) {
@@ -139,6 +143,7 @@ impl Isosurface {
             crossings: [(0.0, 0); MAX_ROOTS],
             len: 0,
             limit: self.max_trace,
+            evaluations: 0,
         };
         let start_value = at(start);
         if entry >= 0.0 && !self.open && start_value < 0.0 {
@@ -185,6 +190,7 @@ impl Isosurface {
         }
         let middle = 0.5 * (low + high);
         let middle_value = at(middle);
+        found.evaluations += 1;
         self.search(low, low_value, middle, middle_value, at, found, depth + 1);
         self.search(middle, middle_value, high, high_value, at, found, depth + 1);
     }

@@ -14,8 +14,8 @@ use crate::syntax::ast::Item;
 use glam::DVec3;
 use std::sync::Arc;
 
-/// Largest u_steps or v_steps (2^10 pieces per side is far beyond any visible difference).
-const MAX_STEPS: f64 = 10.0;
+/// Largest u_steps or v_steps (2^8 pieces per side is far beyond any visible difference).
+const MAX_STEPS: f64 = 8.0;
 
 impl Evaluator {
     /// Reads a bicubic patch and triangulates it.

@@ -19,7 +19,7 @@ use std::rc::Rc;
 use std::sync::Arc;
 
 /// Most grid points a height field may have (guards huge allocations).
-const GRID_LIMIT: f64 = 64e6;
+const GRID_LIMIT: f64 = 16e6;
 /// The 16-bit scale of POV-Ray's height values.
 const FULL_SCALE: f64 = 65535.0;
 /// Heights are 16-bit values divided by this.

@@ -12,7 +12,7 @@ use crate::syntax::ast::Item;
 use std::sync::Arc;
 
 /// Most spheres one sweep may list (guards huge allocations).
-const SPHERE_LIMIT: f64 = 1e6;
+const SPHERE_LIMIT: f64 = 1e5;
 
 impl Evaluator {
     /// Reads a sphere sweep's spline kind, spheres and tolerance.
