@@ -3,8 +3,9 @@
 //! In: the item stream after the brace. Out: a [`Shape::Mesh`] of smooth triangles: the Bézier
 //! patch split into 2^u_steps by 2^v_steps pieces, each piece two triangles through its
 //! corners on the surface with the surface's exact normals there. Holds: both types give
-//! the same surface; `flatness` only lets POV-Ray stop splitting early, so durer always
-//! splits fully (at least as fine as POV-Ray); uv data is ignored.
+//! the same surface; with a `flatness`, the split goes on evenly (up to 2^6 pieces a side)
+//! until every piece is that flat, where POV-Ray splits only the curved parts; uv data is
+//! ignored.
 
 use super::super::stream::Stream;
 use super::super::{EvalResult, Evaluator};
@@ -16,6 +17,8 @@ use std::sync::Arc;
 
 /// Largest u_steps or v_steps (2^8 pieces per side is far beyond any visible difference).
 const MAX_STEPS: f64 = 8.0;
+/// Most steps a `flatness` test may split to.
+const FLAT_STEPS: u32 = 6;
 
 impl Evaluator {
     /// Reads a bicubic patch and triangulates it.
@@ -27,6 +30,7 @@ impl Evaluator {
         let mut u_steps = 0.0;
         let mut v_steps = 0.0;
         let mut patch_type = None;
+        let mut flatness = 0.0;
         let mut points = Vec::with_capacity(16);
         while points.len() < 16 {
             let Some(item) = self.next_item(stream)? else {
@@ -47,7 +51,7 @@ impl Evaluator {
                         patch_type = Some(value);
                     }
                     "flatness" => {
-                        self.expect_float(stream, "the flatness")?;
+                        flatness = self.expect_float(stream, "the flatness")?;
                     }
                     "u_steps" | "v_steps" => {
                         let value = self.expect_float(stream, "the number of steps")?.floor();
@@ -96,7 +100,16 @@ impl Evaluator {
             Some(other) => stream.push_back(other),
             None => {}
         }
-        let triangles = triangulate(&controls, 1 << u_steps as u32, 1 << v_steps as u32);
+        let (mut u_steps, mut v_steps) = (u_steps as u32, v_steps as u32);
+        // With a flatness, POV-Ray keeps splitting curved parts past the steps given.
+        while flatness > 0.0
+            && (u_steps < FLAT_STEPS || v_steps < FLAT_STEPS)
+            && !flat_enough(&controls, 1 << u_steps, 1 << v_steps, flatness)
+        {
+            u_steps = (u_steps + 1).min(FLAT_STEPS.max(u_steps));
+            v_steps = (v_steps + 1).min(FLAT_STEPS.max(v_steps));
+        }
+        let triangles = triangulate(&controls, 1 << u_steps, 1 << v_steps);
         Ok(Shape::Mesh(Arc::new(Mesh {
             triangles,
             inside_vector: None,
@@ -135,6 +148,32 @@ fn evaluate(controls: &[DVec3; 16], u: f64, v: f64) -> (DVec3, DVec3) {
         }
     }
     (point, along_u.cross(along_v))
+}
+
+/// True when every piece of a `columns` by `rows` split is within `flatness` of the flat
+/// quadrilateral through its corners (checked at its centre and edge midpoints).
+fn flat_enough(controls: &[DVec3; 16], columns: usize, rows: usize, flatness: f64) -> bool {
+    let point = |u: f64, v: f64| evaluate(controls, u, v).0;
+    (0..rows).all(|row| {
+        (0..columns).all(|column| {
+            let (u0, u1) = (
+                column as f64 / columns as f64,
+                (column + 1) as f64 / columns as f64,
+            );
+            let (v0, v1) = (row as f64 / rows as f64, (row + 1) as f64 / rows as f64);
+            let (um, vm) = (0.5 * (u0 + u1), 0.5 * (v0 + v1));
+            let [a, b, c, d] = [point(u0, v0), point(u1, v0), point(u1, v1), point(u0, v1)];
+            [
+                (point(um, vm), (a + b + c + d) * 0.25),
+                (point(um, v0), (a + b) * 0.5),
+                (point(u1, vm), (b + c) * 0.5),
+                (point(um, v1), (c + d) * 0.5),
+                (point(u0, vm), (d + a) * 0.5),
+            ]
+            .iter()
+            .all(|(surface, flat)| surface.distance(*flat) <= flatness)
+        })
+    })
 }
 
 /// Two smooth triangles for each of `columns` by `rows` pieces of the patch.
