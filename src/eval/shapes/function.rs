@@ -398,3 +398,63 @@ impl Evaluator {
         Ok(Value::Float(compiled.eval(&arguments[..compiled.arity()])))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::eval::value::Value;
+    use crate::eval::{EvalOptions, Evaluator};
+
+    /// Every operator and built-in a compiled function knows, evaluated by the scene language
+    /// at a few points (stored in `Values`) and by the compiled function.
+    const SCENE: &str = r#"
+#declare C = 0.25;
+#declare V = <0.5, 2, 3>;
+#declare G = function(a, b) { a * b - C * V.y }
+#declare F = function {
+  G(x, y) + sin(3 * z) * (x < y ? 2 : -1) + select(x - 0.1, 1, 2, 3) + select(y, 4, 5)
+  + mod(z * 7, 2) + atan2(y, x) + pow(abs(x), 1.5) + max(x, y, z) + min(x, 2 * y)
+  + ln(2 + x) + log(3 + y) + floor(x * 3) + ceil(y * 3) + int(z * 2.5) + degrees(x)
+  + radians(y) + exp(z) + !(x > 0) + (x > 0 & y > 0) + (x < 0 | z > 0) + (x = y)
+  + (x != y) + (x <= 0.3) + (y >= -0.2) + sqrt(abs(z)) + cos(x) * tan(y / 2) + -x / 3
+  + asin(x / 2) + acos(y / 2) + atan(z) + sinh(x) + cosh(y) + tanh(z) + asinh(x)
+  + acosh(2 + y) + atanh(z / 2)
+}
+#declare Points = array[5] { <0.3, -0.2, 0.7>, <-0.5, 0.5, -0.1>, <0, 0, 0>,
+  <0.9, 0.4, -0.8>, <0.1, 0.1, 0.3> }
+#declare Values = array[5];
+#for (I, 0, 4)
+  #declare Values[I] = F(Points[I].x, Points[I].y, Points[I].z);
+#end
+"#;
+
+    #[test]
+    fn compiled_functions_equal_the_scene_languages_values() {
+        let folder = std::env::temp_dir().join(format!("durer-function-vm-{}", std::process::id()));
+        std::fs::create_dir_all(&folder).unwrap();
+        let path = folder.join("functions.pov");
+        std::fs::write(&path, SCENE).unwrap();
+        let mut evaluator = Evaluator::new(EvalOptions::default());
+        let result = evaluator.run_main(&path);
+        std::fs::remove_dir_all(&folder).ok();
+        assert!(result.is_ok(), "{:?}", result.err());
+        let Some(Value::Function(literal)) = evaluator.lookup("F").cloned() else {
+            panic!("F is not a function");
+        };
+        let compiled = evaluator.compile_function(&literal).unwrap();
+        let array = |name: &str| match evaluator.lookup(name) {
+            Some(Value::Array(array)) => array.elements.clone(),
+            _ => panic!("{name} is not an array"),
+        };
+        for (point, value) in array("Points").iter().zip(array("Values").iter()) {
+            let (Some(Value::Vector(point)), Some(Value::Float(expected))) = (point, value) else {
+                panic!("unexpected array contents");
+            };
+            let p = point.to_dvec3();
+            let found = compiled.eval(&[p.x, p.y, p.z]);
+            assert!(
+                (found - expected).abs() <= 1e-12 * expected.abs().max(1.0),
+                "at {p}: compiled {found}, scene language {expected}"
+            );
+        }
+    }
+}
