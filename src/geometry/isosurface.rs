@@ -5,9 +5,10 @@
 //! bounds. Holds: the root search is POV-Ray's: an interval of the ray is split in halves
 //! until it is shorter than `accuracy`, and dropped when the function values at its ends are
 //! too far from the threshold for a function whose slope stays under `max_gradient` to reach
-//! it in between. A too-low `max_gradient` therefore loses pieces of the surface, as in
-//! POV-Ray. A ray spends at most [`MAX_EVALUATIONS`] function values. Where the function is below the threshold on the container's boundary, the
-//! container's surface shows unless `open`. Nothing allocates.
+//! it in between. A too-low `max_gradient` therefore loses pieces of the surface or finds
+//! points past it, as in POV-Ray. A ray spends at most [`MAX_EVALUATIONS`] function values.
+//! Where the function is below the threshold on the container's boundary, the container's
+//! surface shows unless `open`. Nothing allocates.
 
 use super::roots::{Roots, MAX_ROOTS};
 use crate::accel::Aabb;
@@ -150,7 +151,38 @@ impl Isosurface {
             found.push(start, CONTAINER_PART);
         }
         let end_value = at(end);
-        self.search(start, start_value, end, end_value, &at, &mut found, 0);
+        // Each search looks for the next point on the other side of the surface from where
+        // it starts: the values are turned so that this side is positive.
+        let mut from = start;
+        let mut side = if start_value < 0.0 { -1.0 } else { 1.0 };
+        let mut from_value = side * start_value;
+        while !found.full() && from_value.is_finite() {
+            let turned = |distance: f64| side * at(distance);
+            let Some(crossing) = self.search(
+                from,
+                from_value,
+                end,
+                side * end_value,
+                &turned,
+                &mut found,
+                0,
+            ) else {
+                break;
+            };
+            // A crossing within `accuracy` of the ray's start is the surface a secondary ray
+            // leaves from; it must not use up `max_trace`.
+            if crossing > self.accuracy {
+                found.push(crossing, FUNCTION_PART);
+            }
+            if crossing >= end {
+                break;
+            }
+            // The crossing is on the surface: the search goes on from the other side.
+            side = -side;
+            from = crossing;
+            from_value = (side * at(crossing)).max(0.0);
+            found.evaluations += 1;
+        }
         if !self.open && end_value < 0.0 {
             found.push(end, CONTAINER_PART);
         }
@@ -159,7 +191,12 @@ impl Isosurface {
         }
     }
 
-    /// Finds the crossings between `low` and `high` in order, halving the interval.
+    /// POV-Ray's search for the first point where `value` (positive at `low`) is negative:
+    /// an interval is dropped when its end values are too large for a slope of
+    /// `max_gradient` to bring their sum to zero, otherwise halved, left half first, until it
+    /// is shorter than `accuracy`; then, if the value is negative at its far end, the answer
+    /// is the interpolated crossing (or the far end when both ends are negative). With a too-low `max_gradient` this drops real crossings, or finds a point past
+    /// the surface, as POV-Ray does.
     #[allow(clippy::too_many_arguments)]
     fn search(
         &self,
@@ -167,32 +204,54 @@ impl Isosurface {
         low_value: f64,
         high: f64,
         high_value: f64,
-        at: &impl Fn(f64) -> f64,
+        value: &impl Fn(f64) -> f64,
         found: &mut Found,
         depth: u32,
-    ) {
-        if found.full() || !(low_value.is_finite() && high_value.is_finite()) {
-            return;
+    ) -> Option<f64> {
+        if found.evaluations >= MAX_EVALUATIONS
+            || !(low_value.is_finite() && high_value.is_finite())
+        {
+            return None;
         }
         let span = high - low;
-        let changes_sign = (low_value < 0.0) != (high_value < 0.0);
-        if !changes_sign && low_value.abs() + high_value.abs() > self.max_gradient * span {
-            return;
+        if low_value + high_value > self.max_gradient * span {
+            return None;
         }
         if span <= self.accuracy || depth >= MAX_DEPTH {
-            let distance = low + span * (low_value / (low_value - high_value)).clamp(0.0, 1.0);
-            // A crossing within `accuracy` of the ray's start is the surface a secondary ray
-            // leaves from; it must not use up `max_trace`.
-            if changes_sign && distance > self.accuracy {
-                found.push(distance, FUNCTION_PART);
+            if high_value >= 0.0 {
+                return None;
             }
-            return;
+            // Where the interval brackets the surface, place the point on it (so secondary
+            // rays leave from outside); otherwise, as POV-Ray, take the far end.
+            return Some(if low_value >= 0.0 {
+                low + span * (low_value / (low_value - high_value))
+            } else {
+                high
+            });
         }
         let middle = 0.5 * (low + high);
-        let middle_value = at(middle);
+        let middle_value = value(middle);
         found.evaluations += 1;
-        self.search(low, low_value, middle, middle_value, at, found, depth + 1);
-        self.search(middle, middle_value, high, high_value, at, found, depth + 1);
+        self.search(
+            low,
+            low_value,
+            middle,
+            middle_value,
+            value,
+            found,
+            depth + 1,
+        )
+        .or_else(|| {
+            self.search(
+                middle,
+                middle_value,
+                high,
+                high_value,
+                value,
+                found,
+                depth + 1,
+            )
+        })
     }
 
     /// True when `point` is in the container and below the threshold.
