@@ -440,11 +440,7 @@ impl Evaluator {
         };
         if let FunctionBody::Expr(Expr::Call(inner)) = &function.body {
             if &*inner.name == "internal" {
-                return Err(self
-                    .error(call.span, format!("`{}` is one of POV-Ray's internal functions, not available yet", call.name))
-                    .with_label("called here")
-                    .with_help("functions.inc defines its f_* functions this way; they arrive with isosurfaces")
-                    .into());
+                return self.call_internal_function(function, call);
             }
         }
         if call.arguments.len() != names.len() {

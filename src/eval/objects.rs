@@ -105,6 +105,10 @@ impl Evaluator {
             "prism" => self.eval_prism(block.head_span, stream)?,
             "lathe" => self.eval_lathe(block.head_span, stream)?,
             "blob" => self.eval_blob(stream)?,
+            "isosurface" => self.eval_isosurface(block.head_span, stream)?,
+            "height_field" => self.eval_height_field(block.head_span, stream)?,
+            "sphere_sweep" => self.eval_sphere_sweep(block.head_span, stream)?,
+            "bicubic_patch" => self.eval_bicubic_patch(block.head_span, stream)?,
             "sor" => {
                 let count = self.expect_float(stream, "the number of points")?;
                 if !(0.0..=1e7).contains(&count) {

@@ -57,11 +57,14 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "blob",
     "superellipsoid",
     "sor",
+    "isosurface",
+    "height_field",
+    "sphere_sweep",
+    "bicubic_patch",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
 const UNSUPPORTED_BLOCKS: &[&str] = &[
-    "bicubic_patch",
     "bounded_by",
     "clipped_by",
     "photons",
@@ -74,13 +77,10 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "irid",
     "subsurface",
     "media_attenuation",
-    "height_field",
-    "isosurface",
     "julia_fractal",
     "media",
     "parametric",
     "photons",
-    "sphere_sweep",
     "spline",
     "ovus",
     "lemon",
@@ -128,7 +128,8 @@ impl Evaluator {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
-            | "object" | "union" | "intersection" | "difference" | "merge" => {
+            | "isosurface" | "height_field" | "sphere_sweep" | "bicubic_patch" | "object"
+            | "union" | "intersection" | "difference" | "merge" => {
                 Ok(match self.eval_object(head, block, stream)? {
                     Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,

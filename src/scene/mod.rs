@@ -7,6 +7,7 @@ mod atmosphere;
 mod camera;
 mod colour;
 mod texture;
+mod implicit;
 mod transform;
 
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
@@ -16,6 +17,7 @@ pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
     Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
 };
+pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
 pub use transform::Transform;
 
 use glam::DVec3;
@@ -219,6 +221,12 @@ pub enum Shape {
     /// `lathe { .. }`: a curve in the (radius, height) plane, as cubic Béziers of `<r, y>`
     /// points, turned around the Y axis.
     Lathe(Arc<Vec<[glam::DVec2; 4]>>),
+    /// `isosurface { .. }`: where a function equals its threshold.
+    Isosurface(Arc<Isosurface>),
+    /// `height_field { .. }`: a grid of heights over the unit square.
+    HeightField(Arc<HeightField>),
+    /// `sphere_sweep { .. }`: a sphere moved along a spline.
+    SphereSweep(Arc<SphereSweep>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,

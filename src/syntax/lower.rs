@@ -302,8 +302,10 @@ impl Lowerer {
         let span = self.span(&pair);
         let mut parameters = Vec::new();
         let mut body = FunctionBody::Items(Rc::from(Vec::new()));
+        let mut resolution = Vec::new();
         for p in pair.into_inner() {
             match p.as_rule() {
+                Rule::expr => resolution.push(self.expr(p)),
                 Rule::parameters => {
                     parameters = self.parameters(p).into_iter().map(|p| p.name).collect()
                 }
@@ -322,6 +324,7 @@ impl Lowerer {
         }
         FunctionLiteral {
             parameters,
+            resolution,
             body,
             span,
         }

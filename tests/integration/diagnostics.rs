@@ -281,3 +281,30 @@ fn map_entry_with_only_a_key_is_an_error() {
         &["this `texture_map` entry has a key but nothing after it"],
     );
 }
+
+#[test]
+fn missing_height_field_image_lists_the_folders_searched() {
+    check(
+        "missing_height_field",
+        1,
+        20,
+        &[
+            "height field image `no_such_height.png` not found",
+            "searched: ",
+        ],
+    );
+}
+
+#[test]
+fn unimplemented_internal_function_is_refused_where_called() {
+    check(
+        "unimplemented_internal",
+        2,
+        14,
+        &[
+            "`f_helix1`: POV-Ray's internal function 25 is not implemented in durer",
+            "called here",
+            "implemented: f_ellipsoid",
+        ],
+    );
+}
