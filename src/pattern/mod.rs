@@ -116,6 +116,8 @@ pub enum PatternKind {
     Marble,
     /// Concentric unit shells.
     Onion,
+    /// `pavement`: not supported yet; its value is 0 (the map's first entry).
+    Pavement,
     /// 1 on the x-z plane falling to 0 at distance 1.
     Planar,
     /// Rounded cubes.
@@ -327,7 +329,7 @@ impl PatternSpec {
             PatternKind::Crackle(settings) => noise_based::crackle(p, settings),
             PatternKind::Cylindrical => geometric::cylindrical(p),
             PatternKind::Dents => noise_based::dents(p, generator),
-            PatternKind::Facets { .. } => 0.0,
+            PatternKind::Facets { .. } | PatternKind::Pavement => 0.0,
             PatternKind::Fractal(fractal) => fractal.value(p.x, p.y),
             PatternKind::Gradient(direction) => geometric::gradient_raw(p, *direction),
             PatternKind::Granite => noise_based::granite(p, generator),

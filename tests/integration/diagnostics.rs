@@ -191,3 +191,13 @@ fn noise_generator_out_of_range_is_refused() {
         &["the noise generator must be 0, 1, 2 or 3"],
     );
 }
+
+#[test]
+fn agate_does_not_take_another_patterns_setting() {
+    check(
+        "agate_with_quilted_setting",
+        2,
+        30,
+        &["`control1` only applies to quilted"],
+    );
+}
