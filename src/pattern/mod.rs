@@ -278,25 +278,14 @@ impl PatternSpec {
     /// The point the raw pattern is evaluated at: through the warps and the
     /// transformations between them (last written first), then the classic turbulence.
     fn moved_point(&self, point: DVec3) -> DVec3 {
+        // `point` is in the innermost pattern space. Each warp's frame is that space moved by
+        // the transformations written before the warp, so the point is carried into the
+        // last warp's frame, warped, carried back into the previous warp's frame, and so on.
         let mut p = point;
-        if !self.warps.is_empty() {
-            // `point` is in the innermost frame; the last warp's frame is reached through
-            // everything written before it.
-            let mut frame_inner_point = p;
-            let mut current: Option<&Transform> = None;
-            for placed in self.warps.iter().rev() {
-                let in_frame = match current {
-                    None => placed.frame.point_to_outer(frame_inner_point),
-                    Some(previous) => placed
-                        .frame
-                        .point_to_outer(previous.point_to_inner(frame_inner_point)),
-                };
-                frame_inner_point = placed.warp.apply(in_frame, self.noise_generator);
-                current = Some(&placed.frame);
-            }
-            if let Some(first) = current {
-                p = first.point_to_inner(frame_inner_point);
-            }
+        for placed in self.warps.iter().rev() {
+            let in_frame = placed.frame.point_to_outer(p);
+            let warped = placed.warp.apply(in_frame, self.noise_generator);
+            p = placed.frame.point_to_inner(warped);
         }
         if self.turbulence.amount != DVec3::ZERO && !self.handles_own_turbulence() {
             p += self.turbulence.amount
