@@ -3,9 +3,9 @@
 //!
 //! In: a keyword (or block) already taken from the owner's item stream. Out: a
 //! [`PatternSpec`] or a modification of one. Holds: the owner (appearance.rs) parses maps,
-//! block lists and transforms; everything specific to one pattern is parsed here. The
-//! noise generator of a pattern without its own is the global one in force when the
-//! pattern is parsed.
+//! block lists and transforms; everything specific to one pattern is parsed here. A
+//! pattern without its own noise generator gets the global one in force when it is parsed
+//! (`PatternSpec::use_global_noise_generator` can apply a later one).
 
 use glam::{DVec2, DVec3};
 
@@ -105,7 +105,7 @@ impl Evaluator {
             _ => return Ok(None),
         };
         let mut pattern = PatternSpec::new(kind);
-        pattern.noise_generator = self.settings.noise_generator;
+        pattern.use_global_noise_generator(self.settings.noise_generator);
         Ok(Some(pattern))
     }
 
@@ -138,11 +138,16 @@ impl Evaluator {
                 };
                 pattern.wave.shape = WaveShape::Poly(exponent);
             }
-            "noise_generator" => {
-                pattern.noise_generator = self
-                    .expect_noise_generator(stream)?
-                    .unwrap_or(self.settings.noise_generator)
-            }
+            "noise_generator" => match self.expect_noise_generator(stream)? {
+                Some(generator) => {
+                    pattern.noise_generator = generator;
+                    pattern.own_noise_generator = true;
+                }
+                None => {
+                    pattern.own_noise_generator = false;
+                    pattern.use_global_noise_generator(self.settings.noise_generator);
+                }
+            },
             _ => return self.pattern_setting(word, span, stream, pattern),
         }
         Ok(true)

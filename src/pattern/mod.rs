@@ -45,9 +45,11 @@ pub struct PatternSpec {
     pub turbulence: ClassicTurbulence,
     /// Warps in the order written, each with the transformations written before it.
     pub warps: Vec<PlacedWarp>,
-    /// The noise generator (the pattern's own or the global setting in force when it was
-    /// parsed).
+    /// The noise generator: the pattern's own, or else the global one (see
+    /// [`Self::use_global_noise_generator`]).
     pub noise_generator: NoiseGenerator,
+    /// Whether the pattern names its own `noise_generator`.
+    pub own_noise_generator: bool,
     /// Every transformation noted so far, composed (outer from inner).
     noted: Transform,
 }
@@ -170,6 +172,7 @@ impl PatternSpec {
             },
             warps: Vec::new(),
             noise_generator: NoiseGenerator::default(),
+            own_noise_generator: false,
             noted: Transform::IDENTITY,
         }
     }
@@ -179,6 +182,16 @@ impl PatternSpec {
     /// remember the frame they were written in.
     pub fn note_transform(&mut self, transform: &Transform) {
         self.noted = self.noted.then(transform);
+    }
+
+    /// Sets the `global_settings` noise generator, unless the pattern names its own. POV-Ray
+    /// applies the scene's final global setting to every pattern, even one written before
+    /// `global_settings`; the parser calls this with the setting in force, and a pass over
+    /// the finished scene can call it again with the final one.
+    pub fn use_global_noise_generator(&mut self, global: NoiseGenerator) {
+        if !self.own_noise_generator {
+            self.noise_generator = global;
+        }
     }
 
     /// Adds a warp after everything written so far.
