@@ -402,6 +402,79 @@ mod tests {
     }
 
     #[test]
+    fn every_pattern_stays_finite_on_extreme_points() {
+        let kinds = [
+            PatternKind::Agate { agate_turb: 1.0 },
+            PatternKind::Boxed,
+            PatternKind::Bozo,
+            PatternKind::Brick {
+                size: DVec3::new(8.0, 3.0, 4.5),
+                mortar: 0.5,
+            },
+            PatternKind::Bumps,
+            PatternKind::Cells,
+            PatternKind::Checker,
+            PatternKind::Crackle(Crackle::default()),
+            PatternKind::Cubic,
+            PatternKind::Cylindrical,
+            PatternKind::Dents,
+            PatternKind::Fractal(Fractal::new(FractalKind::Mandelbrot, 50)),
+            PatternKind::Fractal(Fractal::new(
+                FractalKind::MagnetJulia(MagnetType::Two, glam::DVec2::new(0.5, 0.5)),
+                50,
+            )),
+            PatternKind::Gradient(DVec3::new(1.0, 2.0, 3.0)),
+            PatternKind::Granite,
+            PatternKind::Hexagon,
+            PatternKind::Leopard,
+            PatternKind::Marble,
+            PatternKind::Onion,
+            PatternKind::Planar,
+            PatternKind::Quilted {
+                control0: 1.0,
+                control1: 1.0,
+            },
+            PatternKind::Radial,
+            PatternKind::Ripples,
+            PatternKind::Spherical,
+            PatternKind::Spiral1(3.0),
+            PatternKind::Spiral2(1e300),
+            PatternKind::Square,
+            PatternKind::SquareTiles,
+            PatternKind::Triangular,
+            PatternKind::Waves,
+            PatternKind::Wood,
+            PatternKind::Wrinkles,
+        ];
+        let points = [
+            DVec3::ZERO,
+            DVec3::splat(1e300),
+            DVec3::new(-1e300, 1e-300, 3.0),
+            DVec3::splat(f64::NAN),
+            DVec3::new(f64::INFINITY, 0.0, 0.0),
+        ];
+        for kind in kinds {
+            let mut pattern = PatternSpec::new(kind);
+            pattern.wave.frequency = 1e300;
+            pattern.turbulence.amount = DVec3::splat(1e300);
+            pattern.add_warp(Warp::Mapping(Mapping {
+                dist_exp: 1e300,
+                ..Mapping::new(MappingKind::Toroidal)
+            }));
+            for point in points {
+                let value = pattern.value(point);
+                assert!(value.is_finite(), "{:?} at {point}", pattern.kind);
+                if let Some(count) = pattern.block_count() {
+                    assert!(pattern.block(point) < count);
+                }
+                if let Some(normal) = pattern.normal_perturbation(point) {
+                    assert!(normal.is_finite());
+                }
+            }
+        }
+    }
+
+    #[test]
     fn block_patterns_report_their_counts() {
         assert_eq!(
             PatternSpec::new(PatternKind::Hexagon).block_count(),
