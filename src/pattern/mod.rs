@@ -214,6 +214,29 @@ impl PatternSpec {
         }
     }
 
+    /// The colours (rgb) POV-Ray 3.7 gives the blocks of a block pattern written without
+    /// any (measured): checker blue, green; hexagon blue, green, red; brick grey mortar and
+    /// red brick; square red, green, blue, yellow; triangular and cubic red, green, blue,
+    /// yellow, cyan, magenta. Empty for patterns with a continuous value.
+    pub fn default_block_colours(&self) -> &'static [[f64; 3]] {
+        const RED: [f64; 3] = [1.0, 0.0, 0.0];
+        const GREEN: [f64; 3] = [0.0, 1.0, 0.0];
+        const BLUE: [f64; 3] = [0.0, 0.0, 1.0];
+        const YELLOW: [f64; 3] = [1.0, 1.0, 0.0];
+        const CYAN: [f64; 3] = [0.0, 1.0, 1.0];
+        const MAGENTA: [f64; 3] = [1.0, 0.0, 1.0];
+        match self.kind {
+            PatternKind::Checker => &[BLUE, GREEN],
+            PatternKind::Hexagon => &[BLUE, GREEN, RED],
+            PatternKind::Brick { .. } => &[[0.5, 0.5, 0.5], [0.6, 0.15, 0.15]],
+            PatternKind::Square => &[RED, GREEN, BLUE, YELLOW],
+            PatternKind::Triangular | PatternKind::Cubic => {
+                &[RED, GREEN, BLUE, YELLOW, CYAN, MAGENTA]
+            }
+            _ => &[],
+        }
+    }
+
     /// The block index (below [`Self::block_count`]) at a pattern-space point.
     pub fn block(&self, point: DVec3) -> usize {
         if !point.is_finite() {
