@@ -308,3 +308,13 @@ fn unimplemented_internal_function_is_refused_where_called() {
         ],
     );
 }
+
+#[test]
+fn agate_does_not_take_another_patterns_setting() {
+    check(
+        "agate_with_quilted_setting",
+        2,
+        30,
+        &["`control1` only applies to quilted"],
+    );
+}
