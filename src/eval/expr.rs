@@ -279,10 +279,11 @@ impl Evaluator {
             let y = self.to_float(b, span)?;
             let result = match op {
                 Less => x < y,
-                LessEqual => x <= y,
+                // POV-Ray's `<=` and `>=` accept a difference below the epsilon, like `=`.
+                LessEqual => x - y < EQUALITY_EPSILON,
                 Equal => (x - y).abs() < EQUALITY_EPSILON,
                 NotEqual => (x - y).abs() >= EQUALITY_EPSILON,
-                GreaterEqual => x >= y,
+                GreaterEqual => y - x < EQUALITY_EPSILON,
                 Greater => x > y,
                 And => x != 0.0 && y != 0.0,
                 _ => x != 0.0 || y != 0.0,
@@ -423,6 +424,10 @@ impl Evaluator {
             Some(Value::Function(function)) => {
                 let function = function.clone();
                 return self.call_function(&function, call);
+            }
+            Some(Value::Spline(spline)) => {
+                let spline = spline.clone();
+                return super::splines::call_spline(self, &spline, call);
             }
             _ => {}
         }

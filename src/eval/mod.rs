@@ -14,6 +14,7 @@ mod objects;
 mod pattern;
 mod scopes;
 mod shapes;
+mod splines;
 mod stream;
 mod value;
 mod view;

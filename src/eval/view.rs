@@ -81,7 +81,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "rainbow",
     "sky_sphere",
     "sphere_sweep",
-    "spline",
     "ovus",
     "lemon",
     "density",
@@ -139,6 +138,7 @@ impl Evaluator {
                 })
             }
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
+            "spline" => self.eval_spline(block.span, stream),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
             "background" => {
                 let (value, span) = self.expect_value(stream, "a colour")?;

@@ -161,3 +161,18 @@ fn files_outside_the_scene_folder_are_refused() {
         ],
     );
 }
+
+#[test]
+fn a_spline_without_points_is_reported_at_the_block() {
+    check(
+        "empty_spline",
+        2,
+        18,
+        &["a spline needs at least one point", "this spline has none"],
+    );
+}
+
+#[test]
+fn a_spline_call_with_a_bad_kind_points_at_the_argument() {
+    check("spline_kind", 3, 21, &["expected a spline kind"]);
+}
