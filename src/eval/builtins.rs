@@ -14,6 +14,8 @@ pub(crate) const FUNCTIONS: &[&str] = &[
     "max_extent",
     "min_extent",
     "trace",
+    "inside",
+    "datetime",
     "rand",
     "seed",
     "acos",
@@ -152,6 +154,22 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             };
             v3(corner)
         }
+        "inside" => {
+            arity(ev, 2)?;
+            if let Value::Object(object) = ev.argument(call, 0)? {
+                if let Some(part) = first_non_solid(&object) {
+                    return Err(ev
+                        .error(call.arguments[0].span(), "`inside` needs a solid object")
+                        .with_label(format!(
+                            "this object contains a {part}, which has no inside"
+                        ))
+                        .into());
+                }
+            }
+            let world = object_world(ev, call, 0)?;
+            let point = vector(ev, 1)?;
+            Value::Float(f64::from(world.inside(point)))
+        }
         "trace" => {
             if !(3..=4).contains(&call.arguments.len()) {
                 return Err(ev.error(call.span, "`trace` takes 3 or 4 arguments").into());
@@ -173,6 +191,29 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
                 ev.assign_declare_name(variable, v3(normal));
             }
             v3(point)
+        }
+        "datetime" => {
+            if !(1..=2).contains(&call.arguments.len()) {
+                return Err(ev
+                    .error(call.span, "`datetime` takes 1 or 2 arguments")
+                    .with_label("called here")
+                    .into());
+            }
+            let days = ev.argument_float(call, 0)?;
+            let format = match call.arguments.len() {
+                2 => string_argument(ev, call, 1)?,
+                _ => super::datetime::DEFAULT_FORMAT.to_string(),
+            };
+            match super::datetime::format_days(days, &format) {
+                Ok(text) => Value::String(Rc::from(text)),
+                Err(message) => {
+                    let span = call.arguments.get(1).unwrap_or(&call.arguments[0]).span();
+                    return Err(ev
+                        .error(span, message)
+                        .with_label("in this datetime")
+                        .into());
+                }
+            }
         }
         "seed" => {
             arity(ev, 1)?;
@@ -447,6 +488,19 @@ fn array_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<R
                 format!("expected an array, found {}", other.type_name()),
             )
             .into()),
+    }
+}
+
+/// The first shape in an object without an inside (a triangle, or a mesh without
+/// `inside_vector`), which POV-Ray refuses in `inside`.
+fn first_non_solid(object: &crate::scene::Object) -> Option<&'static str> {
+    use crate::scene::Shape;
+    match &object.shape {
+        Shape::Triangle { .. } => Some("triangle"),
+        Shape::SmoothTriangle { .. } => Some("smooth_triangle"),
+        Shape::Mesh(mesh) if mesh.inside_vector.is_none() => Some("mesh without inside_vector"),
+        Shape::Csg { children, .. } => children.iter().find_map(first_non_solid),
+        _ => None,
     }
 }
 

@@ -546,6 +546,7 @@ fn builtin_constant(name: &str, evaluator: &Evaluator) -> Option<Value> {
         "image_width" => Value::Float(f64::from(evaluator.options.image_width)),
         "image_height" => Value::Float(f64::from(evaluator.options.image_height)),
         "version" => Value::Float(evaluator.version),
+        "now" => Value::Float(super::datetime::now_in_days()),
         "input_file_name" => Value::String(Rc::from(evaluator.input_file_name.as_str())),
         _ => return None,
     })

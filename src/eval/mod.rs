@@ -6,6 +6,7 @@
 
 mod appearance;
 mod builtins;
+mod datetime;
 mod expr;
 mod files;
 mod literals;

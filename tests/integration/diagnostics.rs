@@ -176,3 +176,33 @@ fn a_spline_without_points_is_reported_at_the_block() {
 fn a_spline_call_with_a_bad_kind_points_at_the_argument() {
     check("spline_kind", 3, 21, &["expected a spline kind"]);
 }
+
+#[test]
+fn inside_on_a_float_points_at_the_argument() {
+    check(
+        "inside_not_object",
+        3,
+        22,
+        &["expected an object, found a float"],
+    );
+}
+
+#[test]
+fn inside_on_a_triangle_says_it_has_no_inside() {
+    check(
+        "inside_not_solid",
+        3,
+        22,
+        &["`inside` needs a solid object", "contains a triangle"],
+    );
+}
+
+#[test]
+fn a_datetime_format_with_a_time_zone_points_at_the_format() {
+    check(
+        "datetime_format",
+        2,
+        32,
+        &["`%Z` cannot be used", "in this datetime"],
+    );
+}
