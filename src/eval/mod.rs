@@ -106,7 +106,13 @@ pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
 
 /// durer's own small standard library, used when an include file is found nowhere else
 /// (for example on a machine without POV-Ray installed).
-const EMBEDDED_INCLUDES: &[(&str, &str)] = &[("colors.inc", include_str!("stdlib/colors.inc"))];
+const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
+    ("colors.inc", include_str!("stdlib/colors.inc")),
+    ("consts.inc", include_str!("stdlib/consts.inc")),
+    ("finish.inc", include_str!("stdlib/finish.inc")),
+    ("golds.inc", include_str!("stdlib/golds.inc")),
+    ("metals.inc", include_str!("stdlib/metals.inc")),
+];
 
 /// Folder name under which embedded include files appear in diagnostics.
 const EMBEDDED_FOLDER: &str = "<durer standard library>";
