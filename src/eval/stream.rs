@@ -286,7 +286,15 @@ impl Evaluator {
                 }
                 self.assign(*local, target, value)?;
             }
-            DirectiveKind::Undef(name, _) => self.undefine(name),
+            DirectiveKind::Undef(name, name_span) => {
+                if self.scopes.innermost_holder(name).is_none() {
+                    self.warn(
+                        *name_span,
+                        format!("`#undef` of unknown identifier `{name}`"),
+                    );
+                }
+                self.undefine(name);
+            }
             DirectiveKind::If { branches, .. } => self.run_first_true_branch(branches, stream)?,
             DirectiveKind::IfDefined {
                 negate,
