@@ -27,3 +27,8 @@ Shadow()
   #if (Count > 4) #break #end
 #end
 Check((Count = 5), "#break leaves #while")
+// A `#` that starts no directive is ignored; `# declare` with a space is a directive.
+# declare Spaced = 2;
+#declare Stray = <1, 2, 3>#
+;
+Check((Spaced = 2 & Stray.z = 3), "stray and spaced #")
