@@ -29,6 +29,6 @@ Shadow()
 Check((Count = 5), "#break leaves #while")
 // A `#` that starts no directive is ignored; `# declare` with a space is a directive.
 # declare Spaced = 2;
-#declare Stray = <1, 2, 3>#
-;
+#declare Stray = <1, 2, 3>;
+#
 Check((Spaced = 2 & Stray.z = 3), "stray and spaced #")
