@@ -87,10 +87,10 @@ impl Evaluator {
                     } else if self.is_builtin_name(name) {
                         self.eval_expr(&Expr::Ident(name.clone(), *span))?
                     } else {
-                        Value::Reference {
-                            scope: 0,
-                            name: name.clone(),
-                        }
+                        // POV-Ray refuses to pass a name that holds no value.
+                        let mut d = self.undefined(name, *span);
+                        d.message = format!("cannot pass undefined identifier `{name}` to a macro");
+                        return Err(d.into());
                     };
                     values.push(value);
                 }

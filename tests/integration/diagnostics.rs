@@ -206,3 +206,13 @@ fn a_datetime_format_with_a_time_zone_points_at_the_format() {
         &["`%Z` cannot be used", "in this datetime"],
     );
 }
+
+#[test]
+fn an_undefined_macro_argument_is_refused() {
+    check(
+        "undefined_macro_argument",
+        3,
+        7,
+        &["cannot pass undefined identifier `Nothing` to a macro"],
+    );
+}
