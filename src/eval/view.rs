@@ -81,7 +81,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "media",
     "parametric",
     "photons",
-    "spline",
     "ovus",
     "lemon",
     "density",
@@ -136,6 +135,7 @@ impl Evaluator {
                 })
             }
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
+            "spline" => self.eval_spline(block.span, stream),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
             "fog" => Ok(atmospheric(AtmosphericEffect::Fog(self.eval_fog(stream)?))),
             "sky_sphere" => Ok(atmospheric(AtmosphericEffect::SkySphere(

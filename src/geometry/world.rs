@@ -139,6 +139,19 @@ impl World {
         }
     }
 
+    /// True when `point` is inside any object (the scene language's `inside`). Meshes have no
+    /// inside here, as in POV-Ray without `inside_vector`.
+    pub fn inside(&self, point: DVec3) -> bool {
+        self.primitives
+            .iter()
+            .chain(&self.unbounded)
+            .any(|primitive| match primitive {
+                Primitive::Leaf(leaf) => leaf.inside(point),
+                Primitive::Mesh(_) => false,
+                Primitive::Csg(tree) => tree.inside(point),
+            })
+    }
+
     /// Nearest hit with `min_distance < distance < max_distance`.
     pub fn first_hit(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<SurfaceHit> {
         self.search(ray, min_distance, max_distance, &|_| false)

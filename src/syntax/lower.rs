@@ -211,6 +211,9 @@ impl Lowerer {
                 args.into_inner()
                     .map(|a| match a.as_rule() {
                         Rule::block => Argument::Block(Rc::new(self.block(a))),
+                        Rule::spline_kind => {
+                            Argument::Expr(Expr::Ident(Rc::from(a.as_str()), self.span(&a)))
+                        }
                         _ => Argument::Expr(self.full_expr(a)),
                     })
                     .collect()

@@ -318,3 +318,58 @@ fn agate_does_not_take_another_patterns_setting() {
         &["`control1` only applies to quilted"],
     );
 }
+
+#[test]
+fn a_spline_without_points_is_reported_at_the_block() {
+    check(
+        "empty_spline",
+        2,
+        18,
+        &["a spline needs at least one point", "this spline has none"],
+    );
+}
+
+#[test]
+fn a_spline_call_with_a_bad_kind_points_at_the_argument() {
+    check("spline_kind", 3, 21, &["expected a spline kind"]);
+}
+
+#[test]
+fn inside_on_a_float_points_at_the_argument() {
+    check(
+        "inside_not_object",
+        3,
+        22,
+        &["expected an object, found a float"],
+    );
+}
+
+#[test]
+fn inside_on_a_triangle_says_it_has_no_inside() {
+    check(
+        "inside_not_solid",
+        3,
+        22,
+        &["`inside` needs a solid object", "contains a triangle"],
+    );
+}
+
+#[test]
+fn a_datetime_format_with_a_time_zone_points_at_the_format() {
+    check(
+        "datetime_format",
+        2,
+        32,
+        &["`%Z` cannot be used", "in this datetime"],
+    );
+}
+
+#[test]
+fn an_undefined_macro_argument_is_refused() {
+    check(
+        "undefined_macro_argument",
+        3,
+        7,
+        &["cannot pass undefined identifier `Nothing` to a macro"],
+    );
+}
