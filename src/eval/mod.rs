@@ -8,6 +8,8 @@ mod appearance;
 mod builtins;
 mod expr;
 mod files;
+mod finish;
+mod light;
 mod literals;
 mod macros;
 mod objects;

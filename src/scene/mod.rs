@@ -4,9 +4,13 @@
 //! (defaults filled in, camera vectors resolved); no macros, identifiers or spans remain.
 
 mod colour;
+mod finish;
+mod light;
 mod transform;
 
 pub use colour::Colour;
+pub use finish::{Finish, Interior};
+pub use light::{LightSource, Spotlight};
 pub use transform::Transform;
 
 use glam::DVec3;
@@ -95,36 +99,6 @@ impl Default for Camera {
             up: DVec3::Y,
         }
     }
-}
-
-/// A light source.
-#[derive(Clone, Debug)]
-pub struct LightSource {
-    /// Position of the light.
-    pub position: DVec3,
-    /// Colour (intensity) of the light.
-    pub colour: DVec3,
-    /// A `shadowless` light is never blocked by objects.
-    pub shadowless: bool,
-    /// Spotlight cone, when the light is a spotlight.
-    pub spotlight: Option<Spotlight>,
-    /// `fade_distance`; 0 means no fading.
-    pub fade_distance: f64,
-    /// `fade_power`; 0 means no fading.
-    pub fade_power: f64,
-}
-
-/// The cone of a `spotlight`.
-#[derive(Clone, Copy, Debug)]
-pub struct Spotlight {
-    /// The point the spotlight aims at.
-    pub point_at: DVec3,
-    /// Half-angle in degrees of the fully lit cone (default 30).
-    pub radius: f64,
-    /// Half-angle in degrees where the light reaches zero (default 45).
-    pub falloff: f64,
-    /// Exponent sharpening the edge of the cone.
-    pub tightness: f64,
 }
 
 /// One object of the scene tree: a shape or a CSG node, with its appearance.
@@ -393,59 +367,4 @@ pub enum PigmentMap {
     Colours(Vec<(f64, Colour)>),
     /// For block patterns (checker): one pigment per block.
     Blocks(Vec<Pigment>),
-}
-
-/// POV-Ray's `finish` with its defaults.
-#[derive(Clone, Debug)]
-pub struct Finish {
-    /// Ambient light reflected (colour; default 0.1 grey).
-    pub ambient: DVec3,
-    /// Light emitted independently of `ambient_light` (default black).
-    pub emission: DVec3,
-    /// Diffuse reflection (default 0.6).
-    pub diffuse: f64,
-    /// Diffuse falloff exponent (default 1).
-    pub brilliance: f64,
-    /// Phong highlight amount (default 0).
-    pub phong: f64,
-    /// Phong exponent (default 40).
-    pub phong_size: f64,
-    /// Blinn specular highlight amount (default 0).
-    pub specular: f64,
-    /// Specular roughness (default 0.05).
-    pub roughness: f64,
-    /// Tints highlights with the surface colour, 0 to 1 (default 0).
-    pub metallic: f64,
-    /// Mirror reflection colour (default black).
-    pub reflection: DVec3,
-}
-
-impl Default for Finish {
-    fn default() -> Self {
-        Finish {
-            ambient: DVec3::splat(0.1),
-            emission: DVec3::ZERO,
-            diffuse: 0.6,
-            brilliance: 1.0,
-            phong: 0.0,
-            phong_size: 40.0,
-            specular: 0.0,
-            roughness: 0.05,
-            metallic: 0.0,
-            reflection: DVec3::ZERO,
-        }
-    }
-}
-
-/// What is inside an object.
-#[derive(Clone, Debug)]
-pub struct Interior {
-    /// Index of refraction (default 1: no bending).
-    pub ior: f64,
-}
-
-impl Default for Interior {
-    fn default() -> Self {
-        Interior { ior: 1.0 }
-    }
 }
