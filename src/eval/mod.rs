@@ -444,7 +444,7 @@ impl Evaluator {
                 self.objects.push(object);
             }
             Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),
-            Value::Light(light) => self.lights.push(Rc::unwrap_or_clone(light)),
+            Value::Light(light) => self.add_light(Rc::unwrap_or_clone(light)),
             Value::Colour(colour) if matches!(item, Item::Block(_)) => self.background = colour,
             Value::Nothing => {} // settings blocks and left-out features
             other => {
@@ -476,7 +476,11 @@ impl Evaluator {
         }
     }
 
+    /// Adds a light to the scene, and its `looks_like` object to the objects.
     pub(crate) fn add_light(&mut self, light: LightSource) {
+        if let Some(shape) = &light.looks_like {
+            self.objects.push((**shape).clone());
+        }
         self.lights.push(light);
     }
 

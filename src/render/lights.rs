@@ -18,10 +18,103 @@
 //!   `max_trace_level`. `shadowless` lights are never blocked. Surfaces closer than 1e-3 to
 //!   the lit point are ignored.
 
+use super::area_light::AreaArray;
 use super::pattern::pigment_colour;
 use crate::geometry::{Ray, World};
-use crate::scene::{Colour, LightSource, Spotlight};
+use crate::scene::{Colour, GlobalSettings, LightSource, Scene, Spotlight};
 use glam::DVec3;
+
+/// A light ready for rendering: the source and what its shadow tests need.
+pub struct SceneLight {
+    /// The light as the scene gives it.
+    pub source: LightSource,
+    /// The `projected_through` object, ready for ray queries.
+    pub projected_through: Option<World>,
+}
+
+/// The scene's lights, ready for rendering.
+pub fn prepare_lights(scene: &Scene) -> Vec<SceneLight> {
+    scene
+        .lights
+        .iter()
+        .map(|source| SceneLight {
+            source: source.clone(),
+            projected_through: source.projected_through.as_ref().map(|object| {
+                World::build(&Scene {
+                    camera: scene.camera.clone(),
+                    lights: Vec::new(),
+                    objects: vec![(**object).clone()],
+                    background: scene.background,
+                    settings: GlobalSettings::default(),
+                })
+            }),
+        })
+        .collect()
+}
+
+/// What part of the light `arriving` at `point` gets there past shadows and through a
+/// `projected_through` object; over the whole array of an area light when `array` is given.
+pub fn light_filter(
+    light: &SceneLight,
+    world: &World,
+    point: DVec3,
+    arriving: &Incoming,
+    array: Option<&AreaArray>,
+) -> DVec3 {
+    let Some(array) = array else {
+        return filter_along(
+            light,
+            world,
+            point,
+            arriving.direction,
+            arriving.distance,
+            arriving.can_be_shadowed,
+        );
+    };
+    array.average(&mut |position: DVec3| {
+        let offset = position - point;
+        let distance = offset.length();
+        match offset.try_normalize() {
+            Some(direction) => filter_along(
+                light,
+                world,
+                point,
+                direction,
+                distance,
+                arriving.can_be_shadowed,
+            ),
+            None => DVec3::ONE,
+        }
+    })
+}
+
+/// The light passing from `distance` away along `direction` to `point`: zero when a
+/// `projected_through` object is not crossed; shadows count only up to that object.
+fn filter_along(
+    light: &SceneLight,
+    world: &World,
+    point: DVec3,
+    direction: DVec3,
+    distance: f64,
+    can_be_shadowed: bool,
+) -> DVec3 {
+    let mut limit = distance;
+    if let Some(through) = &light.projected_through {
+        let ray = Ray {
+            origin: point,
+            direction,
+        };
+        match through.first_hit(&ray, SHADOW_EPSILON, distance) {
+            Some(hit) => limit = hit.distance,
+            None => return DVec3::ZERO,
+        }
+    }
+    if can_be_shadowed {
+        shadow_filter(world, point, direction, limit)
+    } else {
+        DVec3::ONE
+    }
+}
 
 /// Shadow rays ignore surfaces closer than this to the lit point (measured in POV-Ray 3.7
 /// with thin boxes and small spheres just off a lit plane: hits below 1e-3 do not shadow).
@@ -35,10 +128,13 @@ const MAX_SHADOW_SURFACES: u32 = 10_000;
 pub struct Incoming {
     /// Unit vector from the surface point towards the light.
     pub direction: DVec3,
-    /// Distance from the point to the light.
+    /// How far shadow rays run towards the light (for a parallel light, to the plane through
+    /// the light perpendicular to its direction).
     pub distance: f64,
     /// Light colour after fading and the spotlight cone.
     pub colour: DVec3,
+    /// Whether objects can shadow the point (not for points beyond a parallel light's plane).
+    pub can_be_shadowed: bool,
 }
 
 /// The light `light` sends towards `point`, ignoring shadows; `None` when none arrives.
@@ -48,10 +144,20 @@ pub fn incoming(light: &LightSource, point: DVec3) -> Option<Incoming> {
     if !(distance > 0.0 && distance.is_finite()) {
         return None;
     }
-    let direction = offset / distance;
+    let (direction, shadow_distance) = match light.parallel {
+        Some(point_at) => {
+            let direction = (light.position - point_at).try_normalize()?;
+            (direction, offset.dot(direction))
+        }
+        None => (offset / distance, distance),
+    };
     let mut strength = fade_factor(light, distance);
     if let Some(spot) = &light.spotlight {
-        strength *= spotlight_factor(spot, light.position, direction);
+        strength *= if spot.cylinder {
+            cylinder_factor(spot, light.position, point)
+        } else {
+            spotlight_factor(spot, light.position, offset / distance)
+        };
     }
     if strength.is_nan() || strength <= 0.0 {
         return None;
@@ -59,8 +165,9 @@ pub fn incoming(light: &LightSource, point: DVec3) -> Option<Incoming> {
     let colour = light.colour * strength;
     colour.is_finite().then_some(Incoming {
         direction,
-        distance,
+        distance: shadow_distance,
         colour,
+        can_be_shadowed: !light.shadowless && shadow_distance > 0.0,
     })
 }
 
@@ -94,6 +201,34 @@ pub fn spotlight_factor(spot: &Spotlight, position: DVec3, to_light: DVec3) -> f
     }
     let s = (cosine - cos_falloff) / (cos_radius - cos_falloff);
     tight * s * s * (3.0 - 2.0 * s)
+}
+
+/// The cylinder light's intensity multiplier at `point`: `(1 − d / falloff)^tightness`, d
+/// the distance from the beam's axis, times the smooth step from `falloff` down to
+/// `radius`; zero behind the light.
+pub fn cylinder_factor(spot: &Spotlight, position: DVec3, point: DVec3) -> f64 {
+    let Some(axis) = (spot.point_at - position).try_normalize() else {
+        return 0.0;
+    };
+    let offset = point - position;
+    let along = offset.dot(axis);
+    if along.is_nan() || along <= 0.0 {
+        return 0.0;
+    }
+    let from_axis = (offset - along * axis).length();
+    if from_axis.is_nan() || from_axis >= spot.falloff {
+        return 0.0;
+    }
+    let mut factor = if spot.tightness != 0.0 {
+        (1.0 - from_axis / spot.falloff).powf(spot.tightness)
+    } else {
+        1.0
+    };
+    if spot.radius > 0.0 && from_axis > spot.radius && spot.falloff > spot.radius {
+        let s = (spot.falloff - from_axis) / (spot.falloff - spot.radius);
+        factor *= s * s * (3.0 - 2.0 * s);
+    }
+    factor
 }
 
 /// The part of a light that passes a surface with this pigment: `filter · rgb + transmit`.
@@ -136,6 +271,7 @@ mod tests {
             radius,
             falloff,
             tightness,
+            cylinder: false,
         }
     }
 
@@ -174,12 +310,9 @@ mod tests {
     #[test]
     fn fading() {
         let light = LightSource {
-            position: DVec3::ZERO,
-            colour: DVec3::ONE,
-            shadowless: false,
-            spotlight: None,
             fade_distance: 2.0,
             fade_power: 2.0,
+            ..LightSource::point(DVec3::ZERO, DVec3::ONE)
         };
         assert_eq!(fade_factor(&light, 2.0), 1.0);
         assert!((fade_factor(&light, 4.0) - 0.4).abs() < 1e-15);

@@ -13,6 +13,7 @@
 //! [`trace`] (transparency, refraction, reflection, trace levels), [`encoding`] (gamma and
 //! rounding to bytes) and [`output`] (PNG file).
 
+pub mod area_light;
 pub mod camera;
 pub mod encoding;
 pub mod lights;

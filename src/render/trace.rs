@@ -39,7 +39,7 @@
 //!   bailout (parent · max(T))² · reflection.)
 
 use super::encoding::is_legacy_scene;
-use super::lights::transmission;
+use super::lights::{prepare_lights, transmission, SceneLight};
 use super::pattern::pigment_colour;
 use super::shading::{local_light, mirror, SurfaceSample};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
@@ -120,6 +120,7 @@ pub struct Tracer<'a> {
     adc_bailout: f64,
     background: DVec3,
     legacy_opacity: bool,
+    lights: Vec<SceneLight>,
 }
 
 impl<'a> Tracer<'a> {
@@ -138,6 +139,7 @@ impl<'a> Tracer<'a> {
             adc_bailout,
             background: scene.background.rgb_vec(),
             legacy_opacity: is_legacy_scene(settings),
+            lights: prepare_lights(scene),
         }
     }
 
@@ -206,14 +208,10 @@ impl<'a> Tracer<'a> {
             ray_direction: ray.direction,
             pigment,
             finish: &texture.finish,
+            double_illuminate: material.double_illuminate,
         };
         let settings = &self.scene.settings;
-        let local = local_light(
-            &sample,
-            &self.scene.lights,
-            settings.ambient_light,
-            self.world,
-        );
+        let local = local_light(&sample, &self.lights, settings.ambient_light, self.world);
         let opacity = if self.legacy_opacity {
             1.0 - pigment.filter * pigment.rgb_vec().max_element() - pigment.transmit
         } else {

@@ -9,8 +9,8 @@ mod light;
 mod transform;
 
 pub use colour::Colour;
-pub use finish::{Finish, Interior};
-pub use light::{LightSource, Spotlight};
+pub use finish::{Finish, Interior, Irid};
+pub use light::{AreaLight, LightSource, Spotlight};
 pub use transform::Transform;
 
 use glam::DVec3;
