@@ -10,11 +10,14 @@
 //! - point light (i, j) of a size1 × size2 array sits at
 //!   `centre + (i / (size1 − 1) − ½) axis1 + (j / (size2 − 1) − ½) axis2` (at the centre
 //!   along an axis with one light).
-//! - the array is sampled by blocks: a block's four corners are tested; it is split into
-//!   four at its middle indices while it spans more than one cell and either the
-//!   subdivision level is below `adaptive` (every light is tested without `adaptive`) or
-//!   its corners differ by more than [`ADAPTIVE_THRESHOLD`] in some channel; a block's
-//!   value is the mean of its quarters, or of its corners when not split.
+//! - the array is sampled by blocks, starting with the whole array: a block spanning more
+//!   than one cell along an axis is split into four while the subdivision level is below
+//!   `adaptive` (always without `adaptive`), or when its four corners differ by more than
+//!   [`ADAPTIVE_THRESHOLD`] in some channel. Along each axis, indices u1..u2 split into
+//!   u1..⌊(u1+u2)/2⌋ and ⌈(u1+u2)/2⌉..u2 (an odd span gives disjoint halves, an even one
+//!   shares the middle). A block's value is the mean of its quarters, or of its four
+//!   corners when not split. (Measured: 5×5 and 9×9 arrays weigh their edges half,
+//!   4×4 and 8×8 weigh all lights equally, and 6×6 and 7×7 match only this rule.)
 //! - `jitter` moves each point light by up to half a cell along each axis.
 //! - `circular` maps the square array onto the ellipse inscribed in the rectangle.
 //! - `orient` turns the array to face the lit point (axes keep their lengths).
@@ -98,63 +101,34 @@ impl AreaArray {
 
     /// The mean of `light_from(position)` over the array, sampled block by block.
     pub fn average<T: Sampled>(&self, light_from: &mut impl FnMut(DVec3) -> T) -> T {
-        let (last1, last2) = (self.size1 - 1, self.size2 - 1);
-        let corners = [
-            light_from(self.position(0, 0)),
-            light_from(self.position(last1, 0)),
-            light_from(self.position(0, last2)),
-            light_from(self.position(last1, last2)),
-        ];
-        self.block(0, 0, last1, last2, 0, corners, light_from)
+        self.block((0, 0), (self.size1 - 1, self.size2 - 1), 0, light_from)
     }
 
-    /// The value of the block from (u1, v1) to (u2, v2) whose corner values are `corners`
-    /// (in the order (u1, v1), (u2, v1), (u1, v2), (u2, v2)).
-    #[allow(clippy::too_many_arguments)]
+    /// The value of the block of point lights from (u1, v1) to (u2, v2).
     fn block<T: Sampled>(
         &self,
-        u1: u32,
-        v1: u32,
-        u2: u32,
-        v2: u32,
+        (u1, v1): (u32, u32),
+        (u2, v2): (u32, u32),
         level: u32,
-        corners: [T; 4],
         light_from: &mut impl FnMut(DVec3) -> T,
     ) -> T {
         let splittable = u2 - u1 > 1 || v2 - v1 > 1;
-        if !splittable || (level >= self.min_level && !corners_differ(&corners)) {
-            return (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
+        if !splittable || level >= self.min_level {
+            let corners = [(u1, v1), (u2, v1), (u1, v2), (u2, v2)]
+                .map(|(i, j)| light_from(self.position(i, j)));
+            if !splittable || !corners_differ(&corners) {
+                return (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
+            }
         }
-        let (um, vm) = ((u1 + u2) / 2, (v1 + v2) / 2);
-        let mut at = |i: u32, j: u32| light_from(self.position(i, j));
-        let bottom = at(um, v1);
-        let left = at(u1, vm);
-        let middle = at(um, vm);
-        let right = at(u2, vm);
-        let top = at(um, v2);
-        let [c00, c10, c01, c11] = corners;
+        // An odd span splits into two disjoint halves, an even one shares its middle.
+        let (u_low, u_high) = ((u1 + u2) / 2, (u1 + u2).div_ceil(2));
+        let (v_low, v_high) = ((v1 + v2) / 2, (v1 + v2).div_ceil(2));
         let next = level + 1;
         let quarters = [
-            self.block(
-                u1,
-                v1,
-                um,
-                vm,
-                next,
-                [c00, bottom, left, middle],
-                light_from,
-            ),
-            self.block(
-                um,
-                v1,
-                u2,
-                vm,
-                next,
-                [bottom, c10, middle, right],
-                light_from,
-            ),
-            self.block(u1, vm, um, v2, next, [left, middle, c01, top], light_from),
-            self.block(um, vm, u2, v2, next, [middle, right, top, c11], light_from),
+            self.block((u1, v1), (u_low, v_low), next, light_from),
+            self.block((u_high, v1), (u2, v_low), next, light_from),
+            self.block((u1, v_high), (u_low, v2), next, light_from),
+            self.block((u_high, v_high), (u2, v2), next, light_from),
         ];
         (quarters[0] + quarters[1] + quarters[2] + quarters[3]) / 4.0
     }
@@ -278,6 +252,14 @@ mod tests {
         assert!(tested >= 25);
         // Blocks' corners: columns 0..2 give 0,0,1 per block pair → 0.25 and 1 → mean 0.625.
         assert!((value.x - 0.625).abs() < 1e-12, "{value}");
+    }
+
+    #[test]
+    fn odd_spans_split_into_disjoint_halves() {
+        // A 4×1 array weighs its lights equally, as POV-Ray does.
+        let array = AreaArray::new(&area(4, 1), DVec3::ZERO, DVec3::new(0.0, -5.0, 0.0));
+        let value = array.average(&mut |p: DVec3| DVec3::splat(if p.x < -1.0 { 1.0 } else { 0.0 }));
+        assert!((value.x - 0.25).abs() < 1e-12, "{value}");
     }
 
     #[test]
