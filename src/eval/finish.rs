@@ -61,9 +61,8 @@ impl Evaluator {
                     "roughness" => finish.roughness = self.expect_float(stream, "a float")?,
                     "metallic" => finish.metallic = self.optional_amount(stream)?,
                     "reflection" => {
-                        let colour = self.expect_rgb(stream)?;
-                        finish.reflection = colour;
-                        finish.reflection_min = colour;
+                        finish.reflection = self.expect_rgb(stream)?;
+                        finish.reflection_min = None;
                     }
                     "reflection_exponent" => {
                         finish.reflection_exponent = self.expect_float(stream, "a float")?
@@ -155,11 +154,11 @@ impl Evaluator {
             [] => {}
             [only] => {
                 finish.reflection = only;
-                finish.reflection_min = only;
+                finish.reflection_min = None;
             }
             [.., min, max] => {
                 finish.reflection = max;
-                finish.reflection_min = min;
+                finish.reflection_min = Some(min);
             }
         }
         Ok(())

@@ -16,10 +16,16 @@
 //!   (no clamping; so a sphere of `rgbf <0.8,0.5,0.2,1>` passes 0.64, 0.25, 0.04); an
 //!   opaque surface gives zero. The number of surfaces is not limited by
 //!   `max_trace_level`. `shadowless` lights are never blocked. Surfaces closer than 1e-3 to
-//!   the lit point are ignored.
+//!   the lit point are ignored. Interiors with `fade_distance` fade the light over the
+//!   length the shadow ray runs inside them.
+//! - parallel lights: shadow rays run along the light's direction up to the plane through
+//!   the light perpendicular to it; points beyond that plane are lit but never shadowed.
+//! - area lights: see [`super::area_light`]; the diffuse and highlight directions are the
+//!   centre's unless `area_illumination` is on.
 
 use super::area_light::AreaArray;
 use super::pattern::pigment_colour;
+use super::reflection::interior_fade;
 use crate::geometry::{Ray, World};
 use crate::scene::{Colour, GlobalSettings, LightSource, Scene, Spotlight};
 use glam::DVec3;
@@ -237,6 +243,9 @@ pub fn transmission(pigment: Colour) -> DVec3 {
 }
 
 /// What fraction of the light from `distance` away along `direction` reaches `point`.
+///
+/// Light also fades through objects whose interior has `fade_distance`, over the length
+/// between entering and leaving them (from the lit point when it is inside).
 pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f64) -> DVec3 {
     let ray = Ray {
         origin: point,
@@ -244,6 +253,8 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
     };
     let mut filter = DVec3::ONE;
     let mut start = SHADOW_EPSILON;
+    // The last object entered along the ray and where.
+    let mut entered: Option<(u32, f64)> = None;
     for _ in 0..MAX_SHADOW_SURFACES {
         let Some(hit) = world.first_shadow_hit(&ray, start, distance) else {
             return filter;
@@ -253,6 +264,19 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
         };
         let pigment = pigment_colour(&material.texture.pigment, hit.point);
         filter *= transmission(pigment);
+        if direction.dot(hit.normal) < 0.0 {
+            entered = Some((hit.material, hit.distance));
+        } else {
+            let since = match entered {
+                Some((id, at)) if id == hit.material => at,
+                Some(_) => hit.distance,
+                None => 0.0,
+            };
+            if let Some(kept) = interior_fade(&material.interior, hit.distance - since) {
+                filter *= kept;
+            }
+            entered = None;
+        }
         if !filter.is_finite() || filter.abs().max_element() < 1e-12 {
             return DVec3::ZERO;
         }

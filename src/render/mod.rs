@@ -19,6 +19,7 @@ pub mod encoding;
 pub mod lights;
 pub mod output;
 pub mod pattern;
+pub mod reflection;
 pub mod shading;
 pub mod trace;
 

@@ -223,7 +223,7 @@ pub fn mirror(direction: DVec3, normal: DVec3) -> DVec3 {
 }
 
 /// The factor `metallic` applies to highlight colours for light at this incidence.
-fn highlight_tint(metallic: f64, cos_incidence: f64, pigment: DVec3) -> DVec3 {
+pub(crate) fn highlight_tint(metallic: f64, cos_incidence: f64, pigment: DVec3) -> DVec3 {
     if metallic == 0.0 {
         return DVec3::ONE;
     }

@@ -41,6 +41,7 @@
 use super::encoding::is_legacy_scene;
 use super::lights::{prepare_lights, transmission, SceneLight};
 use super::pattern::pigment_colour;
+use super::reflection::{apply_exponent, interior_fade, reflection_colour};
 use super::shading::{local_light, mirror, SurfaceSample};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
 use crate::scene::Scene;
@@ -85,6 +86,11 @@ impl Media {
         }
     }
 
+    /// The material of the innermost object the ray is in.
+    fn innermost(&self) -> Option<u32> {
+        self.len.checked_sub(1).map(|at| self.entries[at].0)
+    }
+
     /// The media after entering an object with this material and index.
     fn entered(&self, material: u32, ior: f64) -> Media {
         let mut media = *self;
@@ -121,6 +127,21 @@ pub struct Tracer<'a> {
     background: DVec3,
     legacy_opacity: bool,
     lights: Vec<SceneLight>,
+    /// Some object is `no_image` (camera rays must skip it).
+    any_no_image: bool,
+    /// Some object is `no_reflection` (reflected rays must skip it).
+    any_no_reflection: bool,
+}
+
+/// What a ray is for, which decides the objects it can see.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum RayKind {
+    /// A ray from the camera (and its unbent continuations): skips `no_image` objects.
+    Camera,
+    /// A mirror-reflected ray: skips `no_reflection` objects.
+    Reflected,
+    /// A refracted ray: sees everything.
+    Refracted,
 }
 
 impl<'a> Tracer<'a> {
@@ -140,12 +161,14 @@ impl<'a> Tracer<'a> {
             background: scene.background.rgb_vec(),
             legacy_opacity: is_legacy_scene(settings),
             lights: prepare_lights(scene),
+            any_no_image: world.materials.iter().any(|m| m.no_image),
+            any_no_reflection: world.materials.iter().any(|m| m.no_reflection),
         }
     }
 
     /// The colour seen along a camera ray.
     pub fn trace_camera_ray(&self, ray: &Ray) -> DVec3 {
-        let colour = self.trace(*ray, 1, RayWeight::CAMERA, &Media::OUTSIDE);
+        let colour = self.trace(*ray, 1, RayWeight::CAMERA, &Media::OUTSIDE, RayKind::Camera);
         if colour.is_finite() {
             colour
         } else {
@@ -154,20 +177,38 @@ impl<'a> Tracer<'a> {
     }
 
     /// The colour seen along `ray`, a ray of trace `level` and ADC `weight` inside `media`.
-    fn trace(&self, ray: Ray, level: u32, weight: RayWeight, media: &Media) -> DVec3 {
+    fn trace(
+        &self,
+        ray: Ray,
+        level: u32,
+        weight: RayWeight,
+        media: &Media,
+        kind: RayKind,
+    ) -> DVec3 {
         let mut media = *media;
         let mut weight = weight;
         let mut min_distance = SURFACE_EPSILON;
         // Product of the transmission of the surfaces passed so far without bending.
         let mut carried = DVec3::ONE;
         let mut colour = DVec3::ZERO;
+        let mut travelled = 0.0;
         for _ in 0..MAX_CONTINUATIONS {
-            let Some(hit) = self.world.first_hit(&ray, min_distance, f64::INFINITY) else {
+            let Some(hit) = self.first_hit(&ray, min_distance, kind) else {
                 return colour + carried * self.background;
             };
             let Some(material) = self.world.materials.get(hit.material as usize) else {
                 return colour;
             };
+            // Light from this hit fades on its way through the object the ray is in.
+            if let Some(inside) = media
+                .innermost()
+                .and_then(|id| self.world.materials.get(id as usize))
+            {
+                if let Some(kept) = interior_fade(&inside.interior, hit.distance - travelled) {
+                    carried *= kept;
+                }
+            }
+            travelled = hit.distance;
             let surface = self.shade(&ray, &hit, material, level, weight, &media);
             colour += carried * surface.colour;
             let Some(continued) = surface.continued else {
@@ -180,6 +221,26 @@ impl<'a> Tracer<'a> {
             min_distance = hit.distance + SURFACE_EPSILON;
         }
         colour
+    }
+
+    /// The nearest surface along `ray` beyond `min_distance` that a ray of this kind sees.
+    fn first_hit(&self, ray: &Ray, min_distance: f64, kind: RayKind) -> Option<SurfaceHit> {
+        let materials = &self.world.materials;
+        match kind {
+            RayKind::Camera if self.any_no_image => {
+                self.world
+                    .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
+                        materials.get(id as usize).is_some_and(|m| m.no_image)
+                    })
+            }
+            RayKind::Reflected if self.any_no_reflection => {
+                self.world
+                    .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
+                        materials.get(id as usize).is_some_and(|m| m.no_reflection)
+                    })
+            }
+            _ => self.world.first_hit(ray, min_distance, f64::INFINITY),
+        }
     }
 
     /// The light leaving a surface towards the ray, and how the ray continues through it
@@ -225,20 +286,27 @@ impl<'a> Tracer<'a> {
             return shaded;
         }
 
-        // Light coming through the surface.
-        let mut reflection = texture.finish.reflection;
+        // The indices of refraction on both sides, for refraction and Fresnel reflection.
+        let ior = sanitise_ior(material.interior.ior);
+        let (ratio, beyond) = if entering {
+            (media.ior() / ior, media.entered(hit.material, ior))
+        } else {
+            let beyond = media.left(hit.material);
+            (ior / beyond.ior(), beyond)
+        };
+        let finish = &texture.finish;
+        let cos_incidence = -ray.direction.dot(normal);
+        let mut reflection = reflection_colour(finish, cos_incidence, ratio, pigment.rgb_vec());
         let mut reflection_weight = weight.reflected(reflection);
-        let pass = transmission(pigment);
+
+        // Light coming through the surface.
+        let mut pass = transmission(pigment);
+        if finish.conserve_energy {
+            pass *= DVec3::ONE - reflection;
+        }
         let pass_weight = weight.transmitted(pass);
         let surface_passes = pass.dot(GREY_WEIGHTS) >= self.adc_bailout;
         if pass_weight.0 > 0.0 && pass_weight.0 >= self.adc_bailout && surface_passes {
-            let ior = sanitise_ior(material.interior.ior);
-            let (ratio, beyond) = if entering {
-                (media.ior() / ior, media.entered(hit.material, ior))
-            } else {
-                let beyond = media.left(hit.material);
-                (ior / beyond.ior(), beyond)
-            };
             if (ratio - 1.0).abs() < 1e-12 {
                 shaded.continued = Some(Continued {
                     filter: pass,
@@ -250,7 +318,8 @@ impl<'a> Tracer<'a> {
                     origin: hit.point,
                     direction: bent,
                 };
-                shaded.colour += pass * self.trace(through, level + 1, pass_weight, &beyond);
+                let seen = self.trace(through, level + 1, pass_weight, &beyond, RayKind::Refracted);
+                shaded.colour += pass * seen;
             } else {
                 // Total internal reflection: the surface becomes a perfect mirror.
                 reflection = DVec3::ONE;
@@ -265,8 +334,14 @@ impl<'a> Tracer<'a> {
                     origin: hit.point,
                     direction,
                 };
-                let seen = self.trace(reflected, level + 1, reflection_weight, media);
-                shaded.colour += reflection * seen;
+                let seen = self.trace(
+                    reflected,
+                    level + 1,
+                    reflection_weight,
+                    media,
+                    RayKind::Reflected,
+                );
+                shaded.colour += reflection * apply_exponent(seen, finish.reflection_exponent);
             }
         }
         shaded

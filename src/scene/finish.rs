@@ -34,9 +34,9 @@ pub struct Finish {
     /// Mirror reflection colour, the maximum (glancing) one for variable reflection
     /// (default black).
     pub reflection: DVec3,
-    /// Reflection seen along the normal with variable reflection (`reflection { min, max }`;
-    /// equal to `reflection` when only one colour is given).
-    pub reflection_min: DVec3,
+    /// Reflection seen along the normal (`reflection { min, max }`); without it the
+    /// reflection is constant, or (with `fresnel`) the minimum is black.
+    pub reflection_min: Option<DVec3>,
     /// `fresnel`: the reflection varies with the angle by the Fresnel equations.
     pub fresnel: bool,
     /// `falloff`: exponent of the variation from minimum to maximum reflection (default 1).
@@ -68,7 +68,7 @@ impl Default for Finish {
             roughness: 0.05,
             metallic: 0.0,
             reflection: DVec3::ZERO,
-            reflection_min: DVec3::ZERO,
+            reflection_min: None,
             fresnel: false,
             reflection_falloff: 1.0,
             reflection_exponent: 1.0,
@@ -76,13 +76,6 @@ impl Default for Finish {
             conserve_energy: false,
             irid: None,
         }
-    }
-}
-
-impl Finish {
-    /// Whether the reflection varies with the viewing angle.
-    pub fn variable_reflection(&self) -> bool {
-        self.fresnel || self.reflection_min != self.reflection
     }
 }
 
