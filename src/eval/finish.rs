@@ -93,6 +93,10 @@ impl Evaluator {
                             continue;
                         }
                         if &**w == "irid" {
+                            self.warn(
+                                block.head_span,
+                                "`irid` is parsed but not rendered yet; it is ignored",
+                            );
                             let mut body = Stream::new(block.body.clone());
                             finish.irid = Some(self.eval_irid(&mut body, finish.irid)?);
                             continue;

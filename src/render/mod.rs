@@ -15,6 +15,7 @@
 
 pub mod area_light;
 pub mod camera;
+pub mod dispersion;
 pub mod encoding;
 pub mod lights;
 pub mod output;

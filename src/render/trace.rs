@@ -38,6 +38,7 @@
 //!   0.4 · 0.7. (Not matched: in isolated tests a mirror seen that way reflects only up to
 //!   bailout (parent · max(T))² · reflection.)
 
+use super::dispersion::band;
 use super::encoding::is_legacy_scene;
 use super::lights::{prepare_lights, transmission, SceneLight};
 use super::pattern::pigment_colour;
@@ -69,6 +70,8 @@ const GREY_WEIGHTS: DVec3 = DVec3::new(0.297, 0.589, 0.114);
 pub struct Media {
     entries: [(u32, f64); MEDIA_DEPTH],
     len: usize,
+    /// For a ray of one dispersion band: the exponent applied to `dispersion`.
+    band: Option<f64>,
 }
 
 impl Media {
@@ -76,6 +79,7 @@ impl Media {
     pub const OUTSIDE: Media = Media {
         entries: [(0, 1.0); MEDIA_DEPTH],
         len: 0,
+        band: None,
     };
 
     /// Index of refraction of the innermost medium.
@@ -287,7 +291,11 @@ impl<'a> Tracer<'a> {
         }
 
         // The indices of refraction on both sides, for refraction and Fresnel reflection.
-        let ior = sanitise_ior(material.interior.ior);
+        let interior = &material.interior;
+        let mut ior = sanitise_ior(interior.ior);
+        if let Some(offset) = media.band {
+            ior = sanitise_ior(ior * interior.dispersion.powf(offset));
+        }
         let (ratio, beyond) = if entering {
             (media.ior() / ior, media.entered(hit.material, ior))
         } else {
@@ -313,6 +321,14 @@ impl<'a> Tracer<'a> {
                     weight: pass_weight,
                     media: beyond,
                 });
+            } else if entering && media.band.is_none() && disperses(interior) {
+                match self.dispersed(ray, hit, normal, media, ior, level, pass_weight) {
+                    Some(seen) => shaded.colour += pass * seen,
+                    None => {
+                        reflection = DVec3::ONE;
+                        reflection_weight = pass_weight;
+                    }
+                }
             } else if let Some(bent) = refract(ray.direction, normal, ratio) {
                 let through = Ray {
                     origin: hit.point,
@@ -346,6 +362,48 @@ impl<'a> Tracer<'a> {
         }
         shaded
     }
+}
+
+impl Tracer<'_> {
+    /// White light entering a dispersive object: one refracted ray per band, each with its
+    /// own index of refraction, weighted by the band's colour. `None` on total internal
+    /// reflection of the middle of the spectrum.
+    #[allow(clippy::too_many_arguments)]
+    fn dispersed(
+        &self,
+        ray: &Ray,
+        hit: &SurfaceHit,
+        normal: DVec3,
+        media: &Media,
+        ior: f64,
+        level: u32,
+        weight: RayWeight,
+    ) -> Option<DVec3> {
+        let interior = &self.world.materials.get(hit.material as usize)?.interior;
+        let count = interior.dispersion_samples.max(2);
+        refract(ray.direction, normal, media.ior() / ior)?;
+        let mut total = DVec3::ZERO;
+        for index in 0..count {
+            let (offset, colour) = band(index, count);
+            let band_ior = sanitise_ior(ior * interior.dispersion.powf(offset));
+            let mut beyond = media.entered(hit.material, band_ior);
+            beyond.band = Some(offset);
+            let Some(bent) = refract(ray.direction, normal, media.ior() / band_ior) else {
+                continue;
+            };
+            let through = Ray {
+                origin: hit.point,
+                direction: bent,
+            };
+            total += colour * self.trace(through, level + 1, weight, &beyond, RayKind::Refracted);
+        }
+        Some(total)
+    }
+}
+
+/// Whether an interior splits light into bands.
+fn disperses(interior: &crate::scene::Interior) -> bool {
+    interior.dispersion != 1.0 && interior.dispersion > 0.0 && interior.dispersion.is_finite()
 }
 
 /// A ray's importance for adaptive depth control: compared with `adc_bailout` before the
