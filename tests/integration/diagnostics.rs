@@ -161,3 +161,23 @@ fn files_outside_the_scene_folder_are_refused() {
         ],
     );
 }
+
+#[test]
+fn area_light_sizes_must_be_positive() {
+    check(
+        "area_light_size",
+        2,
+        36,
+        &["an area light needs 1 to 4096 lights per axis", "this is 0"],
+    );
+}
+
+#[test]
+fn area_light_modifiers_need_an_area_light() {
+    check(
+        "area_modifier_alone",
+        2,
+        3,
+        &["`jitter` needs an `area_light` before it"],
+    );
+}
