@@ -23,7 +23,7 @@ const SPOTLIGHT_DEFAULT: (f64, f64) = (30.0, 45.0);
 const CYLINDER_DEFAULT: (f64, f64) = (0.75, 1.0);
 
 /// The largest number of point lights along one axis of an area light.
-const MAX_AREA_SIZE: f64 = 4096.0;
+const MAX_AREA_SIZE: f64 = 257.0;
 
 impl Evaluator {
     pub(crate) fn eval_light(&mut self, stream: &mut Stream) -> EvalResult<LightSource> {

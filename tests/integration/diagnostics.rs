@@ -168,7 +168,7 @@ fn area_light_sizes_must_be_positive() {
         "area_light_size",
         2,
         36,
-        &["an area light needs 1 to 4096 lights per axis", "this is 0"],
+        &["an area light needs 1 to 257 lights per axis", "this is 0"],
     );
 }
 
