@@ -20,6 +20,10 @@
 //!   length the shadow ray runs inside them.
 //! - parallel lights: shadow rays run along the light's direction up to the plane through
 //!   the light perpendicular to it; points beyond that plane are lit but never shadowed.
+//!   Cylinder lights do the same along their axis (their shadows do not spread; measured
+//!   with a sphere in a grazing beam).
+//! - cylinder beam: with d the distance from the axis, `(1 − d/falloff)^tightness` times the
+//!   smooth step from `falloff` down to `radius` (zero behind the light).
 //! - area lights: see [`super::area_light`]; the diffuse and highlight directions are the
 //!   centre's unless `area_illumination` is on.
 
@@ -150,7 +154,12 @@ pub fn incoming(light: &LightSource, point: DVec3) -> Option<Incoming> {
     if !(distance > 0.0 && distance.is_finite()) {
         return None;
     }
-    let (direction, shadow_distance) = match light.parallel {
+    // Cylinder lights, like parallel ones, send their light along the beam's axis.
+    let cylinder_aim = light
+        .spotlight
+        .filter(|spot| spot.cylinder)
+        .map(|spot| spot.point_at);
+    let (direction, shadow_distance) = match light.parallel.or(cylinder_aim) {
         Some(point_at) => {
             let direction = (light.position - point_at).try_normalize()?;
             (direction, offset.dot(direction))

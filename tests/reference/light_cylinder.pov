@@ -1,7 +1,6 @@
 // Tests: cylinder lights: beams of constant width around their axis, with radius,
-// falloff and tightness. durer follows the manual (smooth step between radius and falloff
-// in distance from the axis, times (1 - d/falloff)^tightness); POV-Ray 3.7 draws the beam
-// edge with a slightly different curve (0.8% of pixels differ, within the default tolerance).
+// falloff and tightness; light runs along the axis, so the sphere's shadow in the grazing
+// beam does not spread.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 5, -7> look_at <0, 0, 0> angle 50 }
