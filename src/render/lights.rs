@@ -341,6 +341,27 @@ mod tests {
     }
 
     #[test]
+    fn cylinder_beam_matches_povray_samples() {
+        // A beam straight down from y = 1000, sampled on the floor at distance d from the
+        // axis (POV-Ray 3.7 renders, linear values).
+        let beam = |radius, falloff, tightness| Spotlight {
+            point_at: DVec3::ZERO,
+            radius,
+            falloff,
+            tightness,
+            cylinder: true,
+        };
+        let at = |spot: &Spotlight, d: f64| {
+            cylinder_factor(spot, DVec3::new(0.0, 1000.0, 0.0), DVec3::new(d, 0.0, 0.0))
+        };
+        assert!((at(&beam(0.0, 4.0, 1.0), 3.95) - 0.0125).abs() < 1e-4);
+        assert!((at(&beam(0.0, 4.0, 1.0), 0.05) - 0.9875).abs() < 1e-4);
+        assert!((at(&beam(2.0, 4.0, 0.0), 3.95) - 0.00186).abs() < 1e-4);
+        assert_eq!(at(&beam(2.0, 4.0, 0.0), 1.9), 1.0);
+        assert_eq!(at(&beam(2.0, 4.0, 0.0), 4.1), 0.0);
+    }
+
+    #[test]
     fn fading() {
         let light = LightSource {
             fade_distance: 2.0,
