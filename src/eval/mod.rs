@@ -11,7 +11,9 @@ mod camera;
 mod datetime;
 mod expr;
 mod files;
+mod finish;
 mod image_map;
+mod light;
 mod literals;
 mod macros;
 mod objects;
@@ -475,7 +477,7 @@ impl Evaluator {
                 self.objects.push(object);
             }
             Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),
-            Value::Light(light) => self.lights.push(Rc::unwrap_or_clone(light)),
+            Value::Light(light) => self.add_light(Rc::unwrap_or_clone(light)),
             Value::Atmospheric(effect) => self.add_atmospheric_effect(&effect),
             Value::Colour(colour) if matches!(item, Item::Block(_)) => self.background = colour,
             Value::Nothing => {} // settings blocks and left-out features
@@ -522,7 +524,11 @@ impl Evaluator {
         }
     }
 
+    /// Adds a light to the scene, and its `looks_like` object to the objects.
     pub(crate) fn add_light(&mut self, light: LightSource) {
+        if let Some(shape) = &light.looks_like {
+            self.objects.push((**shape).clone());
+        }
         self.lights.push(light);
     }
 

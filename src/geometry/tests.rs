@@ -270,10 +270,16 @@ fn materials_inherit_and_share_textures() {
         },
         0.5,
     );
-    own.interior = Some(Interior { ior: 2.0 });
+    own.interior = Some(Interior {
+        ior: 2.0,
+        ..Interior::default()
+    });
     let mut group = csg(CsgOperation::Union, vec![first, second, own]);
     group.texture = Some(owner_texture);
-    group.interior = Some(Interior { ior: 1.5 });
+    group.interior = Some(Interior {
+        ior: 1.5,
+        ..Interior::default()
+    });
     let world_from_group = Transform::translation(DVec3::new(0.0, 0.0, 10.0));
     group.transform = world_from_group;
     let plain = Object::new(Shape::Sphere {

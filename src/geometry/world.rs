@@ -172,6 +172,17 @@ impl World {
         })
     }
 
+    /// Nearest hit like [`World::first_hit`], ignoring objects whose material `skip` rejects.
+    pub fn first_hit_skipping(
+        &self,
+        ray: &Ray,
+        min_distance: f64,
+        max_distance: f64,
+        skip: &impl Fn(u32) -> bool,
+    ) -> Option<SurfaceHit> {
+        self.search(ray, min_distance, max_distance, skip)
+    }
+
     /// Number of leaf primitives (shapes), counting every CSG child.
     pub fn object_count(&self) -> usize {
         self.leaf_count

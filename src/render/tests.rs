@@ -55,7 +55,10 @@ fn textured(shape: Shape, pigment: Pigment, finish: Finish, ior: Option<f64>) ->
         finish,
         ..Texture::default()
     }));
-    object.interior = ior.map(|ior| Interior { ior });
+    object.interior = ior.map(|ior| Interior {
+        ior,
+        ..Interior::default()
+    });
     object
 }
 
@@ -64,14 +67,7 @@ fn plane(normal: DVec3, distance: f64) -> Shape {
 }
 
 fn point_light(position: DVec3) -> LightSource {
-    LightSource {
-        position,
-        colour: DVec3::ONE,
-        shadowless: false,
-        spotlight: None,
-        fade_distance: 0.0,
-        fade_power: 0.0,
-    }
+    LightSource::point(position, DVec3::ONE)
 }
 
 /// The centre pixel of a 3×3 render (its ray runs exactly along the camera direction).
@@ -306,6 +302,7 @@ fn busy_scene() -> Scene {
         radius: 15.0,
         falloff: 30.0,
         tightness: 5.0,
+        cylinder: false,
     });
     let mut busy = scene(
         vec![
@@ -435,7 +432,10 @@ fn hostile_values_do_not_panic() {
             },
             ..Texture::default()
         }));
-        object.interior = Some(Interior { ior: 0.0 });
+        object.interior = Some(Interior {
+            ior: 0.0,
+            ..Interior::default()
+        });
     }
     let world = World::build(&odd_finish);
     let image = render(

@@ -373,3 +373,23 @@ fn an_undefined_macro_argument_is_refused() {
         &["cannot pass undefined identifier `Nothing` to a macro"],
     );
 }
+
+#[test]
+fn area_light_sizes_must_be_positive() {
+    check(
+        "area_light_size",
+        2,
+        36,
+        &["an area light needs 1 to 257 lights per axis", "this is 0"],
+    );
+}
+
+#[test]
+fn area_light_modifiers_need_an_area_light() {
+    check(
+        "area_modifier_alone",
+        2,
+        3,
+        &["`jitter` needs an `area_light` before it"],
+    );
+}
