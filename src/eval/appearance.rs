@@ -142,8 +142,8 @@ impl Evaluator {
                     let mut body = Stream::new(block.body.clone());
                     match &*head {
                         "finish" => {
-                            texture.finish =
-                                self.eval_finish(&mut body, Some(texture.finish.clone()))?;
+                            let base = crate::scene::Finish::clone(&texture.finish);
+                            texture.finish = Arc::new(self.eval_finish(&mut body, Some(base))?);
                         }
                         "texture_map" => {
                             let entries = self.eval_texture_map(&mut body)?;
@@ -172,7 +172,9 @@ impl Evaluator {
                         }
                         _ => match self.eval_block(block)? {
                             Value::Pigment(p) => texture.pigment = Rc::unwrap_or_clone(p),
-                            Value::Normal(n) => texture.normal = Some(Rc::unwrap_or_clone(n)),
+                            Value::Normal(n) => {
+                                texture.normal = Some(Box::new(Rc::unwrap_or_clone(n)))
+                            }
                             Value::Transform(t) => texture.transform(&t),
                             Value::Nothing => {}
                             _ => return Err(self.unexpected_in(&item, "texture")),
@@ -366,7 +368,7 @@ impl Evaluator {
                         None => PigmentMap::Colours(grey_ramp()),
                     };
                     pigment = Pigment::Pattern {
-                        pattern: spec,
+                        pattern: Box::new(spec),
                         map,
                         transform: Transform::IDENTITY,
                     };
@@ -452,9 +454,9 @@ impl Evaluator {
                             let _ = self.expect_value(stream, "a value")?;
                         }
                         pigment = Pigment::Pattern {
-                            pattern: Pattern::new(crate::pattern::PatternKind::Gradient(
+                            pattern: Box::new(Pattern::new(crate::pattern::PatternKind::Gradient(
                                 DVec3::ZERO,
-                            )),
+                            ))),
                             map: PigmentMap::Colours(grey_ramp()),
                             transform: Transform::IDENTITY,
                         };
@@ -643,8 +645,8 @@ impl Evaluator {
             match value {
                 Value::Texture(t) => texture = (*t).clone(),
                 Value::Pigment(p) => texture.pigment = Rc::unwrap_or_clone(p),
-                Value::Finish(f) => texture.finish = Rc::unwrap_or_clone(f),
-                Value::Normal(n) => texture.normal = Some(Rc::unwrap_or_clone(n)),
+                Value::Finish(f) => texture.finish = Arc::new(Rc::unwrap_or_clone(f)),
+                Value::Normal(n) => texture.normal = Some(Box::new(Rc::unwrap_or_clone(n))),
                 Value::Nothing => {}
                 _ => return Err(self.unexpected_in(&item, "#default")),
             }

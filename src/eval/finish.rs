@@ -32,7 +32,7 @@ impl Evaluator {
         stream: &mut Stream,
         base: Option<Finish>,
     ) -> EvalResult<Finish> {
-        let mut finish = base.unwrap_or_else(|| self.default_texture.finish.clone());
+        let mut finish = base.unwrap_or_else(|| Finish::clone(&self.default_texture.finish));
         let mut albedo = Albedo::default();
         while let Some(item) = self.next_item(stream)? {
             match &item {

@@ -306,7 +306,7 @@ impl Evaluator {
 
     /// `normal { [N] PATTERN [bump_size] modifiers | bump_map {..} | average normal_map {..} }`.
     pub(crate) fn eval_normal(&mut self, stream: &mut Stream) -> EvalResult<Normal> {
-        let mut normal = self.default_texture.normal.clone();
+        let mut normal = self.default_texture.normal.clone().map(|boxed| *boxed);
         let mut average = false;
         let mut pattern_started = false;
         while let Some(item) = self.next_item(stream)? {

@@ -88,7 +88,7 @@ pub struct Object {
     /// Pattern transformations inside are expressed in this object's local space.
     pub texture: Option<Arc<Texture>>,
     /// Interior (index of refraction...); `None` inherits the parent's or the default.
-    pub interior: Option<Interior>,
+    pub interior: Option<Box<Interior>>,
     /// Swaps inside and outside (`inverse`).
     pub inverse: bool,
     /// The object casts no shadow (`no_shadow`).
