@@ -590,6 +590,41 @@ impl Evaluator {
                         match &part {
                             Item::Comma(_) => {}
                             Item::Expr(e) => values.push((self.eval_expr(e)?, e.span())),
+                            // `[0.2 green 0.3]`: colour components written as keywords
+                            // change the entry's colour (black when it has none yet).
+                            Item::Keyword(word, span)
+                                if matches!(
+                                    &**word,
+                                    "red"
+                                        | "green"
+                                        | "blue"
+                                        | "filter"
+                                        | "transmit"
+                                        | "gray"
+                                        | "grey"
+                                ) =>
+                            {
+                                let amount = self.expect_float(&mut entry, "a float")?;
+                                if values.len() < 2 {
+                                    values.push((Value::Colour(Colour::BLACK), *span));
+                                }
+                                let last = values.len() - 1;
+                                let (value, at) = values[last].clone();
+                                let mut colour = self.to_colour(value, at)?;
+                                match &**word {
+                                    "red" => colour.red = amount,
+                                    "green" => colour.green = amount,
+                                    "blue" => colour.blue = amount,
+                                    "filter" => colour.filter = amount,
+                                    "transmit" => colour.transmit = amount,
+                                    _ => {
+                                        colour.red = amount;
+                                        colour.green = amount;
+                                        colour.blue = amount;
+                                    }
+                                }
+                                values[last] = (Value::Colour(colour), at);
+                            }
                             _ => return Err(self.unexpected_in(&part, "color_map entry")),
                         }
                     }

@@ -290,6 +290,11 @@ impl Evaluator {
                         .into()),
                 }
             }
+            // `average` maps may leave out an entry's weight (POV-Ray then weighs it 1).
+            Some(other) if !matches!(other, Item::Comma(_)) => {
+                body.push_back(other);
+                Ok(1.0)
+            }
             Some(other) => Err(self
                 .error(
                     other.span(),
