@@ -67,6 +67,9 @@ pub struct PlacedWarp {
 /// The patterns.
 #[derive(Clone, Debug)]
 pub enum PatternKind {
+    /// `function { .. }`: a user function of x, y, z, its value used as is (the wave shape
+    /// then wraps it into [0, 1] as for every pattern).
+    Function(std::sync::Arc<crate::function::Function>),
     /// Banded like marble with its own turbulence (`agate_turb`, default 1).
     Agate {
         /// The built-in turbulence's amount.
@@ -358,6 +361,7 @@ impl PatternSpec {
             PatternKind::Fractal(fractal) => fractal.value(p.x, p.y),
             PatternKind::Gradient(direction) => geometric::gradient_raw(p, *direction),
             PatternKind::Granite => noise_based::granite(p, generator),
+            PatternKind::Function(function) => function.eval_point(p),
             PatternKind::Leopard => geometric::leopard(p),
             PatternKind::Marble => noise_based::marble(p, turbulence, generator),
             PatternKind::Onion => geometric::onion(p),
