@@ -324,7 +324,7 @@ impl PatternSpec {
             PatternKind::Boxed => geometric::boxed(p),
             PatternKind::Bozo | PatternKind::Bumps => noise_based::bozo(p, generator),
             PatternKind::Cells => noise_based::cells(p),
-            PatternKind::Crackle(settings) => noise_based::crackle(p, settings),
+            PatternKind::Crackle(settings) => noise_based::crackle(p, settings, generator),
             PatternKind::Cylindrical => geometric::cylindrical(p),
             PatternKind::Dents => noise_based::dents(p, generator),
             PatternKind::Facets { .. } => 0.0,
