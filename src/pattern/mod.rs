@@ -261,15 +261,12 @@ impl PatternSpec {
     }
 
     /// True for the patterns that use the classic turbulence inside their formula instead
-    /// of moving the point with it.
+    /// of moving the point with it. (The spirals do both, measured: the point is moved, then
+    /// the scalar turbulence at the moved point is added.)
     fn handles_own_turbulence(&self) -> bool {
         matches!(
             self.kind,
-            PatternKind::Marble
-                | PatternKind::Wood
-                | PatternKind::Agate { .. }
-                | PatternKind::Spiral1(_)
-                | PatternKind::Spiral2(_)
+            PatternKind::Marble | PatternKind::Wood | PatternKind::Agate { .. }
         )
     }
 
