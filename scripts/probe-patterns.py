@@ -39,6 +39,7 @@ PATTERNS = [
     ("gradient_turbulence", "gradient x turbulence 0.5"),
     ("gradient_turbulence_shape", "gradient x turbulence <0.8, 0.1, 0> octaves 3 omega 0.7 lambda 3"),
     ("spiral1_turbulence", "spiral1 2 turbulence 0.3"),
+    ("crackle_solid_generator1", "crackle solid noise_generator 1"),
 ]
 
 
