@@ -302,15 +302,12 @@ impl PatternSpec {
     }
 
     /// True for the patterns that use the classic turbulence inside their formula instead
-    /// of moving the point with it.
+    /// of moving the point with it. (The spirals do both, measured: the point is moved, then
+    /// the scalar turbulence at the moved point is added.)
     fn handles_own_turbulence(&self) -> bool {
         matches!(
             self.kind,
-            PatternKind::Marble
-                | PatternKind::Wood
-                | PatternKind::Agate { .. }
-                | PatternKind::Spiral1(_)
-                | PatternKind::Spiral2(_)
+            PatternKind::Marble | PatternKind::Wood | PatternKind::Agate { .. }
         )
     }
 
@@ -354,7 +351,7 @@ impl PatternSpec {
             PatternKind::Boxed => geometric::boxed(p),
             PatternKind::Bozo | PatternKind::Bumps => noise_based::bozo(p, generator),
             PatternKind::Cells => noise_based::cells(p),
-            PatternKind::Crackle(settings) => noise_based::crackle(p, settings),
+            PatternKind::Crackle(settings) => noise_based::crackle(p, settings, generator),
             PatternKind::Cylindrical => geometric::cylindrical(p),
             PatternKind::Dents => noise_based::dents(p, generator),
             PatternKind::Facets { .. } | PatternKind::Pavement => 0.0,
