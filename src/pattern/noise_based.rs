@@ -81,11 +81,21 @@ pub fn granite(point: DVec3, generator: NoiseGenerator) -> f64 {
     let mut sum = 0.0;
     let mut frequency = 1.0;
     for _ in 0..6 {
-        let stretched = (2.0 * noise(point * (4.0 * frequency), generator) - 0.5).clamp(0.0, 1.0);
+        let stretched = octave_noise(point * (4.0 * frequency), generator);
         sum += (0.5 - stretched).abs() / frequency;
         frequency *= 2.0;
     }
     sum
+}
+
+/// One octave's noise in granite and wrinkles: generator 1's value as it is; generators 2
+/// and 3 stretched to `2 N - 0.5` and clamped to [0, 1] (as in scalar turbulence).
+fn octave_noise(point: DVec3, generator: NoiseGenerator) -> f64 {
+    let value = noise(point, generator);
+    match generator {
+        NoiseGenerator::Original => value,
+        _ => (2.0 * value - 0.5).clamp(0.0, 1.0),
+    }
 }
 
 /// `wrinkles`: ten octaves of noise, each half the weight and twice the frequency of the
@@ -95,7 +105,7 @@ pub fn wrinkles(point: DVec3, generator: NoiseGenerator) -> f64 {
     let mut weight = 0.5;
     let mut scale = 1.0;
     for _ in 0..10 {
-        sum += weight * (2.0 * noise(point * scale, generator) - 0.5).clamp(0.0, 1.0);
+        sum += weight * octave_noise(point * scale, generator);
         weight *= 0.5;
         scale *= 2.0;
     }
