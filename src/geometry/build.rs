@@ -238,10 +238,11 @@ fn unclipped_pov_bounding_box(object: &Object) -> Option<Aabb> {
 /// False for shapes POV-Ray cannot invert (triangles, polygons, meshes without an inside):
 /// `inverse` leaves them unchanged.
 fn invertible(shape: &Shape) -> bool {
-    !matches!(
-        shape,
-        Shape::Triangle { .. } | Shape::SmoothTriangle { .. } | Shape::Polygon(_) | Shape::Mesh(_)
-    )
+    match shape {
+        Shape::Triangle { .. } | Shape::SmoothTriangle { .. } | Shape::Polygon(_) => false,
+        Shape::Mesh(mesh) => mesh.inside_vector.is_some(),
+        _ => true,
+    }
 }
 
 /// Pads bounds so box tests are conservative; non-finite bounds become unbounded.
@@ -515,7 +516,23 @@ impl Builder {
                         CsgNode::Leaf { index, bounds }
                     })
                     .collect();
-                if nodes.len() == 1 {
+                let solid_direction = match shape {
+                    Shape::Mesh(mesh) => mesh.inside_vector.and_then(|vector| {
+                        world_from_local
+                            .outer_from_inner
+                            .transform_vector3(vector)
+                            .try_normalize()
+                    }),
+                    _ => None,
+                };
+                if let Some(direction) = solid_direction {
+                    // A mesh with an `inside_vector` is a solid: inside by crossing parity.
+                    let solid = Combination::Solid {
+                        direction,
+                        inverted: inversion.odd,
+                    };
+                    CsgNode::combine(solid, nodes)
+                } else if nodes.len() == 1 {
                     nodes
                         .pop()
                         .unwrap_or_else(|| CsgNode::combine(Combination::Union, Vec::new()))

@@ -18,8 +18,17 @@ use glam::DVec3;
 use std::cell::RefCell;
 
 /// How a CSG node combines its children.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Combination {
+    /// A mesh with an `inside_vector`: every surface of its triangles, inside where a ray from
+    /// the point along `direction` (world space) crosses them an odd number of times
+    /// (swapped when `inverted`).
+    Solid {
+        /// The mesh's `inside_vector` in world space.
+        direction: DVec3,
+        /// The mesh is inverted.
+        inverted: bool,
+    },
     /// Every surface of every child.
     Union,
     /// Surfaces of each child that lie inside all other children.
@@ -45,6 +54,9 @@ pub struct NodeBounds {
     /// inverted finite shapes (a difference's subtracted parts) and what is built of them.
     pub outside: Option<Aabb>,
 }
+
+/// Crossings closer than this to the start of a mesh's inside ray do not count.
+const SOLID_EPSILON: f64 = 1e-9;
 
 /// Nodes with at least this many children index them by their boxes.
 const INDEXED_CHILDREN: usize = 12;
@@ -168,6 +180,24 @@ impl CsgNode {
     pub fn combine(combination: Combination, children: Vec<CsgNode>) -> CsgNode {
         let child_bounds: Vec<NodeBounds> = children.iter().map(CsgNode::bounds).collect();
         let bounds = match combination {
+            Combination::Solid { inverted, .. } => {
+                let surface = child_bounds
+                    .iter()
+                    .try_fold(Aabb::EMPTY, |all, b| Some(all.union(&b.surface?)));
+                if inverted {
+                    NodeBounds {
+                        surface,
+                        inside: None,
+                        outside: surface,
+                    }
+                } else {
+                    NodeBounds {
+                        surface,
+                        inside: surface,
+                        outside: None,
+                    }
+                }
+            }
             Combination::Union | Combination::Merge => NodeBounds {
                 surface: child_bounds
                     .iter()
@@ -468,7 +498,7 @@ impl CsgTree {
         }
         let child_start = hits.len();
         self.gather(&children[position], query, hits, candidates);
-        if combination == Combination::Union {
+        if matches!(combination, Combination::Union | Combination::Solid { .. }) {
             return;
         }
         let mut kept = child_start;
@@ -498,6 +528,47 @@ impl CsgTree {
         self.inside_node(&self.root, point)
     }
 
+    /// True when a ray from `point` along `direction` crosses the surfaces of `children` (a
+    /// mesh's triangles) an odd number of times.
+    fn odd_crossings(
+        &self,
+        children: &[CsgNode],
+        index: Option<&ChildIndex>,
+        point: DVec3,
+        direction: DVec3,
+    ) -> bool {
+        let ray = Ray::new(point, direction);
+        let mut odd = false;
+        let mut count = |child: usize| {
+            if let Some(CsgNode::Leaf { index, .. }) = children.get(child) {
+                let mut roots = Roots::new();
+                self.leaves[*index as usize].intersect(&ray, &mut roots);
+                for (distance, _) in roots.iter() {
+                    if distance > SOLID_EPSILON {
+                        odd = !odd;
+                    }
+                }
+            }
+        };
+        match index {
+            Some(index) => {
+                index.surface.for_each_on_ray(
+                    point,
+                    direction.recip(),
+                    0.0,
+                    f64::INFINITY,
+                    |position| count(index.surface_children[position] as usize),
+                );
+                index
+                    .unbounded_surface
+                    .iter()
+                    .for_each(|&child| count(child as usize));
+            }
+            None => (0..children.len()).for_each(&mut count),
+        }
+        odd
+    }
+
     /// True when the world `point` is inside the subtree `node`.
     fn inside_node(&self, node: &CsgNode, point: DVec3) -> bool {
         let bounds = node.bounds();
@@ -519,6 +590,13 @@ impl CsgTree {
                 index,
                 ..
             } => match (combination, index) {
+                (
+                    Combination::Solid {
+                        direction,
+                        inverted,
+                    },
+                    index,
+                ) => self.odd_crossings(children, index.as_deref(), point, *direction) != *inverted,
                 (Combination::InvertedClip, _) => {
                     let mut parts = children.iter();
                     let first_inside = parts
