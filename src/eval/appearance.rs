@@ -110,7 +110,7 @@ impl Evaluator {
                             Some(count) => self.texture_block_list(stream, count)?,
                             None => None,
                         };
-                        pattern = Some((spec, blocks.map(BlendMap::Blocks), *span));
+                        pattern = Some((*spec, blocks.map(BlendMap::Blocks), *span));
                         pattern_transform = Transform::IDENTITY;
                         continue;
                     }

@@ -55,7 +55,7 @@ pub(crate) enum UnsupportedWord {
     Modifier,
     /// A pattern durer cannot render yet: a stand-in with the value 0 everywhere (the first
     /// entry of a map, no bumps).
-    Pattern(Pattern),
+    Pattern(Box<Pattern>),
 }
 
 impl Evaluator {
@@ -98,9 +98,9 @@ impl Evaluator {
                 if matches!(w, "mandel" | "julia" | "magnet") {
                     let _ = self.expect_value(stream, "a value")?;
                 }
-                Ok(UnsupportedWord::Pattern(Pattern::new(
+                Ok(UnsupportedWord::Pattern(Box::new(Pattern::new(
                     PatternKind::Gradient(glam::DVec3::ZERO),
-                )))
+                ))))
             }
             _ => Ok(UnsupportedWord::Other),
         }
@@ -365,7 +365,7 @@ impl Evaluator {
                     UnsupportedWord::Modifier => continue,
                     UnsupportedWord::Pattern(pattern) => {
                         let mut fresh = Normal::new(NormalSource::Pattern {
-                            pattern,
+                            pattern: *pattern,
                             slope_map: None,
                         });
                         if let Some(amount) = self.optional_amount(stream)? {
