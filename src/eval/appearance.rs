@@ -31,7 +31,6 @@ pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &[
     "function",
     "granite",
     "hexagon",
-    "image_pattern",
     "julia",
     "leopard",
     "magnet",
@@ -69,6 +68,11 @@ impl Evaluator {
         let mut pattern_transform = Transform::IDENTITY;
         let mut average = false;
         while let Some(item) = self.next_item(stream)? {
+            if let Some(spec) = self.image_pattern(&item)? {
+                pattern = Some((spec, None, item.span()));
+                pattern_transform = Transform::IDENTITY;
+                continue;
+            }
             if let Item::Keyword(word, span) = &item {
                 if &**word == "average" {
                     average = true;
@@ -358,6 +362,14 @@ impl Evaluator {
                     };
                     continue;
                 }
+            }
+            if let Some(spec) = self.image_pattern(&item)? {
+                pigment = Pigment::Pattern {
+                    pattern: spec,
+                    map: PigmentMap::Colours(grey_ramp()),
+                    transform: Transform::IDENTITY,
+                };
+                continue;
             }
             if let Item::Keyword(word, span) = &item {
                 if let Some(spec) = self.pattern_keyword(word, *span, stream)? {

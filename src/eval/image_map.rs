@@ -6,23 +6,50 @@
 //!
 //! Gamma (POV-Ray 3.7): an image's stored values are decoded with the `gamma` given in the
 //! block (`gamma srgb` or a number), else with the sRGB transfer function, except for HDR
-//! files, which are linear already.
+//! files, which are linear already. An `image_pattern` uses the stored values whatever
+//! `gamma` says (measured: a stored 64 gives 0.25098 with and without `gamma 1.0`).
 
 use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::raster::{load, RasterFormat};
-use crate::scene::{ImageGamma, ImageMap, ImageProjection};
-use crate::syntax::ast::Item;
+use crate::scene::{ImageGamma, ImageMap, ImageProjection, Pattern, PatternKind};
+use crate::syntax::ast::{BlockHead, Item};
+use std::sync::Arc;
 
 impl Evaluator {
+    /// An `image_pattern { .. }` block as a pattern; `None` for any other item.
+    pub(crate) fn image_pattern(&mut self, item: &Item) -> EvalResult<Option<Pattern>> {
+        let Item::Block(block) = item else {
+            return Ok(None);
+        };
+        if !matches!(&block.head, BlockHead::Word(word) if &**word == "image_pattern") {
+            return Ok(None);
+        }
+        let mut body = Stream::new(block.body.clone());
+        let (image, _) = self.read_image(&mut body, block.head_span, ImageUse::Pattern)?;
+        Ok(Some(Pattern::new(PatternKind::ImagePattern(Arc::new(
+            image,
+        )))))
+    }
+
     /// Reads an `image_map` or `bump_map` body (`head_span` is the block's keyword), with
     /// the `bump_size` given inside it.
     pub(crate) fn eval_image_map(
         &mut self,
         stream: &mut Stream,
         head_span: Span,
+    ) -> EvalResult<(ImageMap, Option<f64>)> {
+        self.read_image(stream, head_span, ImageUse::Colours)
+    }
+
+    /// Reads an image block's body for `purpose`.
+    fn read_image(
+        &mut self,
+        stream: &mut Stream,
+        head_span: Span,
+        purpose: ImageUse,
     ) -> EvalResult<(ImageMap, Option<f64>)> {
         let mut bump_size = None;
         let mut format = RasterFormat::System;
@@ -34,6 +61,7 @@ impl Evaluator {
         let mut transmit_all = 0.0;
         let mut gamma: Option<ImageGamma> = None;
         let mut use_index = false;
+        let mut use_alpha = false;
         while let Some(item) = self.next_item(stream)? {
             match &item {
                 Item::Keyword(word, span) => match &**word {
@@ -91,9 +119,10 @@ impl Evaluator {
                         });
                     }
                     "srgb" => gamma = Some(ImageGamma::Srgb),
-                    "premultiplied" | "use_alpha" => {
+                    "premultiplied" => {
                         let _ = self.optional_bool(stream)?;
                     }
+                    "use_alpha" => use_alpha = self.optional_bool(stream)?,
                     "use_color" | "use_colour" => use_index = false,
                     "use_index" => use_index = true,
                     "bump_size" => bump_size = Some(self.expect_float(stream, "a float")?),
@@ -136,6 +165,7 @@ impl Evaluator {
             .with_label("unreadable image")
         })?;
         let decoding = match gamma {
+            _ if purpose == ImageUse::Pattern => ImageGamma::Linear,
             Some(gamma) => gamma,
             None if raster.high_dynamic_range => ImageGamma::Linear,
             None => ImageGamma::Srgb,
@@ -162,9 +192,19 @@ impl Evaluator {
             filter_all,
             transmit_all,
             use_index,
+            use_alpha,
         };
         Ok((image, bump_size))
     }
+}
+
+/// What an image block is read for.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum ImageUse {
+    /// `image_map` and `bump_map`: colours made linear.
+    Colours,
+    /// `image_pattern`: the stored values.
+    Pattern,
 }
 
 /// A stored channel value turned into linear light.

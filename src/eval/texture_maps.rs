@@ -310,6 +310,18 @@ impl Evaluator {
         let mut average = false;
         let mut pattern_started = false;
         while let Some(item) = self.next_item(stream)? {
+            if let Some(spec) = self.image_pattern(&item)? {
+                let mut fresh = Normal::new(NormalSource::Pattern {
+                    pattern: spec,
+                    slope_map: None,
+                });
+                if let Some(amount) = self.optional_amount(stream)? {
+                    fresh.amount = amount;
+                }
+                normal = Some(fresh);
+                pattern_started = true;
+                continue;
+            }
             if let Item::Keyword(word, span) = &item {
                 if &**word == "average" {
                     average = true;

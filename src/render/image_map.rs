@@ -1,7 +1,7 @@
 //! Image maps: the colour (or height) an image gives at a pattern-space point.
 //!
 //! In: an [`ImageMap`] (pixels already linear) and a point in the image's pattern space.
-//! Out: a [`Colour`] (rgb, filter, transmit) or a height. Holds: no allocation, no panic;
+//! Out: a [`Colour`] (rgb, filter, transmit), a height or an `image_pattern` value. Holds: no allocation, no panic;
 //! non-finite points give a clear colour.
 //!
 //! Projections (`map_type`), as the manual describes them:
@@ -44,6 +44,20 @@ pub fn image_height(image: &ImageMap, point: DVec3) -> f64 {
     };
     let [red, green, blue, _] = sample(image, u, v);
     0.297 * f64::from(red) + 0.587 * f64::from(green) + 0.114 * f64::from(blue)
+}
+
+/// The value of an `image_pattern` at a pattern-space point: the stored grey level
+/// 0.297 R + 0.589 G + 0.114 B (measured), or with `use_alpha` the transparency 1 − alpha
+/// (measured); 0 outside a `once` image.
+pub fn image_value(image: &ImageMap, point: DVec3) -> f64 {
+    let Some((u, v)) = image_coordinates(image, point) else {
+        return 0.0;
+    };
+    let [red, green, blue, alpha] = sample(image, u, v);
+    if image.use_alpha {
+        return 1.0 - f64::from(alpha);
+    }
+    0.297 * f64::from(red) + 0.589 * f64::from(green) + 0.114 * f64::from(blue)
 }
 
 /// The image coordinates (u right, v up, both in [0, 1)) of a pattern-space point;
@@ -133,4 +147,34 @@ fn pixel(image: &ImageMap, column: i64, row: i64) -> [f32; 4] {
         .get(index as usize)
         .copied()
         .unwrap_or([0.0, 0.0, 0.0, 1.0])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn two_pixels(use_alpha: bool) -> ImageMap {
+        ImageMap {
+            width: 2,
+            height: 1,
+            pixels: vec![[1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 0.25]],
+            projection: ImageProjection::Planar,
+            once: false,
+            interpolation: 0,
+            filter_all: 0.0,
+            transmit_all: 0.0,
+            use_index: false,
+            use_alpha,
+        }
+    }
+
+    #[test]
+    fn image_pattern_value_is_weighted_grey_or_transparency() {
+        let image = two_pixels(false);
+        assert!((image_value(&image, DVec3::new(0.25, 0.5, 0.0)) - 0.297).abs() < 1e-12);
+        assert!((image_value(&image, DVec3::new(0.75, 0.5, 0.0)) - 0.589).abs() < 1e-12);
+        let image = two_pixels(true);
+        assert!(image_value(&image, DVec3::new(0.25, 0.5, 0.0)).abs() < 1e-12);
+        assert!((image_value(&image, DVec3::new(0.75, 0.5, 0.0)) - 0.75).abs() < 1e-12);
+    }
 }

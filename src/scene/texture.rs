@@ -171,7 +171,8 @@ pub enum ImageProjection {
 }
 
 /// An image used as a pigment (`image_map`), as heights (`bump_map`) or as a pattern
-/// (`image_pattern`), already decoded into linear values.
+/// (`image_pattern`), already decoded into linear values (an `image_pattern` keeps the
+/// stored values: POV-Ray applies no gamma there).
 #[derive(Clone, Debug)]
 pub struct ImageMap {
     /// Width in pixels.
@@ -192,6 +193,8 @@ pub struct ImageMap {
     pub transmit_all: f64,
     /// `use_index` for bump maps (the palette index stands in for the grey value).
     pub use_index: bool,
+    /// `use_alpha` of an `image_pattern`: the value is the pixel's transparency.
+    pub use_alpha: bool,
 }
 
 impl Texture {
