@@ -6,8 +6,9 @@
 //!
 //! Gamma (POV-Ray 3.7): an image's stored values are decoded with the `gamma` given in the
 //! block (`gamma srgb` or a number), else with the sRGB transfer function, except for HDR
-//! files, which are linear already. An `image_pattern` uses the stored values whatever
-//! `gamma` says (measured: a stored 64 gives 0.25098 with and without `gamma 1.0`).
+//! files, which are linear already. `image_pattern` and `bump_map` use the stored values
+//! whatever `gamma` says (measured: a stored 64 gives the pattern value 0.25098 with and
+//! without `gamma 1.0`; bump tilts are linear in the stored grey levels).
 
 use super::stream::Stream;
 use super::value::Value;
@@ -28,7 +29,7 @@ impl Evaluator {
             return Ok(None);
         }
         let mut body = Stream::new(block.body.clone());
-        let (image, _) = self.read_image(&mut body, block.head_span, ImageUse::Pattern)?;
+        let (image, _) = self.read_image(&mut body, block.head_span, ImageUse::StoredValues)?;
         Ok(Some(Pattern::new(PatternKind::ImagePattern(Arc::new(
             image,
         )))))
@@ -42,6 +43,16 @@ impl Evaluator {
         head_span: Span,
     ) -> EvalResult<(ImageMap, Option<f64>)> {
         self.read_image(stream, head_span, ImageUse::Colours)
+    }
+
+    /// Reads a `bump_map` body (`head_span` is the block's keyword), with the `bump_size`
+    /// given inside it; the heights are the stored values (measured: no gamma decoding).
+    pub(crate) fn eval_bump_map(
+        &mut self,
+        stream: &mut Stream,
+        head_span: Span,
+    ) -> EvalResult<(ImageMap, Option<f64>)> {
+        self.read_image(stream, head_span, ImageUse::StoredValues)
     }
 
     /// Reads an image block's body for `purpose`.
@@ -165,7 +176,7 @@ impl Evaluator {
             .with_label("unreadable image")
         })?;
         let decoding = match gamma {
-            _ if purpose == ImageUse::Pattern => ImageGamma::Linear,
+            _ if purpose == ImageUse::StoredValues => ImageGamma::Linear,
             Some(gamma) => gamma,
             None if raster.high_dynamic_range => ImageGamma::Linear,
             None => ImageGamma::Srgb,
@@ -203,8 +214,8 @@ impl Evaluator {
 enum ImageUse {
     /// `image_map` and `bump_map`: colours made linear.
     Colours,
-    /// `image_pattern`: the stored values.
-    Pattern,
+    /// `image_pattern` and `bump_map`: the stored values.
+    StoredValues,
 }
 
 /// A stored channel value turned into linear light.

@@ -134,7 +134,7 @@ impl Evaluator {
             }
             _ => {
                 // bump_map on its own: a normal.
-                let (image, bump_size) = self.eval_image_map(stream, block.head_span)?;
+                let (image, bump_size) = self.eval_bump_map(stream, block.head_span)?;
                 let mut normal = Normal::new(NormalSource::BumpMap(Arc::new(image)));
                 normal.amount = bump_size.unwrap_or(1.0);
                 Value::Normal(Rc::new(normal))
@@ -461,7 +461,7 @@ impl Evaluator {
                         }
                         "bump_map" => {
                             let (image, bump_size) =
-                                self.eval_image_map(&mut body, block.head_span)?;
+                                self.eval_bump_map(&mut body, block.head_span)?;
                             let mut fresh = Normal::new(NormalSource::BumpMap(Arc::new(image)));
                             fresh.amount = bump_size.unwrap_or(1.0);
                             normal = Some(fresh);

@@ -37,13 +37,33 @@ pub fn image_colour(image: &ImageMap, point: DVec3) -> Colour {
     )
 }
 
-/// The height (grey value) of the image at a pattern-space point, for bump maps.
-pub fn image_height(image: &ImageMap, point: DVec3) -> f64 {
+/// The tilt a `bump_map` of `bump_size` 1 gives the normal at a pattern-space point, in
+/// pattern space (x along the image's u, y along v); zero outside a `once` image.
+///
+/// Measured on a plane with grazing parallel lights and random 8×8 grey images: the tilt is
+/// constant over each pixel (row r counted from the top, column c) and, with h the grey
+/// level (stored value, 0 to 1) and rows and columns wrapping,
+/// x = ½·(h(r+1, c−1) − h(r+1, c+1)) and y = ½·(h(r+1, c−1) + h(r+1, c+1)) − h(r, c)
+/// (least-squares fit over a 3×3 neighbourhood: these weights within 0.002, the others
+/// below 0.002), linear in `bump_size`.
+pub fn bump_map_tilt(image: &ImageMap, point: DVec3) -> DVec3 {
     let Some((u, v)) = image_coordinates(image, point) else {
-        return 0.0;
+        return DVec3::ZERO;
     };
-    let [red, green, blue, _] = sample(image, u, v);
-    0.297 * f64::from(red) + 0.587 * f64::from(green) + 0.114 * f64::from(blue)
+    let (column, row) = pixel_position(image, u, v);
+    let height = |column: i64, row: i64| grey(pixel(image, column, row));
+    let below_left = height(column - 1, row + 1);
+    let below_right = height(column + 1, row + 1);
+    DVec3::new(
+        0.5 * (below_left - below_right),
+        0.5 * (below_left + below_right) - height(column, row),
+        0.0,
+    )
+}
+
+/// The grey level of a pixel: 0.297 R + 0.589 G + 0.114 B (measured).
+fn grey([red, green, blue, _]: [f32; 4]) -> f64 {
+    0.297 * f64::from(red) + 0.589 * f64::from(green) + 0.114 * f64::from(blue)
 }
 
 /// The value of an `image_pattern` at a pattern-space point: the stored grey level
@@ -53,11 +73,11 @@ pub fn image_value(image: &ImageMap, point: DVec3) -> f64 {
     let Some((u, v)) = image_coordinates(image, point) else {
         return 0.0;
     };
-    let [red, green, blue, alpha] = sample(image, u, v);
+    let sampled = sample(image, u, v);
     if image.use_alpha {
-        return 1.0 - f64::from(alpha);
+        return 1.0 - f64::from(sampled[3]);
     }
-    0.297 * f64::from(red) + 0.589 * f64::from(green) + 0.114 * f64::from(blue)
+    grey(sampled)
 }
 
 /// The image coordinates (u right, v up, both in [0, 1)) of a pattern-space point;
@@ -103,9 +123,8 @@ fn sample(image: &ImageMap, u: f64, v: f64) -> [f32; 4] {
     let x = u * width;
     let y = (1.0 - v) * height;
     if image.interpolation == 0 {
-        // v = 0 exactly gives the bottom row (y = height), as POV-Ray renders it.
-        let row = (y.floor() as i64).min(i64::from(image.height) - 1);
-        return pixel(image, x.floor() as i64, row);
+        let (column, row) = pixel_position(image, u, v);
+        return pixel(image, column, row);
     }
     // Between the four nearest pixel centres.
     let x = x - 0.5;
@@ -135,6 +154,15 @@ fn sample(image: &ImageMap, u: f64, v: f64) -> [f32; 4] {
         }
     }
     result
+}
+
+/// The column and row (from the top) of the pixel covering image coordinates (u, v).
+fn pixel_position(image: &ImageMap, u: f64, v: f64) -> (i64, i64) {
+    let column = (u * f64::from(image.width)).floor() as i64;
+    // v = 0 exactly gives the bottom row (y = height), as POV-Ray renders it.
+    let row =
+        (((1.0 - v) * f64::from(image.height)).floor() as i64).min(i64::from(image.height) - 1);
+    (column, row)
 }
 
 /// The pixel at `column`, `row`, wrapping around the image's edges.
@@ -176,5 +204,15 @@ mod tests {
         let image = two_pixels(true);
         assert!(image_value(&image, DVec3::new(0.25, 0.5, 0.0)).abs() < 1e-12);
         assert!((image_value(&image, DVec3::new(0.75, 0.5, 0.0)) - 0.75).abs() < 1e-12);
+    }
+
+    #[test]
+    fn bump_map_tilt_uses_the_row_below() {
+        // One row: the row below is the row itself; left and right neighbours wrap.
+        let image = two_pixels(false);
+        let tilt = bump_map_tilt(&image, DVec3::new(0.25, 0.5, 0.0));
+        // Neighbours of column 0 are both column 1 (grey 0.589); own grey 0.297.
+        assert!(tilt.x.abs() < 1e-12);
+        assert!((tilt.y - (0.589 - 0.297)).abs() < 1e-12);
     }
 }
