@@ -169,10 +169,8 @@ impl Evaluator {
                             pattern_transform = Transform::IDENTITY;
                         }
                         "material_map" => {
-                            self.warn(
-                                block.head_span,
-                                "`material_map` is not supported yet; it is ignored",
-                            );
+                            let compound = self.eval_material_map(&mut body, block.head_span)?;
+                            texture.compound = Some(Arc::new(compound));
                         }
                         _ => match self.eval_block(block)? {
                             Value::Pigment(p) => texture.pigment = Rc::unwrap_or_clone(p),

@@ -15,7 +15,10 @@ use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::raster::{load, RasterFormat};
-use crate::scene::{ImageGamma, ImageMap, ImageProjection, Pattern, PatternKind};
+use crate::scene::{
+    CompoundTexture, ImageGamma, ImageMap, ImageProjection, Pattern, PatternKind, Texture,
+    Transform,
+};
 use crate::syntax::ast::{BlockHead, Item};
 use std::sync::Arc;
 
@@ -29,7 +32,8 @@ impl Evaluator {
             return Ok(None);
         }
         let mut body = Stream::new(block.body.clone());
-        let (image, _) = self.read_image(&mut body, block.head_span, ImageUse::StoredValues)?;
+        let (image, _) =
+            self.read_image(&mut body, block.head_span, ImageUse::StoredValues, None)?;
         Ok(Some(Pattern::new(PatternKind::ImagePattern(Arc::new(
             image,
         )))))
@@ -42,7 +46,36 @@ impl Evaluator {
         stream: &mut Stream,
         head_span: Span,
     ) -> EvalResult<(ImageMap, Option<f64>)> {
-        self.read_image(stream, head_span, ImageUse::Colours)
+        self.read_image(stream, head_span, ImageUse::Colours, None)
+    }
+
+    /// Reads a `material_map` body: the image (stored values, palette indices kept) and its
+    /// textures (POV-Ray 3.7 rejects transformations inside the block).
+    pub(crate) fn eval_material_map(
+        &mut self,
+        stream: &mut Stream,
+        head_span: Span,
+    ) -> EvalResult<CompoundTexture> {
+        let mut materials = MaterialItems {
+            textures: Vec::new(),
+        };
+        let (image, _) = self.read_image(
+            stream,
+            head_span,
+            ImageUse::StoredValues,
+            Some(&mut materials),
+        )?;
+        if materials.textures.is_empty() {
+            return Err(self
+                .error(head_span, "this `material_map` lists no textures")
+                .with_label("expected `texture { .. }` entries after the file name")
+                .into());
+        }
+        Ok(CompoundTexture::MaterialMap {
+            image: Arc::new(image),
+            textures: materials.textures,
+            transform: Transform::IDENTITY,
+        })
     }
 
     /// Reads a `bump_map` body (`head_span` is the block's keyword), with the `bump_size`
@@ -52,15 +85,17 @@ impl Evaluator {
         stream: &mut Stream,
         head_span: Span,
     ) -> EvalResult<(ImageMap, Option<f64>)> {
-        self.read_image(stream, head_span, ImageUse::StoredValues)
+        self.read_image(stream, head_span, ImageUse::StoredValues, None)
     }
 
-    /// Reads an image block's body for `purpose`.
+    /// Reads an image block's body for `purpose`; `materials` collects a `material_map`'s
+    /// textures (other blocks reject them).
     fn read_image(
         &mut self,
         stream: &mut Stream,
         head_span: Span,
         purpose: ImageUse,
+        mut materials: Option<&mut MaterialItems>,
     ) -> EvalResult<(ImageMap, Option<f64>)> {
         let mut bump_size = None;
         let mut format = RasterFormat::System;
@@ -146,6 +181,22 @@ impl Evaluator {
                         _ => return Err(self.unexpected_in(&item, "image_map")),
                     }
                 }
+                Item::Expr(expr) if materials.is_some() => match self.eval_expr(expr)? {
+                    Value::Texture(texture) => {
+                        if let Some(materials) = materials.as_deref_mut() {
+                            materials.textures.push(Texture::clone(&texture));
+                        }
+                    }
+                    _ => return Err(self.unexpected_in(&item, "material_map")),
+                },
+                Item::Block(block) if matches!(&block.head, BlockHead::Word(word) if &**word == "texture") =>
+                {
+                    let Some(materials) = materials.as_deref_mut() else {
+                        return Err(self.unexpected_in(&item, "image_map"));
+                    };
+                    let mut body = Stream::new(block.body.clone());
+                    materials.textures.push(self.eval_texture(&mut body)?);
+                }
                 Item::Comma(_) => {}
                 _ => return Err(self.unexpected_in(&item, "image_map")),
             }
@@ -204,9 +255,16 @@ impl Evaluator {
             transmit_all,
             use_index,
             use_alpha,
+            palette_indices: raster.palette_indices,
         };
         Ok((image, bump_size))
     }
+}
+
+/// What a `material_map` body holds besides the image.
+struct MaterialItems {
+    /// The textures the pixels' indices choose from.
+    textures: Vec<Texture>,
 }
 
 /// What an image block is read for.

@@ -61,6 +61,41 @@ pub fn bump_map_tilt(image: &ImageMap, point: DVec3) -> DVec3 {
     )
 }
 
+/// Which of `count` textures a `material_map` shows at a pattern-space point; `None`
+/// outside a `once` image or without textures.
+///
+/// The index is the pixel's palette index, or for images without a palette its 8-bit red
+/// value (the manual's rule, measured). Measured with 3 and 4 textures, unlike the manual's
+/// plain modulo: an index equal to the count picks the last texture, a larger one wraps
+/// modulo the count (with 4 textures, indices 4, 5, 8, 255 pick 3, 1, 0, 3).
+pub fn material_choice(image: &ImageMap, point: DVec3, count: usize) -> Option<usize> {
+    if count == 0 {
+        return None;
+    }
+    let index = material_index(image, point)?;
+    Some(if index > count {
+        index % count
+    } else {
+        index.min(count - 1)
+    })
+}
+
+/// The palette index (or 8-bit red value) of the pixel at a pattern-space point.
+fn material_index(image: &ImageMap, point: DVec3) -> Option<usize> {
+    let (u, v) = image_coordinates(image, point)?;
+    let (column, row) = pixel_position(image, u, v);
+    let width = i64::from(image.width.max(1));
+    let height = i64::from(image.height.max(1));
+    let index = (row.rem_euclid(height) * width + column.rem_euclid(width)) as usize;
+    match &image.palette_indices {
+        Some(indices) => indices.get(index).map(|&palette| usize::from(palette)),
+        None => {
+            let red = image.pixels.get(index)?[0];
+            Some((f64::from(red).clamp(0.0, 1.0) * 255.0).round() as usize)
+        }
+    }
+}
+
 /// The grey level of a pixel: 0.297 R + 0.589 G + 0.114 B (measured).
 fn grey([red, green, blue, _]: [f32; 4]) -> f64 {
     0.297 * f64::from(red) + 0.589 * f64::from(green) + 0.114 * f64::from(blue)
@@ -193,6 +228,7 @@ mod tests {
             transmit_all: 0.0,
             use_index: false,
             use_alpha,
+            palette_indices: None,
         }
     }
 

@@ -54,6 +54,13 @@ pub enum CompoundTexture {
     },
     /// `average`: the weighted mean of the shaded textures.
     Average(Vec<(f64, Texture)>),
+    /// `material_map`: each image pixel's palette index (or 8-bit red value) picks a texture
+    /// (see `render::image_map::material_choice`).
+    MaterialMap {
+        image: Arc<ImageMap>,
+        textures: Vec<Texture>,
+        transform: Transform,
+    },
 }
 
 /// What a pattern's value selects: entries interpolated by key, or one item per block.
@@ -195,6 +202,8 @@ pub struct ImageMap {
     pub use_index: bool,
     /// `use_alpha` of an `image_pattern`: the value is the pixel's transparency.
     pub use_alpha: bool,
+    /// Each pixel's palette index, rows from the top (palette PNG files only).
+    pub palette_indices: Option<Vec<u8>>,
 }
 
 impl Texture {
@@ -227,6 +236,14 @@ impl CompoundTexture {
             CompoundTexture::Average(entries) => entries
                 .iter_mut()
                 .for_each(|(_, texture)| texture.transform(t)),
+            CompoundTexture::MaterialMap {
+                textures,
+                transform,
+                ..
+            } => {
+                *transform = transform.then(t);
+                textures.iter_mut().for_each(|texture| texture.transform(t));
+            }
         }
     }
 }
