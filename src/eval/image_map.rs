@@ -108,6 +108,8 @@ impl Evaluator {
         let mut gamma: Option<ImageGamma> = None;
         let mut use_index = false;
         let mut use_alpha = false;
+        let mut palette_filter = Vec::new();
+        let mut palette_transmit = Vec::new();
         while let Some(item) = self.next_item(stream)? {
             match &item {
                 Item::Keyword(word, span) => match &**word {
@@ -135,23 +137,34 @@ impl Evaluator {
                     "once" => once = true,
                     "interpolate" => interpolation = self.expect_float(stream, "2 or 4")? as u8,
                     "filter" | "transmit" => {
-                        let amount = match self.peek_item(stream)? {
+                        // Later settings win (measured): `all` replaces earlier entries.
+                        let (all_amount, entries) = if &**word == "filter" {
+                            (&mut filter_all, &mut palette_filter)
+                        } else {
+                            (&mut transmit_all, &mut palette_transmit)
+                        };
+                        match self.peek_item(stream)? {
                             Some(Item::Keyword(all, _)) if &*all == "all" => {
                                 let _ = self.next_item(stream)?;
-                                Some(self.expect_float(stream, "a float")?)
+                                *all_amount = self.expect_float(stream, "a float")?;
+                                entries.clear();
                             }
                             _ => {
-                                let _index = self.expect_float(stream, "a palette index")?;
-                                let _ = self.expect_float(stream, "a float")?;
-                                self.warn(*span, format!("`{word}` of one palette entry is not supported yet; it is ignored"));
-                                None
-                            }
-                        };
-                        if let Some(amount) = amount {
-                            if &**word == "filter" {
-                                filter_all = amount;
-                            } else {
-                                transmit_all = amount;
+                                let index = self.expect_float(stream, "a palette index")?;
+                                self.skip_comma(stream)?;
+                                let amount = self.expect_float(stream, "a float")?;
+                                if !(0.0..256.0).contains(&index) {
+                                    return Err(self
+                                        .error(
+                                            *span,
+                                            format!("palette index {index} is outside 0 to 255"),
+                                        )
+                                        .with_label("no such palette entry")
+                                        .into());
+                                }
+                                let index = index as u8;
+                                entries.retain(|(entry, _)| *entry != index);
+                                entries.push((index, amount));
                             }
                         }
                     }
@@ -256,6 +269,8 @@ impl Evaluator {
             use_index,
             use_alpha,
             palette_indices: raster.palette_indices,
+            palette_filter,
+            palette_transmit,
         };
         Ok((image, bump_size))
     }

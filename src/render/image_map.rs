@@ -28,12 +28,26 @@ pub fn image_colour(image: &ImageMap, point: DVec3) -> Colour {
     };
     let [red, green, blue, alpha] = sample(image, u, v);
     let alpha = f64::from(alpha);
+    let (mut filter, mut transmit) = (image.filter_all, image.transmit_all);
+    if let Some(indices) = &image.palette_indices {
+        let (column, row) = pixel_position(image, u, v);
+        let entry = |amounts: &[(u8, f64)]| {
+            let index = pixel_index(image, column, row);
+            let palette = *indices.get(index)?;
+            amounts
+                .iter()
+                .find(|(entry, _)| *entry == palette)
+                .map(|&(_, amount)| amount)
+        };
+        filter = entry(&image.palette_filter).unwrap_or(filter);
+        transmit = entry(&image.palette_transmit).unwrap_or(transmit);
+    }
     Colour::rgbft(
         f64::from(red),
         f64::from(green),
         f64::from(blue),
-        image.filter_all,
-        image.transmit_all + (1.0 - alpha),
+        filter,
+        transmit + (1.0 - alpha),
     )
 }
 
@@ -84,9 +98,7 @@ pub fn material_choice(image: &ImageMap, point: DVec3, count: usize) -> Option<u
 fn material_index(image: &ImageMap, point: DVec3) -> Option<usize> {
     let (u, v) = image_coordinates(image, point)?;
     let (column, row) = pixel_position(image, u, v);
-    let width = i64::from(image.width.max(1));
-    let height = i64::from(image.height.max(1));
-    let index = (row.rem_euclid(height) * width + column.rem_euclid(width)) as usize;
+    let index = pixel_index(image, column, row);
     match &image.palette_indices {
         Some(indices) => indices.get(index).map(|&palette| usize::from(palette)),
         None => {
@@ -200,14 +212,18 @@ fn pixel_position(image: &ImageMap, u: f64, v: f64) -> (i64, i64) {
     (column, row)
 }
 
-/// The pixel at `column`, `row`, wrapping around the image's edges.
-fn pixel(image: &ImageMap, column: i64, row: i64) -> [f32; 4] {
+/// The position in the pixel list of `column`, `row`, wrapping around the image's edges.
+fn pixel_index(image: &ImageMap, column: i64, row: i64) -> usize {
     let width = i64::from(image.width.max(1));
     let height = i64::from(image.height.max(1));
-    let index = row.rem_euclid(height) * width + column.rem_euclid(width);
+    (row.rem_euclid(height) * width + column.rem_euclid(width)) as usize
+}
+
+/// The pixel at `column`, `row`, wrapping around the image's edges.
+fn pixel(image: &ImageMap, column: i64, row: i64) -> [f32; 4] {
     image
         .pixels
-        .get(index as usize)
+        .get(pixel_index(image, column, row))
         .copied()
         .unwrap_or([0.0, 0.0, 0.0, 1.0])
 }
@@ -229,6 +245,8 @@ mod tests {
             use_index: false,
             use_alpha,
             palette_indices: None,
+            palette_filter: Vec::new(),
+            palette_transmit: Vec::new(),
         }
     }
 

@@ -204,6 +204,10 @@ pub struct ImageMap {
     pub use_alpha: bool,
     /// Each pixel's palette index, rows from the top (palette PNG files only).
     pub palette_indices: Option<Vec<u8>>,
+    /// `filter N, F` of single palette entries (replacing `filter_all` for them).
+    pub palette_filter: Vec<(u8, f64)>,
+    /// `transmit N, T` of single palette entries (replacing `transmit_all` for them).
+    pub palette_transmit: Vec<(u8, f64)>,
 }
 
 impl Texture {
