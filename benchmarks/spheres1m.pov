@@ -1,4 +1,5 @@
 // One million spheres from three nested #for loops: a 100x100x100 lattice, seen from a corner.
+// Parse speed and memory: scripts/bench.py --width 1 --height 1 --runs 1 benchmarks/spheres1m.pov
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <-60, 140, -120> look_at <50, 40, 50> angle 50 }

@@ -6,6 +6,7 @@
 pub mod accel;
 pub mod diag;
 pub mod eval;
+pub mod function;
 pub mod geometry;
 pub mod noise;
 pub mod pattern;

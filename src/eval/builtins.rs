@@ -14,6 +14,8 @@ pub(crate) const FUNCTIONS: &[&str] = &[
     "max_extent",
     "min_extent",
     "trace",
+    "inside",
+    "datetime",
     "rand",
     "seed",
     "acos",
@@ -153,6 +155,22 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             };
             v3(corner)
         }
+        "inside" => {
+            arity(ev, 2)?;
+            if let Value::Object(object) = ev.argument(call, 0)? {
+                if let Some(part) = first_non_solid(&object) {
+                    return Err(ev
+                        .error(call.arguments[0].span(), "`inside` needs a solid object")
+                        .with_label(format!(
+                            "this object contains a {part}, which has no inside"
+                        ))
+                        .into());
+                }
+            }
+            let world = object_world(ev, call, 0)?;
+            let point = vector(ev, 1)?;
+            Value::Float(f64::from(world.inside(point)))
+        }
         "trace" => {
             if !(3..=4).contains(&call.arguments.len()) {
                 return Err(ev.error(call.span, "`trace` takes 3 or 4 arguments").into());
@@ -174,6 +192,29 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
                 ev.assign_declare_name(variable, v3(normal));
             }
             v3(point)
+        }
+        "datetime" => {
+            if !(1..=2).contains(&call.arguments.len()) {
+                return Err(ev
+                    .error(call.span, "`datetime` takes 1 or 2 arguments")
+                    .with_label("called here")
+                    .into());
+            }
+            let days = ev.argument_float(call, 0)?;
+            let format = match call.arguments.len() {
+                2 => string_argument(ev, call, 1)?,
+                _ => super::datetime::DEFAULT_FORMAT.to_string(),
+            };
+            match super::datetime::format_days(days, &format) {
+                Ok(text) => Value::String(Rc::from(text)),
+                Err(message) => {
+                    let span = call.arguments.get(1).unwrap_or(&call.arguments[0]).span();
+                    return Err(ev
+                        .error(span, message)
+                        .with_label("in this datetime")
+                        .into());
+                }
+            }
         }
         "seed" => {
             arity(ev, 1)?;
@@ -347,7 +388,8 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             let components = match ev.argument(call, 1)? {
                 Value::Vector(v) => v.components,
                 Value::Colour(c) => c.to_array(),
-                Value::Float(f) => [f; 5],
+                // A float fills only the first component here.
+                Value::Float(f) => [f, 0.0, 0.0, 0.0, 0.0],
                 other => {
                     return Err(ev
                         .error(
@@ -385,7 +427,8 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
         }
         "strlen" => {
             arity(ev, 1)?;
-            Value::Float(string_argument(ev, call, 0)?.chars().count() as f64)
+            // Counted in bytes, as POV-Ray does.
+            Value::Float(string_argument(ev, call, 0)?.len() as f64)
         }
         "strupr" => {
             arity(ev, 1)?;
@@ -399,11 +442,16 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             arity(ev, 2)?;
             let a = string_argument(ev, call, 0)?;
             let b = string_argument(ev, call, 1)?;
-            Value::Float(match a.cmp(&b) {
-                std::cmp::Ordering::Less => -1.0,
-                std::cmp::Ordering::Equal => 0.0,
-                std::cmp::Ordering::Greater => 1.0,
-            })
+            // Like C's strcmp: the difference of the first bytes that differ (the shorter
+            // string ends in a zero byte).
+            let difference = a
+                .bytes()
+                .chain(std::iter::once(0))
+                .zip(b.bytes().chain(std::iter::once(0)))
+                .map(|(x, y)| i32::from(x) - i32::from(y))
+                .find(|d| *d != 0)
+                .unwrap_or(0);
+            Value::Float(f64::from(difference))
         }
         "substr" => {
             arity(ev, 3)?;
@@ -467,6 +515,19 @@ fn array_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<R
                 format!("expected an array, found {}", other.type_name()),
             )
             .into()),
+    }
+}
+
+/// The first shape in an object without an inside (a triangle, or a mesh without
+/// `inside_vector`), which POV-Ray refuses in `inside`.
+fn first_non_solid(object: &crate::scene::Object) -> Option<&'static str> {
+    use crate::scene::Shape;
+    match &object.shape {
+        Shape::Triangle { .. } => Some("triangle"),
+        Shape::SmoothTriangle { .. } => Some("smooth_triangle"),
+        Shape::Mesh(mesh) if mesh.inside_vector.is_none() => Some("mesh without inside_vector"),
+        Shape::Csg { children, .. } => children.iter().find_map(first_non_solid),
+        _ => None,
     }
 }
 
@@ -539,15 +600,123 @@ fn format_float(value: f64, width: f64, precision: f64) -> String {
     }
 }
 
-/// The float at the start of a string (0 when there is none), like C's `atof`.
+/// The float at the start of a string (0 when there is none), like C's `strtod`: leading
+/// white space, a sign, then a decimal number with optional exponent, a hexadecimal number
+/// (`0x1f`, `0x1.8p3`), `inf`/`infinity` or `nan`.
 fn leading_float(s: &str) -> f64 {
     let s = s.trim_start();
-    let mut end = 0;
-    for i in (1..=s.len()).rev() {
-        if s.is_char_boundary(i) && s[..i].parse::<f64>().is_ok() {
-            end = i;
-            break;
+    let (negative, body) = match s.as_bytes().first() {
+        Some(b'-') => (true, &s[1..]),
+        Some(b'+') => (false, &s[1..]),
+        _ => (false, s),
+    };
+    let magnitude = unsigned_leading_float(body);
+    if negative {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
+/// [`leading_float`] after the sign.
+fn unsigned_leading_float(s: &str) -> f64 {
+    let bytes = s.as_bytes();
+    let lower = s.get(..8.min(s.len())).unwrap_or("").to_ascii_lowercase();
+    if lower.starts_with("inf") {
+        return f64::INFINITY;
+    }
+    if lower.starts_with("nan") {
+        return f64::NAN;
+    }
+    if lower.starts_with("0x")
+        && bytes
+            .get(2)
+            .is_some_and(|b| b.is_ascii_hexdigit() || *b == b'.')
+    {
+        return hexadecimal_float(&s[2..]);
+    }
+    let digits = |from: usize| {
+        bytes[from.min(bytes.len())..]
+            .iter()
+            .take_while(|b| b.is_ascii_digit())
+            .count()
+    };
+    let whole = digits(0);
+    let mut end = whole;
+    let mut fraction = 0;
+    if bytes.get(end) == Some(&b'.') {
+        fraction = digits(end + 1);
+        end += 1 + fraction;
+    }
+    if whole + fraction == 0 {
+        return 0.0;
+    }
+    if matches!(bytes.get(end), Some(b'e' | b'E')) {
+        let sign = usize::from(matches!(bytes.get(end + 1), Some(b'+' | b'-')));
+        let exponent = digits(end + 1 + sign);
+        if exponent > 0 {
+            end += 1 + sign + exponent;
         }
     }
     s[..end].parse().unwrap_or(0.0)
+}
+
+/// A hexadecimal float after its `0x`: digits, an optional fraction and a binary exponent.
+fn hexadecimal_float(s: &str) -> f64 {
+    let mut value = 0.0;
+    let mut scale = 1.0;
+    let mut in_fraction = false;
+    let mut rest = "";
+    for (at, c) in s.char_indices() {
+        if let Some(digit) = c.to_digit(16) {
+            if in_fraction {
+                scale /= 16.0;
+                value += f64::from(digit) * scale;
+            } else {
+                value = value * 16.0 + f64::from(digit);
+            }
+        } else if c == '.' && !in_fraction {
+            in_fraction = true;
+        } else {
+            rest = &s[at..];
+            break;
+        }
+    }
+    if let Some(exponent) = rest.strip_prefix(['p', 'P']) {
+        let unsigned = exponent.trim_start_matches(['+', '-']);
+        let digits: String = unsigned.chars().take_while(char::is_ascii_digit).collect();
+        if let Ok(power) = digits.parse::<i32>() {
+            let power = if exponent.starts_with('-') {
+                -power
+            } else {
+                power
+            };
+            value *= 2f64.powi(power);
+        }
+    }
+    value
+}
+
+#[cfg(test)]
+mod tests {
+    use super::leading_float;
+
+    #[test]
+    fn leading_float_reads_like_strtod() {
+        let cases = [
+            ("  12.5abc", 12.5),
+            ("abc", 0.0),
+            ("-1e3x", -1000.0),
+            ("1e", 1.0),
+            ("0x10", 16.0),
+            ("0x1.8p1", 3.0),
+            (".5", 0.5),
+            ("+4", 4.0),
+            ("-", 0.0),
+        ];
+        for (text, expected) in cases {
+            assert_eq!(leading_float(text), expected, "{text:?}");
+        }
+        assert!(leading_float("inf") == f64::INFINITY);
+    }
 }

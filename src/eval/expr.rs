@@ -279,10 +279,11 @@ impl Evaluator {
             let y = self.to_float(b, span)?;
             let result = match op {
                 Less => x < y,
-                LessEqual => x <= y,
+                // POV-Ray's `<=` and `>=` accept a difference below the epsilon, like `=`.
+                LessEqual => x - y < EQUALITY_EPSILON,
                 Equal => (x - y).abs() < EQUALITY_EPSILON,
                 NotEqual => (x - y).abs() >= EQUALITY_EPSILON,
-                GreaterEqual => x >= y,
+                GreaterEqual => y - x < EQUALITY_EPSILON,
                 Greater => x > y,
                 And => x != 0.0 && y != 0.0,
                 _ => x != 0.0 || y != 0.0,
@@ -424,6 +425,10 @@ impl Evaluator {
                 let function = function.clone();
                 return self.call_function(&function, call);
             }
+            Some(Value::Spline(spline)) => {
+                let spline = spline.clone();
+                return super::splines::call_spline(self, &spline, call);
+            }
             _ => {}
         }
         super::builtins::call_builtin(self, call)
@@ -440,11 +445,7 @@ impl Evaluator {
         };
         if let FunctionBody::Expr(Expr::Call(inner)) = &function.body {
             if &*inner.name == "internal" {
-                return Err(self
-                    .error(call.span, format!("`{}` is one of POV-Ray's internal functions, not available yet", call.name))
-                    .with_label("called here")
-                    .with_help("functions.inc defines its f_* functions this way; they arrive with isosurfaces")
-                    .into());
+                return self.call_internal_function(function, call);
             }
         }
         if call.arguments.len() != names.len() {
@@ -541,6 +542,7 @@ fn builtin_constant(name: &str, evaluator: &Evaluator) -> Option<Value> {
         "image_width" => Value::Float(f64::from(evaluator.options.image_width)),
         "image_height" => Value::Float(f64::from(evaluator.options.image_height)),
         "version" => Value::Float(evaluator.version),
+        "now" => Value::Float(super::datetime::now_in_days()),
         "input_file_name" => Value::String(Rc::from(evaluator.input_file_name.as_str())),
         _ => return None,
     })

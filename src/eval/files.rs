@@ -230,8 +230,8 @@ impl Evaluator {
 
     /// Removes the innermost version of an identifier (`#undef`).
     pub(crate) fn undefine(&mut self, name: &str) {
-        if let Some(scope) = self.scopes.iter_mut().rev().find(|s| s.contains_key(name)) {
-            scope.remove(name);
+        if let Some(index) = self.scopes.innermost_holder(name) {
+            self.scopes.remove(index, name);
         }
     }
 }

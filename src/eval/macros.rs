@@ -72,10 +72,10 @@ impl Evaluator {
                     // Point straight at the variable the name resolves to (following a
                     // reference the caller itself holds), so recursive macros passing a
                     // parameter on do not build chains of references.
-                    let holder = self.scopes.iter().rposition(|s| s.contains_key(name));
+                    let holder = self.scopes.innermost_holder(name);
                     let value = if let Some(index) = holder {
-                        match &self.scopes[index][name] {
-                            Value::Reference { scope, name } => Value::Reference {
+                        match self.scopes.get(index, name) {
+                            Some(Value::Reference { scope, name }) => Value::Reference {
                                 scope: *scope,
                                 name: name.clone(),
                             },
@@ -87,10 +87,10 @@ impl Evaluator {
                     } else if self.is_builtin_name(name) {
                         self.eval_expr(&Expr::Ident(name.clone(), *span))?
                     } else {
-                        Value::Reference {
-                            scope: 0,
-                            name: name.clone(),
-                        }
+                        // POV-Ray refuses to pass a name that holds no value.
+                        let mut d = self.undefined(name, *span);
+                        d.message = format!("cannot pass undefined identifier `{name}` to a macro");
+                        return Err(d.into());
                     };
                     values.push(value);
                 }

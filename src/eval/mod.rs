@@ -8,14 +8,19 @@ mod appearance;
 mod atmosphere;
 mod builtins;
 mod camera;
+mod datetime;
 mod expr;
 mod files;
+mod finish;
 mod image_map;
+mod light;
 mod literals;
 mod macros;
 mod objects;
 mod pattern;
+mod scopes;
 mod shapes;
+mod splines;
 mod stream;
 mod texture_maps;
 mod value;
@@ -109,7 +114,13 @@ pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
 
 /// durer's own small standard library, used when an include file is found nowhere else
 /// (for example on a machine without POV-Ray installed).
-const EMBEDDED_INCLUDES: &[(&str, &str)] = &[("colors.inc", include_str!("stdlib/colors.inc"))];
+const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
+    ("colors.inc", include_str!("stdlib/colors.inc")),
+    ("consts.inc", include_str!("stdlib/consts.inc")),
+    ("finish.inc", include_str!("stdlib/finish.inc")),
+    ("golds.inc", include_str!("stdlib/golds.inc")),
+    ("metals.inc", include_str!("stdlib/metals.inc")),
+];
 
 /// Folder name under which embedded include files appear in diagnostics.
 const EMBEDDED_FOLDER: &str = "<durer standard library>";
@@ -144,7 +155,7 @@ impl Hasher for NameHasher {
 pub(crate) struct Evaluator {
     pub(crate) options: EvalOptions,
     pub(crate) sources: SourceMap,
-    pub(crate) scopes: Vec<Scope>,
+    pub(crate) scopes: scopes::ScopeStack,
     parsed: HashMap<PathBuf, (FileId, Rc<[Item]>)>,
     pub(crate) scene_folder: PathBuf,
     /// The scene file's name, for `input_file_name`.
@@ -176,7 +187,7 @@ impl Evaluator {
         Evaluator {
             options,
             sources: SourceMap::new(),
-            scopes: vec![Scope::default()],
+            scopes: scopes::ScopeStack::new(),
             parsed: HashMap::new(),
             scene_folder: PathBuf::from("."),
             input_file_name: String::new(),
@@ -355,47 +366,63 @@ impl Evaluator {
 
     /// Looks an identifier up, innermost scope first, following references.
     pub(crate) fn lookup(&self, name: &str) -> Option<&Value> {
-        for scope in self.scopes.iter().rev() {
-            if let Some(value) = scope.get(name) {
-                return match value {
-                    Value::Reference { scope, name } => self.lookup_from(*scope, name),
-                    other => Some(other),
-                };
-            }
+        let index = self.scopes.innermost_holder(name)?;
+        match self.scopes.get(index, name)? {
+            Value::Reference { scope, name } => self.lookup_from(*scope, name),
+            other => Some(other),
         }
-        None
     }
 
-    fn lookup_from(&self, top: usize, name: &str) -> Option<&Value> {
-        for index in (0..=top.min(self.scopes.len().saturating_sub(1))).rev() {
-            if let Some(value) = self.scopes[index].get(name) {
-                return match value {
-                    Value::Reference { scope, name } if *scope < index => {
-                        self.lookup_from(*scope, name)
-                    }
-                    Value::Reference { .. } => None,
-                    other => Some(other),
-                };
+    /// Looks an identifier up in scope `top` and the scopes outside it, following references.
+    pub(crate) fn lookup_from(&self, top: usize, name: &str) -> Option<&Value> {
+        let (mut top, mut name) = (top, name);
+        loop {
+            let index = self.scopes.holder_at_or_below(name, top)?;
+            match self.scopes.get(index, name)? {
+                Value::Reference {
+                    scope,
+                    name: target,
+                } if *scope < index => {
+                    top = *scope;
+                    name = target;
+                }
+                Value::Reference { .. } => return None,
+                other => return Some(other),
             }
         }
-        None
     }
 
     /// Where `#declare name` writes: the innermost existing version (following references),
     /// or the global scope for a new name.
     pub(crate) fn declare_slot(&self, name: &Rc<str>) -> (usize, Rc<str>) {
-        let mut top = self.scopes.len() - 1;
+        self.slot_from(self.scopes.len() - 1, name)
+    }
+
+    /// Where `#local name` writes: the innermost scope, except that a macro parameter passed
+    /// an identifier writes through to the caller's variable, as in POV-Ray.
+    pub(crate) fn local_slot(&self, name: &Rc<str>) -> (usize, Rc<str>) {
+        let innermost = self.scopes.len() - 1;
+        match self.scopes.get(innermost, name) {
+            Some(Value::Reference {
+                scope,
+                name: target,
+            }) if *scope < innermost => self.slot_from(*scope, target),
+            _ => (innermost, name.clone()),
+        }
+    }
+
+    /// The innermost existing version of `name` in scope `top` or outside it, following
+    /// references; the global scope when there is none.
+    fn slot_from(&self, top: usize, name: &Rc<str>) -> (usize, Rc<str>) {
+        let mut top = top;
         let mut name = name.clone();
         loop {
-            let found = (0..=top)
-                .rev()
-                .find(|&i| self.scopes[i].contains_key(&name));
-            match found {
-                Some(i) => match &self.scopes[i][&name] {
-                    Value::Reference {
+            match self.scopes.holder_at_or_below(&name, top) {
+                Some(i) => match self.scopes.get(i, &name) {
+                    Some(Value::Reference {
                         scope,
                         name: target,
-                    } if *scope < i => {
+                    }) if *scope < i => {
                         top = *scope;
                         name = target.clone();
                     }
@@ -411,7 +438,7 @@ impl Evaluator {
         let mut d = self
             .error(span, format!("undefined identifier `{name}`"))
             .with_label("not declared");
-        let visible = self.scopes.iter().flat_map(|s| s.keys().map(|k| &**k));
+        let visible = self.scopes.names();
         let keywords = crate::syntax::keywords::ALL.iter().copied();
         if let Some(similar) = did_you_mean(name, visible.chain(keywords)) {
             d = d.with_help(format!("did you mean `{similar}`?"));
@@ -450,7 +477,7 @@ impl Evaluator {
                 self.objects.push(object);
             }
             Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),
-            Value::Light(light) => self.lights.push(Rc::unwrap_or_clone(light)),
+            Value::Light(light) => self.add_light(Rc::unwrap_or_clone(light)),
             Value::Atmospheric(effect) => self.add_atmospheric_effect(&effect),
             Value::Colour(colour) if matches!(item, Item::Block(_)) => self.background = colour,
             Value::Nothing => {} // settings blocks and left-out features
@@ -497,7 +524,11 @@ impl Evaluator {
         }
     }
 
+    /// Adds a light to the scene, and its `looks_like` object to the objects.
     pub(crate) fn add_light(&mut self, light: LightSource) {
+        if let Some(shape) = &light.looks_like {
+            self.objects.push((**shape).clone());
+        }
         self.lights.push(light);
     }
 

@@ -105,6 +105,10 @@ impl Evaluator {
             "prism" => self.eval_prism(block.head_span, stream)?,
             "lathe" => self.eval_lathe(block.head_span, stream)?,
             "blob" => self.eval_blob(stream)?,
+            "isosurface" => self.eval_isosurface(block.head_span, stream)?,
+            "height_field" => self.eval_height_field(block.head_span, stream)?,
+            "sphere_sweep" => self.eval_sphere_sweep(block.head_span, stream)?,
+            "bicubic_patch" => self.eval_bicubic_patch(block.head_span, stream)?,
             "sor" => {
                 let count = self.expect_float(stream, "the number of points")?;
                 if !(0.0..=1e7).contains(&count) {
@@ -278,7 +282,7 @@ impl Evaluator {
                         let (texture, interior) = self.eval_material(&mut body)?;
                         self.attach_texture(object, texture);
                         if let Some(interior) = interior {
-                            object.interior = Some(interior);
+                            object.interior = Some(Box::new(interior));
                         }
                         return Ok(());
                     }
@@ -290,7 +294,8 @@ impl Evaluator {
                         let base = top_layer_finish(&texture).clone();
                         let mut body = Stream::new(block.body.clone());
                         let finish = self.eval_finish(&mut body, Some(base))?;
-                        change_top_layer(&mut texture, |top| top.finish = finish);
+                        let finish = Arc::new(finish);
+                        change_top_layer(&mut texture, |top| top.finish = finish.clone());
                         object.texture = Some(Arc::new(texture));
                         return Ok(());
                     }
@@ -327,7 +332,7 @@ impl Evaluator {
                 let mut texture = self.object_texture(object);
                 let mut normal = Rc::unwrap_or_clone(normal);
                 normal.transform(&object.transform.inverse());
-                change_top_layer(&mut texture, |top| top.normal = Some(normal));
+                change_top_layer(&mut texture, |top| top.normal = Some(Box::new(normal)));
                 object.texture = Some(Arc::new(texture));
             }
             Value::Pigment(pigment) => {
@@ -339,10 +344,13 @@ impl Evaluator {
             }
             Value::Finish(finish) => {
                 let mut texture = self.object_texture(object);
-                change_top_layer(&mut texture, |top| top.finish = Rc::unwrap_or_clone(finish));
+                let finish = Arc::new(Rc::unwrap_or_clone(finish));
+                change_top_layer(&mut texture, |top| top.finish = finish.clone());
                 object.texture = Some(Arc::new(texture));
             }
-            Value::Interior(interior) => object.interior = Some(Rc::unwrap_or_clone(interior)),
+            Value::Interior(interior) => {
+                object.interior = Some(Box::new(Rc::unwrap_or_clone(interior)))
+            }
             Value::Transform(t) => apply_transform(object, &t),
             Value::Nothing => {} // a left-out block such as `media { .. }`
             other => {

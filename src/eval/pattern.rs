@@ -3,9 +3,9 @@
 //!
 //! In: a keyword (or block) already taken from the owner's item stream. Out: a
 //! [`PatternSpec`] or a modification of one. Holds: the owner (appearance.rs) parses maps,
-//! block lists and transforms; everything specific to one pattern is parsed here. The
-//! noise generator of a pattern without its own is the global one in force when the
-//! pattern is parsed.
+//! block lists and transforms; everything specific to one pattern is parsed here. A
+//! pattern without its own noise generator gets the global one in force when it is parsed
+//! (`PatternSpec::use_global_noise_generator` can apply a later one).
 
 use glam::{DVec2, DVec3};
 
@@ -69,6 +69,13 @@ impl Evaluator {
             }
             "marble" => PatternKind::Marble,
             "onion" => PatternKind::Onion,
+            "pavement" => {
+                self.warn(
+                    span,
+                    "`pavement` is not supported yet; its first colour is used",
+                );
+                PatternKind::Pavement
+            }
             "planar" => PatternKind::Planar,
             "quilted" => PatternKind::Quilted {
                 control0: 1.0,
@@ -98,7 +105,7 @@ impl Evaluator {
             _ => return Ok(None),
         };
         let mut pattern = PatternSpec::new(kind);
-        pattern.noise_generator = self.settings.noise_generator;
+        pattern.use_global_noise_generator(self.settings.noise_generator);
         Ok(Some(pattern))
     }
 
@@ -131,11 +138,16 @@ impl Evaluator {
                 };
                 pattern.wave.shape = WaveShape::Poly(exponent);
             }
-            "noise_generator" => {
-                pattern.noise_generator = self
-                    .expect_noise_generator(stream)?
-                    .unwrap_or(self.settings.noise_generator)
-            }
+            "noise_generator" => match self.expect_noise_generator(stream)? {
+                Some(generator) => {
+                    pattern.noise_generator = generator;
+                    pattern.own_noise_generator = true;
+                }
+                None => {
+                    pattern.own_noise_generator = false;
+                    pattern.use_global_noise_generator(self.settings.noise_generator);
+                }
+            },
             _ => return self.pattern_setting(word, span, stream, pattern),
         }
         Ok(true)
@@ -154,13 +166,16 @@ impl Evaluator {
             "agate_turb" => "agate",
             "brick_size" | "mortar" => "brick",
             "control0" | "control1" => "quilted",
-            "form" | "metric" | "offset" | "solid" => "crackle",
+            "metric" | "offset" | "solid" => "crackle",
+            "form" => "crackle or pavement",
             "coords" | "size" => "facets",
-            "exponent" | "interior" | "exterior" => "mandel, julia or magnet",
+            "exponent" => "mandel, julia or magnet",
+            "interior" | "exterior" => "mandel, julia, magnet or pavement",
+            "number_of_sides" | "number_of_tiles" | "pattern" => "pavement",
             _ => return Ok(false),
         };
         match (&mut pattern.kind, word) {
-            (PatternKind::Agate { agate_turb }, _) => {
+            (PatternKind::Agate { agate_turb }, "agate_turb") => {
                 *agate_turb = self.expect_float(stream, "a float")?
             }
             (PatternKind::Brick { size, .. }, "brick_size") => {
@@ -172,13 +187,13 @@ impl Evaluator {
                 }
                 *size = given;
             }
-            (PatternKind::Brick { mortar, .. }, _) => {
+            (PatternKind::Brick { mortar, .. }, "mortar") => {
                 *mortar = self.expect_float(stream, "a float")?
             }
             (PatternKind::Quilted { control0, .. }, "control0") => {
                 *control0 = self.expect_float(stream, "a float")?
             }
-            (PatternKind::Quilted { control1, .. }, _) => {
+            (PatternKind::Quilted { control1, .. }, "control1") => {
                 *control1 = self.expect_float(stream, "a float")?
             }
             (PatternKind::Crackle(crackle), "form") => {
@@ -193,11 +208,11 @@ impl Evaluator {
             (PatternKind::Crackle(crackle), "offset") => {
                 crackle.offset = self.expect_float(stream, "a float")?
             }
-            (PatternKind::Crackle(crackle), _) => crackle.solid = true,
+            (PatternKind::Crackle(crackle), "solid") => crackle.solid = true,
             (PatternKind::Facets { coords, .. }, "coords") => {
                 *coords = self.expect_float(stream, "a float")?
             }
-            (PatternKind::Facets { size, .. }, _) => {
+            (PatternKind::Facets { size, .. }, "size") => {
                 *size = self.expect_float(stream, "a float")?
             }
             (PatternKind::Fractal(fractal), "exponent") => {
@@ -209,7 +224,7 @@ impl Evaluator {
                 }
                 fractal.exponent = exponent as u32;
             }
-            (PatternKind::Fractal(fractal), which) => {
+            (PatternKind::Fractal(fractal), which @ ("interior" | "exterior")) => {
                 let kind = self.expect_float(stream, "a colouring type")?;
                 let factor = self.expect_float(stream, "a factor")?;
                 let limit = if which == "exterior" { 8.0 } else { 6.0 };
@@ -227,6 +242,13 @@ impl Evaluator {
                 } else {
                     fractal.interior = colouring;
                 }
+            }
+            (
+                PatternKind::Pavement,
+                "number_of_sides" | "number_of_tiles" | "pattern" | "form" | "interior"
+                | "exterior",
+            ) => {
+                let _ = self.expect_float(stream, "a float")?;
             }
             _ => {
                 return Err(self

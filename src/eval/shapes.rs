@@ -6,8 +6,13 @@
 //! Holds: bad counts and indices end in spanned diagnostics, never panics; features that durer
 //! leaves out (per-triangle textures, uv data) are warned about once and ignored.
 
+mod bicubic_patch;
 mod blob;
+mod function;
+mod height_field;
+mod isosurface;
 mod prism;
+mod sphere_sweep;
 mod text;
 
 use super::stream::Stream;

@@ -253,14 +253,13 @@ impl Evaluator {
     /// `#declare`-style assignment of a plain name (the innermost existing version, else global).
     pub(crate) fn assign_declare_name(&mut self, name: &Rc<str>, value: Value) {
         let (scope, name) = self.declare_slot(name);
-        self.scopes[scope].insert(name, value);
+        self.scopes.insert(scope, name, value);
     }
 
     /// `#local`-style assignment of a plain name in the innermost scope.
     pub(crate) fn assign_local(&mut self, name: &Rc<str>, value: Value) {
-        if let Some(scope) = self.scopes.last_mut() {
-            scope.insert(name.clone(), value);
-        }
+        let (scope, name) = self.local_slot(name);
+        self.scopes.insert(scope, name, value);
     }
 
     pub(crate) fn eval_condition(&mut self, condition: &Expr) -> EvalResult<bool> {
@@ -282,7 +281,15 @@ impl Evaluator {
                 let value = self.layer_textures(value, layers)?;
                 self.assign(*local, target, value)?;
             }
-            DirectiveKind::Undef(name, _) => self.undefine(name),
+            DirectiveKind::Undef(name, name_span) => {
+                if self.scopes.innermost_holder(name).is_none() {
+                    self.warn(
+                        *name_span,
+                        format!("`#undef` of unknown identifier `{name}`"),
+                    );
+                }
+                self.undefine(name);
+            }
             DirectiveKind::If { branches, .. } => self.run_first_true_branch(branches, stream)?,
             DirectiveKind::IfDefined {
                 negate,
@@ -344,7 +351,8 @@ impl Evaluator {
             DirectiveKind::Switch { .. } => self.run_switch(directive, stream)?,
             DirectiveKind::Break => self.run_break(stream),
             DirectiveKind::Macro(definition) => {
-                self.scopes[0].insert(definition.name.clone(), Value::Macro(definition.clone()));
+                self.scopes
+                    .insert(0, definition.name.clone(), Value::Macro(definition.clone()));
             }
             DirectiveKind::Include(name) => {
                 let name = self.eval_string(name)?;
@@ -509,44 +517,45 @@ impl Evaluator {
             v => v,
         };
         let (scope, name) = if local {
-            (self.scopes.len() - 1, target.name.clone())
+            self.local_slot(&target.name)
         } else {
             self.declare_slot(&target.name)
         };
         if target.indices.is_empty() {
-            self.scopes[scope].insert(name, value);
+            self.scopes.insert(scope, name, value);
             return Ok(());
         }
         let mut indices = Vec::new();
         for index in &target.indices {
             indices.push(self.eval_float(index)?);
         }
-        let (scope, name) = if local && !self.scopes[scope].contains_key(&name) {
+        let (scope, name) = if local && self.scopes.get(scope, &name).is_none() {
             self.declare_slot(&target.name)
         } else {
             (scope, name)
         };
-        let Some(Value::Array(array)) = self.scopes[scope].get(&name).cloned() else {
-            return Err(self
-                .error(target.span, format!("`{}` is not an array", target.name))
-                .with_label("indexed here")
-                .into());
+        let sizes = match self.scopes.get(scope, &name) {
+            Some(Value::Array(array)) => array.sizes.clone(),
+            _ => {
+                return Err(self
+                    .error(target.span, format!("`{}` is not an array", target.name))
+                    .with_label("indexed here")
+                    .into())
+            }
         };
-        let Some(offset) = array_offset(&array.sizes, &indices) else {
+        let Some(offset) = array_offset(&sizes, &indices) else {
             return Err(self
                 .error(
                     target.span,
-                    format!(
-                        "array index {:?} out of range for size {:?}",
-                        indices, array.sizes
-                    ),
+                    format!("array index {indices:?} out of range for size {sizes:?}"),
                 )
                 .with_label("index out of range")
                 .into());
         };
-        let mut array = array;
-        Rc::make_mut(&mut array).elements[offset] = Some(value);
-        self.scopes[scope].insert(name, Value::Array(array));
+        // Changed in place: the elements are copied only when another value shares them.
+        if let Some(Value::Array(array)) = self.scopes.get_mut(scope, &name) {
+            Rc::make_mut(array).elements[offset] = Some(value);
+        }
         Ok(())
     }
 }

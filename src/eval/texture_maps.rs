@@ -290,6 +290,11 @@ impl Evaluator {
                         .into()),
                 }
             }
+            // `average` maps may leave out an entry's weight (POV-Ray then weighs it 1).
+            Some(other) if !matches!(other, Item::Comma(_)) => {
+                body.push_back(other);
+                Ok(1.0)
+            }
             Some(other) => Err(self
                 .error(
                     other.span(),
@@ -306,7 +311,7 @@ impl Evaluator {
 
     /// `normal { [N] PATTERN [bump_size] modifiers | bump_map {..} | average normal_map {..} }`.
     pub(crate) fn eval_normal(&mut self, stream: &mut Stream) -> EvalResult<Normal> {
-        let mut normal = self.default_texture.normal.clone();
+        let mut normal = self.default_texture.normal.clone().map(|boxed| *boxed);
         let mut average = false;
         let mut pattern_started = false;
         while let Some(item) = self.next_item(stream)? {

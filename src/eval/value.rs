@@ -48,6 +48,8 @@ pub enum Value {
     Macro(Rc<MacroDefinition>),
     /// A user-defined function.
     Function(Rc<FunctionLiteral>),
+    /// A spline, called like a function.
+    Spline(Rc<super::splines::Spline>),
     /// An open data file (index into the evaluator's file table).
     File(usize),
     /// What a block durer does not support yet evaluates to: it is left out of the scene.
@@ -124,6 +126,7 @@ impl Value {
             Value::Reference { .. } => "a reference",
             Value::Nothing => "a left-out feature",
             Value::File(_) => "a file handle",
+            Value::Spline(_) => "a spline",
         }
     }
 }

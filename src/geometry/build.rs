@@ -279,7 +279,7 @@ impl Builder {
             }
         }
         if let Some(interior) = &object.interior {
-            appearance.interior = interior.clone();
+            appearance.interior = Interior::clone(interior);
             appearance.interior_key = InteriorKey::Owned(self.new_owner());
         }
         appearance.flags.no_shadow |= object.no_shadow;

@@ -493,6 +493,11 @@ impl CsgTree {
         hits.truncate(kept);
     }
 
+    /// True when the world `point` is inside the whole object.
+    pub fn inside(&self, point: DVec3) -> bool {
+        self.inside_node(&self.root, point)
+    }
+
     /// True when the world `point` is inside the subtree `node`.
     fn inside_node(&self, node: &CsgNode, point: DVec3) -> bool {
         let bounds = node.bounds();

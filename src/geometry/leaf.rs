@@ -11,6 +11,8 @@
 use super::blob::Blob;
 use super::extrusion::ExtrudedOutline;
 use super::flat::{Cuboid, Disc, Plane, Triangle};
+use super::height_field::HeightField;
+use super::isosurface::Isosurface;
 use super::lathe::Lathe;
 use super::poly::PolySurface;
 use super::polygon::{Polygon, SmoothTriangle};
@@ -18,6 +20,7 @@ use super::quadric::Quadric;
 use super::roots::Roots;
 use super::round::{Cone, Sphere};
 use super::sor::Sor;
+use super::sphere_sweep::SphereSweep;
 use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
 use super::Ray;
@@ -62,6 +65,12 @@ pub enum LocalShape {
     Superellipsoid(Superellipsoid),
     /// A surface of revolution.
     Sor(Box<Sor>),
+    /// An isosurface.
+    Isosurface(Box<Isosurface>),
+    /// A height field.
+    HeightField(Box<HeightField>),
+    /// A sphere sweep.
+    SphereSweep(Box<SphereSweep>),
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -133,6 +142,15 @@ impl LocalShape {
             Shape::Sor { ref points, open } => {
                 Sor::new(points, open).map(|s| Self::Sor(Box::new(s)))
             }
+            Shape::Isosurface(ref spec) => {
+                Isosurface::new(spec).map(|i| Self::Isosurface(Box::new(i)))
+            }
+            Shape::HeightField(ref spec) => {
+                HeightField::new(spec).map(|h| Self::HeightField(Box::new(h)))
+            }
+            Shape::SphereSweep(ref spec) => {
+                SphereSweep::new(spec).map(|s| Self::SphereSweep(Box::new(s)))
+            }
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -197,6 +215,9 @@ impl LocalShape {
             LocalShape::Blob(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Superellipsoid(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Sor(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Isosurface(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::HeightField(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::SphereSweep(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -219,6 +240,9 @@ impl LocalShape {
             LocalShape::Blob(shape) => shape.inside(point),
             LocalShape::Superellipsoid(shape) => shape.inside(point),
             LocalShape::Sor(shape) => shape.inside(point),
+            LocalShape::Isosurface(shape) => shape.inside(point),
+            LocalShape::HeightField(shape) => shape.inside(point),
+            LocalShape::SphereSweep(shape) => shape.inside(point),
         }
     }
 
@@ -242,6 +266,9 @@ impl LocalShape {
             LocalShape::Blob(shape) => shape.normal(point),
             LocalShape::Superellipsoid(shape) => shape.normal(point),
             LocalShape::Sor(shape) => shape.normal(point, part),
+            LocalShape::Isosurface(shape) => shape.normal(point, part),
+            LocalShape::HeightField(shape) => shape.normal(point),
+            LocalShape::SphereSweep(shape) => shape.normal(point),
         }
     }
 
@@ -263,6 +290,9 @@ impl LocalShape {
             LocalShape::Blob(shape) => Some(shape.bounds()),
             LocalShape::Superellipsoid(shape) => Some(shape.bounds()),
             LocalShape::Sor(shape) => Some(shape.bounds()),
+            LocalShape::Isosurface(shape) => Some(shape.bounds()),
+            LocalShape::HeightField(shape) => Some(shape.bounds()),
+            LocalShape::SphereSweep(shape) => Some(shape.bounds()),
         }
     }
 
@@ -279,6 +309,9 @@ impl LocalShape {
             LocalShape::SmoothTriangle(triangle) => {
                 Some(Aabb::from_points(triangle.corners().map(map)))
             }
+            // POV-Ray leaves a height field out of the box of a CSG intersection (measured with
+            // min_extent): its inside reaches down without limit.
+            LocalShape::HeightField(_) => None,
             _ => self
                 .bounds()
                 .map(|bounds| bounds.transformed(world_from_local)),
@@ -295,7 +328,8 @@ impl LocalShape {
             LocalShape::Plane(_)
             | LocalShape::Quadric(_)
             | LocalShape::Poly(_)
-            | LocalShape::Disc(_) => InsideReach::Unbounded,
+            | LocalShape::Disc(_)
+            | LocalShape::HeightField(_) => InsideReach::Unbounded,
             LocalShape::Blob(blob) if blob.inside_everywhere_far() => InsideReach::Unbounded,
             _ => InsideReach::Bounded,
         }

@@ -13,7 +13,9 @@ mod build;
 mod csg;
 mod extrusion;
 mod flat;
+mod height_field;
 mod instance;
+mod isosurface;
 mod lathe;
 mod leaf;
 mod poly;
@@ -22,10 +24,13 @@ mod quadric;
 mod roots;
 mod round;
 mod sor;
+mod sphere_sweep;
 mod superellipsoid;
 mod torus;
 mod world;
 
+#[cfg(test)]
+mod implicit_tests;
 #[cfg(test)]
 mod more_shape_tests;
 #[cfg(test)]
@@ -35,6 +40,7 @@ mod test_support;
 #[cfg(test)]
 mod tests;
 
+pub use roots::MAX_ROOTS as MAX_CROSSINGS;
 pub use world::World;
 
 use crate::scene::{Interior, Texture};

@@ -239,11 +239,11 @@ fn coincident_faces_subtract_cleanly_on_axis() {
 #[test]
 fn materials_inherit_and_share_textures() {
     let checker = Pigment::Pattern {
-        pattern: Pattern::new(PatternKind::Checker),
+        pattern: Box::new(Pattern::new(PatternKind::Checker)),
         map: PigmentMap::Blocks(vec![
             Pigment::Solid(Colour::WHITE),
             Pigment::Pattern {
-                pattern: Pattern::new(PatternKind::Gradient(DVec3::Y)),
+                pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::Y))),
                 map: PigmentMap::Colours(vec![(0.0, Colour::BLACK), (1.0, Colour::WHITE)]),
                 transform: Transform::translation(DVec3::Y),
             },
@@ -270,10 +270,16 @@ fn materials_inherit_and_share_textures() {
         },
         0.5,
     );
-    own.interior = Some(Interior { ior: 2.0 });
+    own.interior = Some(Box::new(Interior {
+        ior: 2.0,
+        ..Interior::default()
+    }));
     let mut group = csg(CsgOperation::Union, vec![first, second, own]);
     group.texture = Some(owner_texture);
-    group.interior = Some(Interior { ior: 1.5 });
+    group.interior = Some(Box::new(Interior {
+        ior: 1.5,
+        ..Interior::default()
+    }));
     let world_from_group = Transform::translation(DVec3::new(0.0, 0.0, 10.0));
     group.transform = world_from_group;
     let plain = Object::new(Shape::Sphere {

@@ -139,6 +139,19 @@ impl World {
         }
     }
 
+    /// True when `point` is inside any object (the scene language's `inside`). Meshes have no
+    /// inside here, as in POV-Ray without `inside_vector`.
+    pub fn inside(&self, point: DVec3) -> bool {
+        self.primitives
+            .iter()
+            .chain(&self.unbounded)
+            .any(|primitive| match primitive {
+                Primitive::Leaf(leaf) => leaf.inside(point),
+                Primitive::Mesh(_) => false,
+                Primitive::Csg(tree) => tree.inside(point),
+            })
+    }
+
     /// Nearest hit with `min_distance < distance < max_distance`.
     pub fn first_hit(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<SurfaceHit> {
         self.search(ray, min_distance, max_distance, &|_| false)
@@ -157,6 +170,17 @@ impl World {
                 .get(material as usize)
                 .is_some_and(|material| material.no_shadow)
         })
+    }
+
+    /// Nearest hit like [`World::first_hit`], ignoring objects whose material `skip` rejects.
+    pub fn first_hit_skipping(
+        &self,
+        ray: &Ray,
+        min_distance: f64,
+        max_distance: f64,
+        skip: &impl Fn(u32) -> bool,
+    ) -> Option<SurfaceHit> {
+        self.search(ray, min_distance, max_distance, skip)
     }
 
     /// Number of leaf primitives (shapes), counting every CSG child.

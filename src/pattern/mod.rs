@@ -45,9 +45,11 @@ pub struct PatternSpec {
     pub turbulence: ClassicTurbulence,
     /// Warps in the order written, each with the transformations written before it.
     pub warps: Vec<PlacedWarp>,
-    /// The noise generator (the pattern's own or the global setting in force when it was
-    /// parsed).
+    /// The noise generator: the pattern's own, or else the global one (see
+    /// [`Self::use_global_noise_generator`]).
     pub noise_generator: NoiseGenerator,
+    /// Whether the pattern names its own `noise_generator`.
+    pub own_noise_generator: bool,
     /// Every transformation noted so far, composed (outer from inner).
     noted: Transform,
 }
@@ -116,6 +118,8 @@ pub enum PatternKind {
     Marble,
     /// Concentric unit shells.
     Onion,
+    /// `pavement`: not supported yet; its value is 0 (the map's first entry).
+    Pavement,
     /// 1 on the x-z plane falling to 0 at distance 1.
     Planar,
     /// Rounded cubes.
@@ -170,6 +174,7 @@ impl PatternSpec {
             },
             warps: Vec::new(),
             noise_generator: NoiseGenerator::default(),
+            own_noise_generator: false,
             noted: Transform::IDENTITY,
         }
     }
@@ -179,6 +184,16 @@ impl PatternSpec {
     /// remember the frame they were written in.
     pub fn note_transform(&mut self, transform: &Transform) {
         self.noted = self.noted.then(transform);
+    }
+
+    /// Sets the `global_settings` noise generator, unless the pattern names its own. POV-Ray
+    /// applies the scene's final global setting to every pattern, even one written before
+    /// `global_settings`; the parser calls this with the setting in force, and a pass over
+    /// the finished scene can call it again with the final one.
+    pub fn use_global_noise_generator(&mut self, global: NoiseGenerator) {
+        if !self.own_noise_generator {
+            self.noise_generator = global;
+        }
     }
 
     /// Adds a warp after everything written so far.
@@ -198,6 +213,29 @@ impl PatternSpec {
             PatternKind::Square => Some(4),
             PatternKind::Triangular | PatternKind::Cubic => Some(6),
             _ => None,
+        }
+    }
+
+    /// The colours (rgb) POV-Ray 3.7 gives the blocks of a block pattern written without
+    /// any (measured): checker blue, green; hexagon blue, green, red; brick grey mortar and
+    /// red brick; square red, green, blue, yellow; triangular and cubic red, green, blue,
+    /// yellow, cyan, magenta. Empty for patterns with a continuous value.
+    pub fn default_block_colours(&self) -> &'static [[f64; 3]] {
+        const RED: [f64; 3] = [1.0, 0.0, 0.0];
+        const GREEN: [f64; 3] = [0.0, 1.0, 0.0];
+        const BLUE: [f64; 3] = [0.0, 0.0, 1.0];
+        const YELLOW: [f64; 3] = [1.0, 1.0, 0.0];
+        const CYAN: [f64; 3] = [0.0, 1.0, 1.0];
+        const MAGENTA: [f64; 3] = [1.0, 0.0, 1.0];
+        match self.kind {
+            PatternKind::Checker => &[BLUE, GREEN],
+            PatternKind::Hexagon => &[BLUE, GREEN, RED],
+            PatternKind::Brick { .. } => &[[0.5, 0.5, 0.5], [0.6, 0.15, 0.15]],
+            PatternKind::Square => &[RED, GREEN, BLUE, YELLOW],
+            PatternKind::Triangular | PatternKind::Cubic => {
+                &[RED, GREEN, BLUE, YELLOW, CYAN, MAGENTA]
+            }
+            _ => &[],
         }
     }
 
@@ -278,25 +316,14 @@ impl PatternSpec {
     /// The point the raw pattern is evaluated at: through the warps and the
     /// transformations between them (last written first), then the classic turbulence.
     fn moved_point(&self, point: DVec3) -> DVec3 {
+        // `point` is in the innermost pattern space. Each warp's frame is that space moved by
+        // the transformations written before the warp, so the point is carried into the
+        // last warp's frame, warped, carried back into the previous warp's frame, and so on.
         let mut p = point;
-        if !self.warps.is_empty() {
-            // `point` is in the innermost frame; the last warp's frame is reached through
-            // everything written before it.
-            let mut frame_inner_point = p;
-            let mut current: Option<&Transform> = None;
-            for placed in self.warps.iter().rev() {
-                let in_frame = match current {
-                    None => placed.frame.point_to_outer(frame_inner_point),
-                    Some(previous) => placed
-                        .frame
-                        .point_to_outer(previous.point_to_inner(frame_inner_point)),
-                };
-                frame_inner_point = placed.warp.apply(in_frame, self.noise_generator);
-                current = Some(&placed.frame);
-            }
-            if let Some(first) = current {
-                p = first.point_to_inner(frame_inner_point);
-            }
+        for placed in self.warps.iter().rev() {
+            let in_frame = placed.frame.point_to_outer(p);
+            let warped = placed.warp.apply(in_frame, self.noise_generator);
+            p = placed.frame.point_to_inner(warped);
         }
         if self.turbulence.amount != DVec3::ZERO && !self.handles_own_turbulence() {
             p += self.turbulence.amount
@@ -329,7 +356,7 @@ impl PatternSpec {
             PatternKind::Crackle(settings) => noise_based::crackle(p, settings),
             PatternKind::Cylindrical => geometric::cylindrical(p),
             PatternKind::Dents => noise_based::dents(p, generator),
-            PatternKind::Facets { .. } => 0.0,
+            PatternKind::Facets { .. } | PatternKind::Pavement => 0.0,
             PatternKind::Fractal(fractal) => fractal.value(p.x, p.y),
             PatternKind::Gradient(direction) => geometric::gradient_raw(p, *direction),
             PatternKind::Granite => noise_based::granite(p, generator),
@@ -398,6 +425,79 @@ mod tests {
         translate_first.note_transform(&shift);
         translate_first.add_warp(repeat);
         assert!((translate_first.value(inner) - 0.85).abs() < 1e-9);
+    }
+
+    #[test]
+    fn every_pattern_stays_finite_on_extreme_points() {
+        let kinds = [
+            PatternKind::Agate { agate_turb: 1.0 },
+            PatternKind::Boxed,
+            PatternKind::Bozo,
+            PatternKind::Brick {
+                size: DVec3::new(8.0, 3.0, 4.5),
+                mortar: 0.5,
+            },
+            PatternKind::Bumps,
+            PatternKind::Cells,
+            PatternKind::Checker,
+            PatternKind::Crackle(Crackle::default()),
+            PatternKind::Cubic,
+            PatternKind::Cylindrical,
+            PatternKind::Dents,
+            PatternKind::Fractal(Fractal::new(FractalKind::Mandelbrot, 50)),
+            PatternKind::Fractal(Fractal::new(
+                FractalKind::MagnetJulia(MagnetType::Two, glam::DVec2::new(0.5, 0.5)),
+                50,
+            )),
+            PatternKind::Gradient(DVec3::new(1.0, 2.0, 3.0)),
+            PatternKind::Granite,
+            PatternKind::Hexagon,
+            PatternKind::Leopard,
+            PatternKind::Marble,
+            PatternKind::Onion,
+            PatternKind::Planar,
+            PatternKind::Quilted {
+                control0: 1.0,
+                control1: 1.0,
+            },
+            PatternKind::Radial,
+            PatternKind::Ripples,
+            PatternKind::Spherical,
+            PatternKind::Spiral1(3.0),
+            PatternKind::Spiral2(1e300),
+            PatternKind::Square,
+            PatternKind::SquareTiles,
+            PatternKind::Triangular,
+            PatternKind::Waves,
+            PatternKind::Wood,
+            PatternKind::Wrinkles,
+        ];
+        let points = [
+            DVec3::ZERO,
+            DVec3::splat(1e300),
+            DVec3::new(-1e300, 1e-300, 3.0),
+            DVec3::splat(f64::NAN),
+            DVec3::new(f64::INFINITY, 0.0, 0.0),
+        ];
+        for kind in kinds {
+            let mut pattern = PatternSpec::new(kind);
+            pattern.wave.frequency = 1e300;
+            pattern.turbulence.amount = DVec3::splat(1e300);
+            pattern.add_warp(Warp::Mapping(Mapping {
+                dist_exp: 1e300,
+                ..Mapping::new(MappingKind::Toroidal)
+            }));
+            for point in points {
+                let value = pattern.value(point);
+                assert!(value.is_finite(), "{:?} at {point}", pattern.kind);
+                if let Some(count) = pattern.block_count() {
+                    assert!(pattern.block(point) < count);
+                }
+                if let Some(normal) = pattern.normal_perturbation(point) {
+                    assert!(normal.is_finite());
+                }
+            }
+        }
     }
 
     #[test]

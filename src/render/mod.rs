@@ -15,8 +15,10 @@
 //! rounding to bytes) and [`output`] (PNG file).
 
 pub mod antialias;
+pub mod area_light;
 pub mod atmosphere;
 pub mod camera;
+pub mod dispersion;
 pub mod encoding;
 pub mod focal_blur;
 pub mod image_map;
@@ -24,6 +26,7 @@ pub mod lights;
 pub mod normal;
 pub mod output;
 pub mod pattern;
+pub mod reflection;
 pub mod shading;
 pub mod texture;
 pub mod trace;

@@ -171,7 +171,7 @@ mod tests {
 
     fn checker(a: Colour, b: Colour) -> Pigment {
         Pigment::Pattern {
-            pattern: Pattern::new(PatternKind::Checker),
+            pattern: Box::new(Pattern::new(PatternKind::Checker)),
             map: PigmentMap::Blocks(vec![Pigment::Solid(a), Pigment::Solid(b)]),
             transform: Transform::IDENTITY,
         }
@@ -192,7 +192,7 @@ mod tests {
     #[test]
     fn nested_checker_uses_its_own_transform() {
         let inner = Pigment::Pattern {
-            pattern: Pattern::new(PatternKind::Checker),
+            pattern: Box::new(Pattern::new(PatternKind::Checker)),
             map: PigmentMap::Blocks(vec![
                 Pigment::Solid(Colour::grey(0.25)),
                 Pigment::Solid(Colour::grey(0.75)),
@@ -200,7 +200,7 @@ mod tests {
             transform: Transform::scaling(DVec3::splat(0.5)).unwrap(),
         };
         let outer = Pigment::Pattern {
-            pattern: Pattern::new(PatternKind::Checker),
+            pattern: Box::new(Pattern::new(PatternKind::Checker)),
             map: PigmentMap::Blocks(vec![inner, Pigment::Solid(Colour::WHITE)]),
             transform: Transform::IDENTITY,
         };

@@ -16,11 +16,16 @@
 //! - `shadowless` lights light diffusely but cause no highlights (as the manual says, and
 //!   renders confirm).
 
-use super::lights::{incoming, shadow_filter};
+use super::area_light::{point_random, AreaArray, Sampled};
+use super::lights::{incoming, light_filter, Incoming, SceneLight};
 use crate::geometry::World;
-use crate::scene::{Colour, Finish, LightSource};
+use crate::scene::{Colour, Finish};
 use glam::DVec3;
 use std::f64::consts::FRAC_PI_2;
+use std::ops::{Add, Div};
+
+/// Salt of the random numbers behind `crand`.
+const CRAND_SALT: u64 = 0x00c7_a9d0_5e11_3b27;
 
 /// What the shading of one surface point needs to know.
 #[derive(Clone, Copy, Debug)]
@@ -35,6 +40,8 @@ pub struct SurfaceSample<'a> {
     pub pigment: Colour,
     /// The surface finish.
     pub finish: &'a Finish,
+    /// `double_illuminate`: lights behind the surface light it as if in front.
+    pub double_illuminate: bool,
 }
 
 /// Light leaving a surface point towards the viewer, before transparency and reflection.
@@ -46,68 +53,168 @@ pub struct LocalLight {
     pub highlights: DVec3,
 }
 
+impl Add for LocalLight {
+    type Output = LocalLight;
+    fn add(self, other: LocalLight) -> LocalLight {
+        LocalLight {
+            body: self.body + other.body,
+            highlights: self.highlights + other.highlights,
+        }
+    }
+}
+
+impl Div<f64> for LocalLight {
+    type Output = LocalLight;
+    fn div(self, divisor: f64) -> LocalLight {
+        LocalLight {
+            body: self.body / divisor,
+            highlights: self.highlights / divisor,
+        }
+    }
+}
+
+impl Sampled for LocalLight {
+    fn differs_from(&self, other: &Self) -> bool {
+        (self.body + self.highlights).differs_from(&(other.body + other.highlights))
+    }
+}
+
 /// The light a surface sends to the viewer from ambient, emission and the light sources.
 pub fn local_light(
     sample: &SurfaceSample,
-    lights: &[LightSource],
+    lights: &[SceneLight],
     ambient_light: DVec3,
     world: &World,
 ) -> LocalLight {
     let finish = sample.finish;
     let pigment = sample.pigment.rgb_vec();
-    let mut body = pigment * (finish.ambient * ambient_light + finish.emission);
-    let mut highlights = DVec3::ZERO;
+    let mut total = LocalLight {
+        body: pigment * (finish.ambient * ambient_light + finish.emission),
+        highlights: DVec3::ZERO,
+    };
     let has_highlights = finish.phong != 0.0 || finish.specular != 0.0;
-    if finish.diffuse == 0.0 && !has_highlights {
-        return LocalLight { body, highlights };
+    if finish.diffuse == 0.0 && finish.diffuse_back == 0.0 && !has_highlights {
+        return total;
     }
-    let reflected_view = mirror(sample.ray_direction, sample.normal);
+    let grain = if finish.crand != 0.0 {
+        finish.crand * point_random(sample.point, CRAND_SALT)
+    } else {
+        0.0
+    };
     for light in lights {
-        let Some(arriving) = incoming(light, sample.point) else {
+        let Some(arriving) = incoming(&light.source, sample.point) else {
             continue;
         };
-        let to_light = arriving.direction;
-        let cos_incidence = sample.normal.dot(to_light);
-        if cos_incidence.is_nan() || cos_incidence <= 0.0 {
+        let area_lit = light
+            .source
+            .area
+            .as_ref()
+            .filter(|area| area.area_illumination);
+        if let Some(area) = area_lit {
+            // Every point light of the array lights the surface from its own position.
+            let array = AreaArray::new(area, light.source.position, sample.point);
+            let share = arriving.colour;
+            total = total
+                + array.average(&mut |position: DVec3| {
+                    let offset = position - sample.point;
+                    let distance = offset.length();
+                    let Some(direction) = offset.try_normalize() else {
+                        return LocalLight::default();
+                    };
+                    let towards = Incoming {
+                        direction,
+                        distance,
+                        colour: share,
+                        can_be_shadowed: arriving.can_be_shadowed,
+                    };
+                    let filter = light_filter(light, world, sample.point, &towards, None);
+                    lit_by(sample, pigment, grain, direction, share * filter, light)
+                });
             continue;
         }
-        let mut colour = arriving.colour;
-        if !light.shadowless {
-            colour *= shadow_filter(world, sample.point, to_light, arriving.distance);
-            if colour == DVec3::ZERO {
-                continue;
-            }
-        }
-        if finish.diffuse != 0.0 {
-            let falloff = if finish.brilliance == 1.0 {
-                cos_incidence
-            } else {
-                cos_incidence.powf(finish.brilliance)
-            };
-            body += finish.diffuse * falloff * pigment * colour;
-        }
-        // POV-Ray: shadowless lights cause no highlights.
-        if !has_highlights || light.shadowless {
+        let cosine = sample.normal.dot(arriving.direction);
+        if !(cosine > 0.0 || (cosine < 0.0 && lights_back(sample))) {
             continue;
         }
-        let tint = highlight_tint(finish.metallic, cos_incidence, pigment);
-        if finish.phong != 0.0 {
-            let cosine = reflected_view.dot(to_light);
-            if cosine > 0.0 {
-                highlights += finish.phong * cosine.powf(finish.phong_size) * colour * tint;
-            }
+        let array = light
+            .source
+            .area
+            .as_ref()
+            .map(|area| AreaArray::new(area, light.source.position, sample.point));
+        let filter = light_filter(light, world, sample.point, &arriving, array.as_ref());
+        let colour = arriving.colour * filter;
+        if colour == DVec3::ZERO {
+            continue;
         }
-        if finish.specular != 0.0 {
-            if let Some(half) = (to_light - sample.ray_direction).try_normalize() {
-                let cosine = half.dot(sample.normal);
-                if cosine > 0.0 {
-                    let exponent = 1.0 / finish.roughness;
-                    highlights += finish.specular * cosine.powf(exponent) * colour * tint;
-                }
+        total = total + lit_by(sample, pigment, grain, arriving.direction, colour, light);
+    }
+    total
+}
+
+/// Whether light from behind the surface lights it.
+fn lights_back(sample: &SurfaceSample) -> bool {
+    sample.double_illuminate || sample.finish.diffuse_back != 0.0
+}
+
+/// Diffuse light and highlights from light of `colour` arriving along `to_light`
+/// (shadows already applied).
+fn lit_by(
+    sample: &SurfaceSample,
+    pigment: DVec3,
+    grain: f64,
+    to_light: DVec3,
+    colour: DVec3,
+    light: &SceneLight,
+) -> LocalLight {
+    let finish = sample.finish;
+    let mut lit = LocalLight::default();
+    let cosine = sample.normal.dot(to_light);
+    if cosine.is_nan() || cosine == 0.0 {
+        return lit;
+    }
+    let front = cosine > 0.0 || sample.double_illuminate;
+    let amount = if front {
+        finish.diffuse
+    } else {
+        finish.diffuse_back
+    };
+    let cosine = cosine.abs();
+    if amount != 0.0 {
+        let falloff = if finish.brilliance == 1.0 {
+            cosine
+        } else {
+            cosine.powf(finish.brilliance)
+        };
+        lit.body = (amount * falloff - grain) * pigment * colour;
+    }
+    // POV-Ray: shadowless lights cause no highlights; nor does light from behind.
+    let has_highlights = finish.phong != 0.0 || finish.specular != 0.0;
+    if !has_highlights || light.source.shadowless || !front {
+        return lit;
+    }
+    let normal = if sample.normal.dot(to_light) > 0.0 {
+        sample.normal
+    } else {
+        -sample.normal
+    };
+    let tint = highlight_tint(finish.metallic, cosine, pigment);
+    if finish.phong != 0.0 {
+        let reflected_view = mirror(sample.ray_direction, normal);
+        let phong_cosine = reflected_view.dot(to_light);
+        if phong_cosine > 0.0 {
+            lit.highlights += finish.phong * phong_cosine.powf(finish.phong_size) * colour * tint;
+        }
+    }
+    if finish.specular != 0.0 {
+        if let Some(half) = (to_light - sample.ray_direction).try_normalize() {
+            let half_cosine = half.dot(normal);
+            if half_cosine > 0.0 {
+                let exponent = 1.0 / finish.roughness;
+                lit.highlights += finish.specular * half_cosine.powf(exponent) * colour * tint;
             }
         }
     }
-    LocalLight { body, highlights }
+    lit
 }
 
 /// `direction` mirrored about the plane with unit normal `normal`.
@@ -116,7 +223,7 @@ pub fn mirror(direction: DVec3, normal: DVec3) -> DVec3 {
 }
 
 /// The factor `metallic` applies to highlight colours for light at this incidence.
-fn highlight_tint(metallic: f64, cos_incidence: f64, pigment: DVec3) -> DVec3 {
+pub(crate) fn highlight_tint(metallic: f64, cos_incidence: f64, pigment: DVec3) -> DVec3 {
     if metallic == 0.0 {
         return DVec3::ONE;
     }

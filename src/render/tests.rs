@@ -52,10 +52,15 @@ fn textured(shape: Shape, pigment: Pigment, finish: Finish, ior: Option<f64>) ->
     let mut object = Object::new(shape);
     object.texture = Some(Arc::new(Texture {
         pigment,
-        finish,
+        finish: Arc::new(finish),
         ..Texture::default()
     }));
-    object.interior = ior.map(|ior| Interior { ior });
+    object.interior = ior.map(|ior| {
+        Box::new(Interior {
+            ior,
+            ..Interior::default()
+        })
+    });
     object
 }
 
@@ -64,14 +69,7 @@ fn plane(normal: DVec3, distance: f64) -> Shape {
 }
 
 fn point_light(position: DVec3) -> LightSource {
-    LightSource {
-        position,
-        colour: DVec3::ONE,
-        shadowless: false,
-        spotlight: None,
-        fade_distance: 0.0,
-        fade_power: 0.0,
-    }
+    LightSource::point(position, DVec3::ONE)
 }
 
 /// The centre pixel of a 3×3 render (its ray runs exactly along the camera direction).
@@ -150,7 +148,7 @@ fn snell_at_a_flat_interface() {
     // A wall at z = 2 whose grey level is (x + 2) / 4 (gradient x, scale 4, translate -2x),
     // seen through the surface of a glass half-space tilted about the y axis.
     let ramp = Pigment::Pattern {
-        pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+        pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
         map: PigmentMap::Colours(vec![(0.0, Colour::BLACK), (1.0, Colour::WHITE)]),
         transform: Transform::scaling(DVec3::splat(4.0))
             .unwrap()
@@ -274,7 +272,7 @@ fn busy_scene() -> Scene {
     let floor = textured(
         plane(DVec3::Y, -1.0),
         Pigment::Pattern {
-            pattern: Pattern::new(PatternKind::Checker),
+            pattern: Box::new(Pattern::new(PatternKind::Checker)),
             map: PigmentMap::Blocks(vec![
                 Pigment::Solid(Colour::WHITE),
                 Pigment::Solid(Colour::rgb(0.1, 0.2, 0.1)),
@@ -306,6 +304,7 @@ fn busy_scene() -> Scene {
         radius: 15.0,
         falloff: 30.0,
         tightness: 5.0,
+        cylinder: false,
     });
     let mut busy = scene(
         vec![
@@ -425,17 +424,20 @@ fn hostile_values_do_not_panic() {
     for object in &mut odd_finish.objects {
         object.texture = Some(Arc::new(Texture {
             pigment: Pigment::Solid(Colour::rgbft(f64::NAN, 2.0, -1.0, 0.5, f64::INFINITY)),
-            finish: Finish {
+            finish: Arc::new(Finish {
                 roughness: 0.0,
                 phong: 1.0,
                 specular: 1.0,
                 phong_size: f64::NAN,
                 brilliance: -3.0,
                 ..Finish::default()
-            },
+            }),
             ..Texture::default()
         }));
-        object.interior = Some(Interior { ior: 0.0 });
+        object.interior = Some(Box::new(Interior {
+            ior: 0.0,
+            ..Interior::default()
+        }));
     }
     let world = World::build(&odd_finish);
     let image = render(

@@ -39,10 +39,12 @@
 //!   bailout (parent · max(T))² · reflection.)
 
 use super::atmosphere::AtmosphereShader;
+use super::dispersion::band;
 use super::encoding::is_legacy_scene;
-use super::lights::transmission;
+use super::lights::{prepare_lights, transmission, SceneLight};
 use super::normal::perturbed_normal;
 use super::pattern::pigment_colour;
+use super::reflection::{apply_exponent, interior_fade, reflection_colour};
 use super::shading::{local_light, mirror, SurfaceSample};
 use super::texture::for_each_component;
 use crate::geometry::{Material, Ray, SurfaceHit, World};
@@ -71,6 +73,8 @@ const GREY_WEIGHTS: DVec3 = DVec3::new(0.297, 0.589, 0.114);
 pub struct Media {
     entries: [(u32, f64); MEDIA_DEPTH],
     len: usize,
+    /// For a ray of one dispersion band: the exponent applied to `dispersion`.
+    band: Option<f64>,
 }
 
 impl Media {
@@ -78,6 +82,7 @@ impl Media {
     pub const OUTSIDE: Media = Media {
         entries: [(0, 1.0); MEDIA_DEPTH],
         len: 0,
+        band: None,
     };
 
     /// Index of refraction of the innermost medium.
@@ -86,6 +91,11 @@ impl Media {
             0 => 1.0,
             n => self.entries[n - 1].1,
         }
+    }
+
+    /// The material of the innermost object the ray is in.
+    fn innermost(&self) -> Option<u32> {
+        self.len.checked_sub(1).map(|at| self.entries[at].0)
     }
 
     /// The media after entering an object with this material and index.
@@ -123,6 +133,22 @@ pub struct Tracer<'a> {
     adc_bailout: f64,
     atmosphere: AtmosphereShader<'a>,
     legacy_opacity: bool,
+    lights: Vec<SceneLight>,
+    /// Some object is `no_image` (camera rays must skip it).
+    any_no_image: bool,
+    /// Some object is `no_reflection` (reflected rays must skip it).
+    any_no_reflection: bool,
+}
+
+/// What a ray is for, which decides the objects it can see.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum RayKind {
+    /// A ray from the camera (and its unbent continuations): skips `no_image` objects.
+    Camera,
+    /// A mirror-reflected ray: skips `no_reflection` objects.
+    Reflected,
+    /// A refracted ray: sees everything.
+    Refracted,
 }
 
 impl<'a> Tracer<'a> {
@@ -141,12 +167,15 @@ impl<'a> Tracer<'a> {
             adc_bailout,
             atmosphere: AtmosphereShader::new(&scene.atmosphere, scene.background.rgb_vec()),
             legacy_opacity: is_legacy_scene(settings),
+            lights: prepare_lights(scene),
+            any_no_image: world.materials.iter().any(|m| m.no_image),
+            any_no_reflection: world.materials.iter().any(|m| m.no_reflection),
         }
     }
 
     /// The colour seen along a camera ray.
     pub fn trace_camera_ray(&self, ray: &Ray) -> DVec3 {
-        let colour = self.trace(*ray, 1, RayWeight::CAMERA, &Media::OUTSIDE);
+        let colour = self.trace(*ray, 1, RayWeight::CAMERA, &Media::OUTSIDE, RayKind::Camera);
         if colour.is_finite() {
             colour
         } else {
@@ -155,7 +184,14 @@ impl<'a> Tracer<'a> {
     }
 
     /// The colour seen along `ray`, a ray of trace `level` and ADC `weight` inside `media`.
-    fn trace(&self, ray: Ray, level: u32, weight: RayWeight, media: &Media) -> DVec3 {
+    fn trace(
+        &self,
+        ray: Ray,
+        level: u32,
+        weight: RayWeight,
+        media: &Media,
+        kind: RayKind,
+    ) -> DVec3 {
         let mut media = *media;
         let mut weight = weight;
         let mut min_distance = SURFACE_EPSILON;
@@ -164,8 +200,9 @@ impl<'a> Tracer<'a> {
         let mut colour = DVec3::ZERO;
         // Where the stretch of the ray not yet passed through the atmosphere starts.
         let mut segment_start = 0.0;
+        let mut travelled = 0.0;
         for _ in 0..MAX_CONTINUATIONS {
-            let hit = self.world.first_hit(&ray, min_distance, f64::INFINITY);
+            let hit = self.first_hit(&ray, min_distance, kind);
             if !self.atmosphere.is_clear() {
                 let start = ray.origin + ray.direction * segment_start;
                 let end = hit.as_ref().map_or(f64::INFINITY, |hit| hit.distance);
@@ -182,6 +219,16 @@ impl<'a> Tracer<'a> {
             let Some(material) = self.world.materials.get(hit.material as usize) else {
                 return colour;
             };
+            // Light from this hit fades on its way through the object the ray is in.
+            if let Some(inside) = media
+                .innermost()
+                .and_then(|id| self.world.materials.get(id as usize))
+            {
+                if let Some(kept) = interior_fade(&inside.interior, hit.distance - travelled) {
+                    carried *= kept;
+                }
+            }
+            travelled = hit.distance;
             let surface = self.shade(&ray, &hit, material, level, weight, &media);
             colour += carried * surface.colour;
             let Some(continued) = surface.continued else {
@@ -194,6 +241,26 @@ impl<'a> Tracer<'a> {
             min_distance = hit.distance + SURFACE_EPSILON;
         }
         colour
+    }
+
+    /// The nearest surface along `ray` beyond `min_distance` that a ray of this kind sees.
+    fn first_hit(&self, ray: &Ray, min_distance: f64, kind: RayKind) -> Option<SurfaceHit> {
+        let materials = &self.world.materials;
+        match kind {
+            RayKind::Camera if self.any_no_image => {
+                self.world
+                    .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
+                        materials.get(id as usize).is_some_and(|m| m.no_image)
+                    })
+            }
+            RayKind::Reflected if self.any_no_reflection => {
+                self.world
+                    .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
+                        materials.get(id as usize).is_some_and(|m| m.no_reflection)
+                    })
+            }
+            _ => self.world.first_hit(ray, min_distance, f64::INFINITY),
+        }
     }
 
     /// The light leaving a surface towards the ray, and how the ray continues through it
@@ -263,14 +330,10 @@ impl<'a> Tracer<'a> {
             ray_direction: ray.direction,
             pigment,
             finish: &texture.finish,
+            double_illuminate: material.double_illuminate,
         };
         let settings = &self.scene.settings;
-        let local = local_light(
-            &sample,
-            &self.scene.lights,
-            settings.ambient_light,
-            self.world,
-        );
+        let local = local_light(&sample, &self.lights, settings.ambient_light, self.world);
         let opacity = if self.legacy_opacity {
             1.0 - pigment.filter * pigment.rgb_vec().max_element() - pigment.transmit
         } else {
@@ -284,36 +347,56 @@ impl<'a> Tracer<'a> {
             return shaded;
         }
 
-        // Light coming through the surface.
-        let mut reflection = texture.finish.reflection;
+        // The indices of refraction on both sides, for refraction and Fresnel reflection.
+        let interior = &material.interior;
+        let mut ior = sanitise_ior(interior.ior);
+        if let Some(offset) = media.band {
+            ior = sanitise_ior(ior * interior.dispersion.powf(offset));
+        }
+        let (ratio, beyond) = if entering {
+            (media.ior() / ior, media.entered(hit.material, ior))
+        } else {
+            let beyond = media.left(hit.material);
+            (ior / beyond.ior(), beyond)
+        };
+        let finish = &texture.finish;
+        let cos_incidence = -ray.direction.dot(normal);
+        let mut reflection = reflection_colour(finish, cos_incidence, ratio, pigment.rgb_vec());
         let mut reflection_weight = weight.reflected(reflection);
-        let pass = if passes_light {
+
+        // Light coming through the surface.
+        let mut pass = if passes_light {
             transmission(pigment)
         } else {
             DVec3::ZERO
         };
+        if finish.conserve_energy {
+            pass *= DVec3::ONE - reflection;
+        }
         let pass_weight = weight.transmitted(pass);
         let surface_passes = pass.dot(GREY_WEIGHTS) >= self.adc_bailout;
         if pass_weight.0 > 0.0 && pass_weight.0 >= self.adc_bailout && surface_passes {
-            let ior = sanitise_ior(material.interior.ior);
-            let (ratio, beyond) = if entering {
-                (media.ior() / ior, media.entered(hit.material, ior))
-            } else {
-                let beyond = media.left(hit.material);
-                (ior / beyond.ior(), beyond)
-            };
             if (ratio - 1.0).abs() < 1e-12 {
                 shaded.continued = Some(Continued {
                     filter: pass,
                     weight: pass_weight,
                     media: beyond,
                 });
+            } else if entering && media.band.is_none() && disperses(interior) {
+                match self.dispersed(ray, hit, normal, media, ior, level, pass_weight) {
+                    Some(seen) => shaded.colour += pass * seen,
+                    None => {
+                        reflection = DVec3::ONE;
+                        reflection_weight = pass_weight;
+                    }
+                }
             } else if let Some(bent) = refract(ray.direction, normal, ratio) {
                 let through = Ray {
                     origin: hit.point,
                     direction: bent,
                 };
-                shaded.colour += pass * self.trace(through, level + 1, pass_weight, &beyond);
+                let seen = self.trace(through, level + 1, pass_weight, &beyond, RayKind::Refracted);
+                shaded.colour += pass * seen;
             } else {
                 // Total internal reflection: the surface becomes a perfect mirror.
                 reflection = DVec3::ONE;
@@ -328,8 +411,14 @@ impl<'a> Tracer<'a> {
                     origin: hit.point,
                     direction,
                 };
-                let seen = self.trace(reflected, level + 1, reflection_weight, media);
-                shaded.colour += reflection * seen;
+                let seen = self.trace(
+                    reflected,
+                    level + 1,
+                    reflection_weight,
+                    media,
+                    RayKind::Reflected,
+                );
+                shaded.colour += reflection * apply_exponent(seen, finish.reflection_exponent);
             }
         }
         shaded
@@ -345,6 +434,48 @@ fn reflected_direction(direction: DVec3, normal: DVec3, facing: DVec3) -> Option
         return mirror(direction, facing).try_normalize();
     }
     Some(reflected)
+}
+
+impl Tracer<'_> {
+    /// White light entering a dispersive object: one refracted ray per band, each with its
+    /// own index of refraction, weighted by the band's colour. `None` on total internal
+    /// reflection of the middle of the spectrum.
+    #[allow(clippy::too_many_arguments)]
+    fn dispersed(
+        &self,
+        ray: &Ray,
+        hit: &SurfaceHit,
+        normal: DVec3,
+        media: &Media,
+        ior: f64,
+        level: u32,
+        weight: RayWeight,
+    ) -> Option<DVec3> {
+        let interior = &self.world.materials.get(hit.material as usize)?.interior;
+        let count = interior.dispersion_samples.max(2);
+        refract(ray.direction, normal, media.ior() / ior)?;
+        let mut total = DVec3::ZERO;
+        for index in 0..count {
+            let (offset, colour) = band(index, count);
+            let band_ior = sanitise_ior(ior * interior.dispersion.powf(offset));
+            let mut beyond = media.entered(hit.material, band_ior);
+            beyond.band = Some(offset);
+            let Some(bent) = refract(ray.direction, normal, media.ior() / band_ior) else {
+                continue;
+            };
+            let through = Ray {
+                origin: hit.point,
+                direction: bent,
+            };
+            total += colour * self.trace(through, level + 1, weight, &beyond, RayKind::Refracted);
+        }
+        Some(total)
+    }
+}
+
+/// Whether an interior splits light into bands.
+fn disperses(interior: &crate::scene::Interior) -> bool {
+    interior.dispersion != 1.0 && interior.dispersion > 0.0 && interior.dispersion.is_finite()
 }
 
 /// A ray's importance for adaptive depth control: compared with `adc_bailout` before the

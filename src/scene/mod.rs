@@ -6,12 +6,18 @@
 mod atmosphere;
 mod camera;
 mod colour;
+mod finish;
+mod implicit;
+mod light;
 mod texture;
 mod transform;
 
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
 pub use camera::{Camera, CylinderKind, FocalBlur, Projection, DEFAULT_ANGLE};
 pub use colour::Colour;
+pub use finish::{Finish, Interior, Irid};
+pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
+pub use light::{AreaLight, LightSource, Spotlight};
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
     Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
@@ -71,36 +77,6 @@ impl Default for GlobalSettings {
     }
 }
 
-/// A light source.
-#[derive(Clone, Debug)]
-pub struct LightSource {
-    /// Position of the light.
-    pub position: DVec3,
-    /// Colour (intensity) of the light.
-    pub colour: DVec3,
-    /// A `shadowless` light is never blocked by objects.
-    pub shadowless: bool,
-    /// Spotlight cone, when the light is a spotlight.
-    pub spotlight: Option<Spotlight>,
-    /// `fade_distance`; 0 means no fading.
-    pub fade_distance: f64,
-    /// `fade_power`; 0 means no fading.
-    pub fade_power: f64,
-}
-
-/// The cone of a `spotlight`.
-#[derive(Clone, Copy, Debug)]
-pub struct Spotlight {
-    /// The point the spotlight aims at.
-    pub point_at: DVec3,
-    /// Half-angle in degrees of the fully lit cone (default 30).
-    pub radius: f64,
-    /// Half-angle in degrees where the light reaches zero (default 45).
-    pub falloff: f64,
-    /// Exponent sharpening the edge of the cone.
-    pub tightness: f64,
-}
-
 /// One object of the scene tree: a shape or a CSG node, with its appearance.
 #[derive(Clone, Debug)]
 pub struct Object {
@@ -112,7 +88,7 @@ pub struct Object {
     /// Pattern transformations inside are expressed in this object's local space.
     pub texture: Option<Arc<Texture>>,
     /// Interior (index of refraction...); `None` inherits the parent's or the default.
-    pub interior: Option<Interior>,
+    pub interior: Option<Box<Interior>>,
     /// Swaps inside and outside (`inverse`).
     pub inverse: bool,
     /// The object casts no shadow (`no_shadow`).
@@ -219,6 +195,12 @@ pub enum Shape {
     /// `lathe { .. }`: a curve in the (radius, height) plane, as cubic Béziers of `<r, y>`
     /// points, turned around the Y axis.
     Lathe(Arc<Vec<[glam::DVec2; 4]>>),
+    /// `isosurface { .. }`: where a function equals its threshold.
+    Isosurface(Arc<Isosurface>),
+    /// `height_field { .. }`: a grid of heights over the unit square.
+    HeightField(Arc<HeightField>),
+    /// `sphere_sweep { .. }`: a sphere moved along a spline.
+    SphereSweep(Arc<SphereSweep>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,
@@ -321,59 +303,4 @@ pub enum CsgOperation {
     Difference,
     /// A union without the surfaces that lie inside other children.
     Merge,
-}
-
-/// POV-Ray's `finish` with its defaults.
-#[derive(Clone, Debug)]
-pub struct Finish {
-    /// Ambient light reflected (colour; default 0.1 grey).
-    pub ambient: DVec3,
-    /// Light emitted independently of `ambient_light` (default black).
-    pub emission: DVec3,
-    /// Diffuse reflection (default 0.6).
-    pub diffuse: f64,
-    /// Diffuse falloff exponent (default 1).
-    pub brilliance: f64,
-    /// Phong highlight amount (default 0).
-    pub phong: f64,
-    /// Phong exponent (default 40).
-    pub phong_size: f64,
-    /// Blinn specular highlight amount (default 0).
-    pub specular: f64,
-    /// Specular roughness (default 0.05).
-    pub roughness: f64,
-    /// Tints highlights with the surface colour, 0 to 1 (default 0).
-    pub metallic: f64,
-    /// Mirror reflection colour (default black).
-    pub reflection: DVec3,
-}
-
-impl Default for Finish {
-    fn default() -> Self {
-        Finish {
-            ambient: DVec3::splat(0.1),
-            emission: DVec3::ZERO,
-            diffuse: 0.6,
-            brilliance: 1.0,
-            phong: 0.0,
-            phong_size: 40.0,
-            specular: 0.0,
-            roughness: 0.05,
-            metallic: 0.0,
-            reflection: DVec3::ZERO,
-        }
-    }
-}
-
-/// What is inside an object.
-#[derive(Clone, Debug)]
-pub struct Interior {
-    /// Index of refraction (default 1: no bending).
-    pub ior: f64,
-}
-
-impl Default for Interior {
-    fn default() -> Self {
-        Interior { ior: 1.0 }
-    }
 }

@@ -19,9 +19,12 @@ pub struct Texture {
     /// Colour and transparency at each point.
     pub pigment: Pigment,
     /// Perturbation of the surface normal; `None` leaves the normal as the shape has it.
-    pub normal: Option<Normal>,
-    /// How the surface reacts to light.
-    pub finish: Finish,
+    /// (Boxed, like the pattern of a pigment, so that the millions of plain textures of a
+    /// large generated scene stay small.)
+    pub normal: Option<Box<Normal>>,
+    /// How the surface reacts to light (shared: most textures of a large scene keep the
+    /// finish they started from; change it with `Arc::make_mut`).
+    pub finish: Arc<Finish>,
     /// When set, the texture is made of other textures (layers, a texture map, block
     /// textures, tiles, averages) and `pigment`, `normal` and `finish` are not used.
     pub compound: Option<Arc<CompoundTexture>>,
@@ -32,7 +35,7 @@ impl Default for Texture {
         Texture {
             pigment: Pigment::Solid(Colour::BLACK),
             normal: None,
-            finish: Finish::default(),
+            finish: Arc::new(Finish::default()),
             compound: None,
         }
     }
@@ -83,7 +86,7 @@ pub enum Pigment {
     /// A pattern looked up through a map; the point is first mapped by `transform`'s
     /// `inner_from_outer` (outer space to pattern space).
     Pattern {
-        pattern: Pattern,
+        pattern: Box<Pattern>,
         map: PigmentMap,
         transform: Transform,
     },

@@ -292,6 +292,9 @@ pub enum ArrayElement {
 pub struct FunctionLiteral {
     /// Parameter names; empty means POV-Ray's default `x, y, z`.
     pub parameters: Vec<Name>,
+    /// `W, H` written before the body (a height field's or an image's function); empty
+    /// otherwise.
+    pub resolution: Vec<Expr>,
     /// The body.
     pub body: FunctionBody,
     /// The whole literal.

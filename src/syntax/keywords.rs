@@ -284,6 +284,8 @@ pub const ALL: &[&str] = &[
     "normal_map",
     "normal_vectors",
     "now",
+    "number_of_sides",
+    "number_of_tiles",
     "number_of_waves",
     "object",
     "octaves",

@@ -211,6 +211,9 @@ impl Lowerer {
                 args.into_inner()
                     .map(|a| match a.as_rule() {
                         Rule::block => Argument::Block(Rc::new(self.block(a))),
+                        Rule::spline_kind => {
+                            Argument::Expr(Expr::Ident(Rc::from(a.as_str()), self.span(&a)))
+                        }
                         _ => Argument::Expr(self.full_expr(a)),
                     })
                     .collect()
@@ -302,8 +305,10 @@ impl Lowerer {
         let span = self.span(&pair);
         let mut parameters = Vec::new();
         let mut body = FunctionBody::Items(Rc::from(Vec::new()));
+        let mut resolution = Vec::new();
         for p in pair.into_inner() {
             match p.as_rule() {
+                Rule::expr => resolution.push(self.expr(p)),
                 Rule::parameters => {
                     parameters = self.parameters(p).into_iter().map(|p| p.name).collect()
                 }
@@ -322,6 +327,7 @@ impl Lowerer {
         }
         FunctionLiteral {
             parameters,
+            resolution,
             body,
             span,
         }

@@ -283,6 +283,118 @@ fn map_entry_with_only_a_key_is_an_error() {
 }
 
 #[test]
+fn missing_height_field_image_lists_the_folders_searched() {
+    check(
+        "missing_height_field",
+        1,
+        20,
+        &[
+            "height field image `no_such_height.png` not found",
+            "searched: ",
+        ],
+    );
+}
+
+#[test]
+fn unimplemented_internal_function_is_refused_where_called() {
+    check(
+        "unimplemented_internal",
+        2,
+        14,
+        &[
+            "`f_helix1`: POV-Ray's internal function 25 is not implemented in durer",
+            "called here",
+            "implemented: f_ellipsoid",
+        ],
+    );
+}
+
+#[test]
+fn agate_does_not_take_another_patterns_setting() {
+    check(
+        "agate_with_quilted_setting",
+        2,
+        30,
+        &["`control1` only applies to quilted"],
+    );
+}
+
+#[test]
+fn a_spline_without_points_is_reported_at_the_block() {
+    check(
+        "empty_spline",
+        2,
+        18,
+        &["a spline needs at least one point", "this spline has none"],
+    );
+}
+
+#[test]
+fn a_spline_call_with_a_bad_kind_points_at_the_argument() {
+    check("spline_kind", 3, 21, &["expected a spline kind"]);
+}
+
+#[test]
+fn inside_on_a_float_points_at_the_argument() {
+    check(
+        "inside_not_object",
+        3,
+        22,
+        &["expected an object, found a float"],
+    );
+}
+
+#[test]
+fn inside_on_a_triangle_says_it_has_no_inside() {
+    check(
+        "inside_not_solid",
+        3,
+        22,
+        &["`inside` needs a solid object", "contains a triangle"],
+    );
+}
+
+#[test]
+fn a_datetime_format_with_a_time_zone_points_at_the_format() {
+    check(
+        "datetime_format",
+        2,
+        32,
+        &["`%Z` cannot be used", "in this datetime"],
+    );
+}
+
+#[test]
+fn an_undefined_macro_argument_is_refused() {
+    check(
+        "undefined_macro_argument",
+        3,
+        7,
+        &["cannot pass undefined identifier `Nothing` to a macro"],
+    );
+}
+
+#[test]
+fn area_light_sizes_must_be_positive() {
+    check(
+        "area_light_size",
+        2,
+        36,
+        &["an area light needs 1 to 257 lights per axis", "this is 0"],
+    );
+}
+
+#[test]
+fn area_light_modifiers_need_an_area_light() {
+    check(
+        "area_modifier_alone",
+        2,
+        3,
+        &["`jitter` needs an `area_light` before it"],
+    );
+}
+
+#[test]
 fn palette_entry_outside_the_palette_is_refused() {
     check(
         "palette_index_range",

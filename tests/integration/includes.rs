@@ -133,3 +133,118 @@ fn embedded_colours_have_povray_values() {
     }
     assert_eq!(ours.lines().count(), theirs.lines().count());
 }
+
+/// durer's embedded include files other than colors.inc (which has its own tests), with
+/// their text.
+const EMBEDDED_FILES: &[(&str, &str)] = &[
+    (
+        "consts.inc",
+        include_str!("../../src/eval/stdlib/consts.inc"),
+    ),
+    (
+        "finish.inc",
+        include_str!("../../src/eval/stdlib/finish.inc"),
+    ),
+    ("golds.inc", include_str!("../../src/eval/stdlib/golds.inc")),
+    (
+        "metals.inc",
+        include_str!("../../src/eval/stdlib/metals.inc"),
+    ),
+];
+
+/// (name, is a number) for each identifier an embedded file declares: numbers are floats,
+/// vectors and colours; the rest are finishes and textures.
+fn declared_names(text: &str) -> Vec<(String, bool)> {
+    let mut names: Vec<(String, bool)> = Vec::new();
+    for line in text.lines() {
+        let Some(rest) = line.strip_prefix("#declare ") else {
+            continue;
+        };
+        let Some((name, value)) = rest.split_once('=') else {
+            continue;
+        };
+        let name = name.trim().to_string();
+        if name.ends_with("_Temp") || names.iter().any(|(n, _)| *n == name) {
+            continue;
+        }
+        let value = value.trim_start();
+        let appearance = ["finish", "texture", "pigment"]
+            .iter()
+            .any(|word| value.starts_with(word));
+        names.push((name, !appearance));
+    }
+    names
+}
+
+/// Evaluates a scene including `file` and writes one line per declared identifier: its five
+/// components for numbers, `defined` for the rest.
+fn dump_include(
+    file: &str,
+    names: &[(String, bool)],
+    dir: &std::path::Path,
+    installed: bool,
+) -> String {
+    let mut scene = format!("#include \"{file}\"\n#fopen Out \"dump.txt\" write\n");
+    for (name, number) in names {
+        if *number {
+            scene.push_str(&format!(
+                "#write (Out, \"{name} \", vstr(5, <0,0,0,0,0> + ({name}), \" \", 0, 9), \"\\n\")\n"
+            ));
+        } else {
+            scene.push_str(&format!(
+                "#ifdef ({name}) #write (Out, \"{name} defined\\n\") #end\n"
+            ));
+        }
+    }
+    scene.push_str("#fclose Out\n");
+    let path = dir.join("dump.pov");
+    std::fs::write(&path, scene).expect("write scene");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: installed,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(&path, options);
+    let errors: Vec<String> = evaluated
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Error)
+        .map(|d| durer::report::render_plain(d, &evaluated.sources))
+        .collect();
+    assert!(errors.is_empty(), "{file}: {}", errors.join("\n"));
+    std::fs::read_to_string(dir.join("dump.txt")).expect("dump written")
+}
+
+#[test]
+fn embedded_include_files_load_without_povray() {
+    for (file, text) in EMBEDDED_FILES {
+        let names = declared_names(text);
+        let dir = scratch(&format!("embedded-{file}"));
+        let dump = dump_include(file, &names, &dir, false);
+        assert_eq!(dump.lines().count(), names.len(), "{file}:\n{dump}");
+    }
+}
+
+#[test]
+fn embedded_include_files_match_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    for (file, text) in EMBEDDED_FILES {
+        let names = declared_names(text);
+        let ours = dump_include(file, &names, &scratch(&format!("ours-{file}")), false);
+        let theirs = dump_include(file, &names, &scratch(&format!("theirs-{file}")), true);
+        assert_eq!(ours.lines().count(), theirs.lines().count(), "{file}");
+        for (a, b) in ours.lines().zip(theirs.lines()) {
+            let parse = |l: &str| -> Vec<f64> {
+                l.split_whitespace()
+                    .skip(1)
+                    .filter_map(|v| v.parse().ok())
+                    .collect()
+            };
+            let (x, y) = (parse(a), parse(b));
+            let same = x.len() == y.len() && x.iter().zip(&y).all(|(p, q)| (p - q).abs() < 1e-6);
+            assert!(same, "{file}: embedded `{a}` differs from POV-Ray's `{b}`");
+        }
+    }
+}

@@ -3,7 +3,7 @@
 #version 3.7;
 global_settings { assumed_gamma 1.0 noise_generator 3 }
 #declare Map = color_map { [0 rgb 0] [1 rgb 1] }
-#declare Patterns = array[33] {
+#declare Patterns = array[34] {
   pigment { agate agate_turb 0.5 color_map { Map } },
   pigment { boxed color_map { Map } },
   pigment { bozo turbulence 0.3 octaves 3 omega 0.6 lambda 2.5 color_map { Map } },
@@ -36,6 +36,7 @@ global_settings { assumed_gamma 1.0 noise_generator 3 }
   pigment { spotted color_map { Map } },
   pigment { square rgb 0, rgb 0.3, rgb 0.6, rgb 1 },
   pigment { tiling 1 color_map { Map } },
+  pigment { pavement number_of_sides 4 number_of_tiles 3 pattern 2 form 1 interior 1 exterior 2 },
   pigment { triangular rgb 0, rgb 0.2, rgb 0.4, rgb 0.6, rgb 0.8, rgb 1 }
 }
 #declare MorePatterns = array[3] {

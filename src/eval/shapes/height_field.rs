@@ -1,0 +1,212 @@
+//! `height_field { png "file" | function W, H { .. } [smooth] [water_level W] [hierarchy B] }`.
+//!
+//! In: the item stream after the brace. Out: [`Shape::HeightField`] with its grid of heights.
+//! Holds: heights are what POV-Ray makes of the file (measured with `trace`): a 16-bit value
+//! over 65536, where an 8-bit grey level g counts as 257 g and an 8-bit colour pixel as
+//! 256 red + green; a function is sampled at x = column / (W - 1), y = row / (H - 1) (row 0
+//! at z = 1), clamped to [0, 1] and cut to 16 bits. Palette images give the height of their
+//! colour, not of their palette index (the raster loader keeps no indices). A missing file is
+//! a diagnostic listing the folders searched.
+
+use super::super::stream::Stream;
+use super::super::value::Value;
+use super::super::{EvalResult, Evaluator};
+use crate::diag::Span;
+use crate::raster::{Raster, RasterFormat};
+use crate::scene::{HeightField, Shape};
+use crate::syntax::ast::{Expr, FunctionLiteral, Item};
+use std::rc::Rc;
+use std::sync::Arc;
+
+/// Most grid points a height field may have (guards huge allocations).
+const GRID_LIMIT: f64 = 16e6;
+/// The 16-bit scale of POV-Ray's height values.
+const FULL_SCALE: f64 = 65535.0;
+/// Heights are 16-bit values divided by this.
+const HEIGHT_DIVISOR: f64 = 65536.0;
+
+impl Evaluator {
+    /// Reads a height field's source and modifiers.
+    pub(crate) fn eval_height_field(
+        &mut self,
+        span: Span,
+        stream: &mut Stream,
+    ) -> EvalResult<Shape> {
+        let first = self.next_item(stream)?;
+        let (columns, rows, heights) = match first {
+            Some(Item::Expr(Expr::Function(literal))) => self.height_function(&literal)?,
+            Some(Item::Keyword(word, keyword_span)) => {
+                let Some(format) = RasterFormat::from_keyword(&word) else {
+                    return Err(self
+                        .error(keyword_span, format!("`{word}` is not an image format"))
+                        .with_help("use png, pgm, ppm, tga, gif, jpeg, hdr or sys")
+                        .into());
+                };
+                let (name, name_span) = self.expect_file_name(stream)?;
+                self.height_image(&name, name_span, format)?
+            }
+            Some(Item::Expr(expr)) => {
+                let name_span = expr.span();
+                match self.eval_expr(&expr)? {
+                    Value::String(name) => {
+                        self.height_image(&name, name_span, RasterFormat::System)?
+                    }
+                    other => {
+                        return Err(self
+                            .error(
+                                name_span,
+                                format!("expected a file name, found {}", other.type_name()),
+                            )
+                            .into())
+                    }
+                }
+            }
+            _ => {
+                return Err(self
+                    .error(span, "expected an image file or `function W, H { .. }`")
+                    .into())
+            }
+        };
+        let mut field = HeightField {
+            columns,
+            rows,
+            heights,
+            smooth: false,
+            water_level: 0.0,
+        };
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, _) => match &**word {
+                    "smooth" => field.smooth = true,
+                    "water_level" => {
+                        field.water_level = self.expect_float(stream, "the water level")?
+                    }
+                    "hierarchy" | "premultiplied" => {
+                        self.optional_bool(stream)?;
+                    }
+                    "gamma" => {
+                        self.expect_float(stream, "the gamma")?;
+                    }
+                    _ => {
+                        stream.push_back(item);
+                        break;
+                    }
+                },
+                Item::Comma(_) => {}
+                _ => {
+                    stream.push_back(item);
+                    break;
+                }
+            }
+        }
+        Ok(Shape::HeightField(Arc::new(field)))
+    }
+
+    /// Reads the file name after a format keyword.
+    fn expect_file_name(&mut self, stream: &mut Stream) -> EvalResult<(Rc<str>, Span)> {
+        let (value, span) = self.expect_value(stream, "the file name")?;
+        match value {
+            Value::String(name) => Ok((name, span)),
+            other => Err(self
+                .error(
+                    span,
+                    format!("expected the file name, found {}", other.type_name()),
+                )
+                .into()),
+        }
+    }
+
+    /// The grid of an image file.
+    fn height_image(
+        &mut self,
+        name: &str,
+        span: Span,
+        format: RasterFormat,
+    ) -> EvalResult<(usize, usize, Vec<f64>)> {
+        let path = match self.find_include(name) {
+            Ok(path) => path,
+            Err(folders) => {
+                let searched: Vec<String> =
+                    folders.iter().map(|f| f.display().to_string()).collect();
+                return Err(self
+                    .error(span, format!("height field image `{name}` not found"))
+                    .with_label("no such file")
+                    .with_help(format!("searched: {}", searched.join(", ")))
+                    .into());
+            }
+        };
+        let raster = crate::raster::load(&path, format).map_err(|message| {
+            self.error(span, format!("cannot read `{}`: {message}", path.display()))
+        })?;
+        if raster.width < 2 || raster.height < 2 {
+            return Err(self
+                .error(span, "a height field image needs at least 2 by 2 pixels")
+                .into());
+        }
+        Ok(image_heights(&raster))
+    }
+
+    /// The grid of `function W, H { .. }`.
+    fn height_function(
+        &mut self,
+        literal: &Rc<FunctionLiteral>,
+    ) -> EvalResult<(usize, usize, Vec<f64>)> {
+        let [width, height] = literal.resolution.as_slice() else {
+            return Err(self
+                .error(
+                    literal.span,
+                    "a height field's function needs its resolution",
+                )
+                .with_help("write `function WIDTH, HEIGHT { .. }`")
+                .into());
+        };
+        let columns = self.eval_float(width)?.floor();
+        let rows = self.eval_float(height)?.floor();
+        if !(columns >= 2.0 && rows >= 2.0 && columns * rows <= GRID_LIMIT) {
+            return Err(self
+                .error(
+                    literal.span,
+                    format!("a height field's resolution must be at least 2 by 2 and at most {GRID_LIMIT} points, found {columns} by {rows}"),
+                )
+                .into());
+        }
+        let function = self.compile_function(literal)?;
+        let (columns, rows) = (columns as usize, rows as usize);
+        let mut heights = vec![0.0; columns * rows];
+        for row in 0..rows {
+            // Grid row 0 is at z = 0, which is the function's y = 1.
+            let y = 1.0 - row as f64 / (rows - 1) as f64;
+            for column in 0..columns {
+                let x = column as f64 / (columns - 1) as f64;
+                let value = function.eval(&[x, y, 0.0]);
+                let clamped = if value.is_finite() {
+                    value.clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                heights[row * columns + column] = (clamped * FULL_SCALE).floor() / HEIGHT_DIVISOR;
+            }
+        }
+        Ok((columns, rows, heights))
+    }
+}
+
+/// The heights of an image, grid row 0 being the image's bottom row.
+fn image_heights(raster: &Raster) -> (usize, usize, Vec<f64>) {
+    let (columns, rows) = (raster.width as usize, raster.height as usize);
+    let mut heights = vec![0.0; columns * rows];
+    for row in 0..rows {
+        let image_row = (rows - 1 - row) as i64;
+        for column in 0..columns {
+            let [red, green, _, _] = raster.pixel(column as i64, image_row);
+            let level = |value: f32, scale: f64| (f64::from(value) * scale).round();
+            let value = if raster.grey || raster.sixteen_bit || raster.high_dynamic_range {
+                level(red, FULL_SCALE)
+            } else {
+                level(red, 255.0) * 256.0 + level(green, 255.0)
+            };
+            heights[row * columns + column] = value.clamp(0.0, FULL_SCALE) / HEIGHT_DIVISOR;
+        }
+    }
+    (columns, rows, heights)
+}

@@ -1,0 +1,371 @@
+//! Compiled user functions: the float functions of POV-Ray's `function { .. }` in a form render
+//! threads evaluate fast.
+//!
+//! In: a tree of [`Node`]s built by the evaluator from a function's body (constants already
+//! folded, parameters numbered, calls of other user functions resolved). Out: [`Function`], a
+//! `Send + Sync` value whose [`Function::eval`] maps parameter values to a float.
+//! Holds: evaluation never allocates and never panics (arguments beyond those passed read as
+//! 0); the tree's depth is bounded by the source expression's nesting.
+
+pub mod internal;
+
+pub use internal::Internal;
+
+use std::sync::Arc;
+
+/// Most parameters a compiled function may take.
+pub const MAX_PARAMETERS: usize = 32;
+
+/// Tolerance of `=` and `!=`, the same as the scene language's.
+const EQUALITY_EPSILON: f64 = 1e-10;
+
+/// A compiled float function of its parameters.
+#[derive(Clone, Debug)]
+pub struct Function {
+    /// The body.
+    root: Node,
+    /// Number of parameters (`x, y, z` when the source declares none).
+    arity: usize,
+}
+
+impl Function {
+    /// A function of `arity` parameters computing `root`.
+    pub fn new(root: Node, arity: usize) -> Function {
+        Function { root, arity }
+    }
+
+    /// Number of parameters.
+    pub fn arity(&self) -> usize {
+        self.arity
+    }
+
+    /// The value for the given parameters (missing ones read as 0).
+    #[inline]
+    pub fn eval(&self, parameters: &[f64]) -> f64 {
+        self.root.eval(parameters)
+    }
+
+    /// The value at a point, for functions of `x, y, z`.
+    #[inline]
+    pub fn eval_point(&self, point: glam::DVec3) -> f64 {
+        self.root.eval(&[point.x, point.y, point.z])
+    }
+}
+
+/// Operations of one float argument.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unary {
+    Negate,
+    Not,
+    Abs,
+    Acos,
+    Acosh,
+    Asin,
+    Asinh,
+    Atan,
+    Atanh,
+    Ceil,
+    Cos,
+    Cosh,
+    Degrees,
+    Exp,
+    Floor,
+    Int,
+    Ln,
+    Log,
+    Radians,
+    Sin,
+    Sinh,
+    Sqrt,
+    Tan,
+    Tanh,
+}
+
+impl Unary {
+    /// The operation for a built-in function name.
+    pub fn from_name(name: &str) -> Option<Unary> {
+        Some(match name {
+            "abs" => Unary::Abs,
+            "acos" => Unary::Acos,
+            "acosh" => Unary::Acosh,
+            "asin" => Unary::Asin,
+            "asinh" => Unary::Asinh,
+            "atan" => Unary::Atan,
+            "atanh" => Unary::Atanh,
+            "ceil" => Unary::Ceil,
+            "cos" => Unary::Cos,
+            "cosh" => Unary::Cosh,
+            "degrees" => Unary::Degrees,
+            "exp" => Unary::Exp,
+            "floor" => Unary::Floor,
+            "int" => Unary::Int,
+            "ln" => Unary::Ln,
+            "log" => Unary::Log,
+            "radians" => Unary::Radians,
+            "sin" => Unary::Sin,
+            "sinh" => Unary::Sinh,
+            "sqrt" => Unary::Sqrt,
+            "tan" => Unary::Tan,
+            "tanh" => Unary::Tanh,
+            _ => return None,
+        })
+    }
+
+    /// Applies the operation.
+    #[inline]
+    pub fn apply(self, a: f64) -> f64 {
+        match self {
+            Unary::Negate => -a,
+            Unary::Not => f64::from(a == 0.0),
+            Unary::Abs => a.abs(),
+            Unary::Acos => a.acos(),
+            Unary::Acosh => a.acosh(),
+            Unary::Asin => a.asin(),
+            Unary::Asinh => a.asinh(),
+            Unary::Atan => a.atan(),
+            Unary::Atanh => a.atanh(),
+            Unary::Ceil => a.ceil(),
+            Unary::Cos => a.cos(),
+            Unary::Cosh => a.cosh(),
+            Unary::Degrees => a.to_degrees(),
+            Unary::Exp => a.exp(),
+            Unary::Floor => a.floor(),
+            Unary::Int => a.trunc(),
+            Unary::Ln => a.ln(),
+            Unary::Log => a.log10(),
+            Unary::Radians => a.to_radians(),
+            Unary::Sin => a.sin(),
+            Unary::Sinh => a.sinh(),
+            Unary::Sqrt => a.sqrt(),
+            Unary::Tan => a.tan(),
+            Unary::Tanh => a.tanh(),
+        }
+    }
+}
+
+/// Operations of two float arguments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Binary {
+    Add,
+    Subtract,
+    Multiply,
+    Divide,
+    Less,
+    LessEqual,
+    Equal,
+    NotEqual,
+    GreaterEqual,
+    Greater,
+    And,
+    Or,
+    Pow,
+    Atan2,
+    Mod,
+    Min,
+    Max,
+}
+
+impl Binary {
+    /// Applies the operation.
+    #[inline]
+    pub fn apply(self, a: f64, b: f64) -> f64 {
+        match self {
+            Binary::Add => a + b,
+            Binary::Subtract => a - b,
+            Binary::Multiply => a * b,
+            Binary::Divide => a / b,
+            Binary::Less => f64::from(a < b),
+            Binary::LessEqual => f64::from(a <= b),
+            Binary::Equal => f64::from((a - b).abs() < EQUALITY_EPSILON),
+            Binary::NotEqual => f64::from((a - b).abs() >= EQUALITY_EPSILON),
+            Binary::GreaterEqual => f64::from(a >= b),
+            Binary::Greater => f64::from(a > b),
+            Binary::And => f64::from(a != 0.0 && b != 0.0),
+            Binary::Or => f64::from(a != 0.0 || b != 0.0),
+            Binary::Pow => a.powf(b),
+            Binary::Atan2 => a.atan2(b),
+            Binary::Mod => a % b,
+            Binary::Min => a.min(b),
+            Binary::Max => a.max(b),
+        }
+    }
+}
+
+/// One node of a compiled expression.
+#[derive(Clone, Debug)]
+pub enum Node {
+    /// A number (literals and everything computed at compile time).
+    Constant(f64),
+    /// The parameter with this index.
+    Parameter(usize),
+    /// An operation of one value.
+    Unary(Unary, Box<Node>),
+    /// An operation of two values.
+    Binary(Binary, Box<[Node; 2]>),
+    /// `condition ? a : b`.
+    Conditional(Box<[Node; 3]>),
+    /// `select(a, negative, zero, positive)`; the three-argument form repeats `positive`
+    /// as `zero`.
+    Select(Box<[Node; 4]>),
+    /// `sum(i, from, to, body)` or `prod(..)`: `body` reads the counter as parameter
+    /// `counter`, the other parameters as passed.
+    Series {
+        /// True for `prod`, false for `sum`.
+        product: bool,
+        /// Index of the counter among the parameters.
+        counter: usize,
+        /// From, to and body.
+        parts: Box<[Node; 3]>,
+    },
+    /// A call of another compiled function.
+    Call(Arc<Function>, Box<[Node]>),
+    /// A call of one of POV-Ray's internal functions.
+    Internal(Internal, Box<[Node]>),
+}
+
+impl Node {
+    /// The node's value for the given parameters.
+    pub fn eval(&self, parameters: &[f64]) -> f64 {
+        match self {
+            Node::Constant(value) => *value,
+            Node::Parameter(index) => parameters.get(*index).copied().unwrap_or(0.0),
+            Node::Unary(op, a) => op.apply(a.eval(parameters)),
+            Node::Binary(op, pair) => op.apply(pair[0].eval(parameters), pair[1].eval(parameters)),
+            Node::Conditional(parts) => {
+                if parts[0].eval(parameters) != 0.0 {
+                    parts[1].eval(parameters)
+                } else {
+                    parts[2].eval(parameters)
+                }
+            }
+            Node::Select(parts) => {
+                let selector = parts[0].eval(parameters);
+                if selector < 0.0 {
+                    parts[1].eval(parameters)
+                } else if selector == 0.0 {
+                    parts[2].eval(parameters)
+                } else {
+                    parts[3].eval(parameters)
+                }
+            }
+            Node::Series {
+                product,
+                counter,
+                parts,
+            } => series(*product, *counter, parts, parameters),
+            Node::Call(function, arguments) => {
+                let values = argument_values(arguments, parameters);
+                function.eval(&values[..arguments.len().min(MAX_PARAMETERS)])
+            }
+            Node::Internal(which, arguments) => {
+                let values = argument_values(arguments, parameters);
+                which.eval(&values)
+            }
+        }
+    }
+}
+
+/// Evaluates call arguments into a fixed buffer (extra arguments are dropped).
+#[inline]
+fn argument_values(arguments: &[Node], parameters: &[f64]) -> [f64; MAX_PARAMETERS] {
+    let mut values = [0.0; MAX_PARAMETERS];
+    for (value, argument) in values.iter_mut().zip(arguments) {
+        *value = argument.eval(parameters);
+    }
+    values
+}
+
+/// Most terms one `sum` or `prod` adds up (guards endless evaluation).
+const SERIES_LIMIT: f64 = 1e6;
+
+/// `sum` or `prod` of `parts[2]` for the counter from `parts[0]` to `parts[1]` in steps of 1.
+fn series(product: bool, counter: usize, parts: &[Node; 3], parameters: &[f64]) -> f64 {
+    let from = parts[0].eval(parameters);
+    let to = parts[1].eval(parameters);
+    let mut local = [0.0; MAX_PARAMETERS];
+    let count = parameters.len().min(MAX_PARAMETERS);
+    local[..count].copy_from_slice(&parameters[..count]);
+    let used = (counter + 1).max(count).min(MAX_PARAMETERS);
+    let mut total = if product { 1.0 } else { 0.0 };
+    let mut index = from;
+    let mut steps = 0.0;
+    while index <= to && steps < SERIES_LIMIT {
+        if let Some(slot) = local.get_mut(counter) {
+            *slot = index;
+        }
+        let term = parts[2].eval(&local[..used]);
+        total = if product { total * term } else { total + term };
+        index += 1.0;
+        steps += 1.0;
+    }
+    total
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parameter(index: usize) -> Node {
+        Node::Parameter(index)
+    }
+
+    #[test]
+    fn arithmetic_and_calls() {
+        // f(x, y) = x * x + y
+        let square_plus = Arc::new(Function::new(
+            Node::Binary(
+                Binary::Add,
+                Box::new([
+                    Node::Binary(Binary::Multiply, Box::new([parameter(0), parameter(0)])),
+                    parameter(1),
+                ]),
+            ),
+            2,
+        ));
+        assert_eq!(square_plus.eval(&[3.0, 1.0]), 10.0);
+        // g(x) = f(x + 1, 2)
+        let caller = Function::new(
+            Node::Call(
+                square_plus,
+                Box::new([
+                    Node::Binary(Binary::Add, Box::new([parameter(0), Node::Constant(1.0)])),
+                    Node::Constant(2.0),
+                ]),
+            ),
+            1,
+        );
+        assert_eq!(caller.eval(&[2.0]), 11.0);
+    }
+
+    #[test]
+    fn select_and_series() {
+        let select = Function::new(
+            Node::Select(Box::new([
+                parameter(0),
+                Node::Constant(-1.0),
+                Node::Constant(0.0),
+                Node::Constant(1.0),
+            ])),
+            1,
+        );
+        assert_eq!(select.eval(&[-2.0]), -1.0);
+        assert_eq!(select.eval(&[0.0]), 0.0);
+        assert_eq!(select.eval(&[5.0]), 1.0);
+        // sum(i, 1, 4, i) with i as parameter 1
+        let sum = Function::new(
+            Node::Series {
+                product: false,
+                counter: 1,
+                parts: Box::new([Node::Constant(1.0), Node::Constant(4.0), parameter(1)]),
+            },
+            1,
+        );
+        assert_eq!(sum.eval(&[0.0]), 10.0);
+    }
+
+    #[test]
+    fn missing_parameters_read_zero() {
+        let function = Function::new(parameter(5), 1);
+        assert_eq!(function.eval(&[1.0]), 0.0);
+    }
+}

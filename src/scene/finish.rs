@@ -1,0 +1,125 @@
+//! Surface finishes and object interiors as POV-Ray defines them.
+//!
+//! In: nothing (data definitions). Out: [`Finish`], [`Interior`]. Holds: defaults are
+//! POV-Ray 3.7's; `albedo` forms are already converted to the peak values used in shading.
+
+use glam::DVec3;
+
+/// POV-Ray's `finish` with its defaults.
+#[derive(Clone, Debug)]
+pub struct Finish {
+    /// Ambient light reflected (colour; default 0.1 grey).
+    pub ambient: DVec3,
+    /// Light emitted independently of `ambient_light` (default black).
+    pub emission: DVec3,
+    /// Diffuse reflection (default 0.6).
+    pub diffuse: f64,
+    /// Diffuse reflection of light arriving from behind the surface (`diffuse D, B`;
+    /// default 0).
+    pub diffuse_back: f64,
+    /// Diffuse falloff exponent (default 1).
+    pub brilliance: f64,
+    /// Random darkening of the diffuse light, 0 to 1 (default 0).
+    pub crand: f64,
+    /// Phong highlight amount (default 0).
+    pub phong: f64,
+    /// Phong exponent (default 40).
+    pub phong_size: f64,
+    /// Blinn specular highlight amount (default 0).
+    pub specular: f64,
+    /// Specular roughness (default 0.05).
+    pub roughness: f64,
+    /// Tints highlights with the surface colour, 0 to 1 (default 0).
+    pub metallic: f64,
+    /// Mirror reflection colour, the maximum (glancing) one for variable reflection
+    /// (default black).
+    pub reflection: DVec3,
+    /// Reflection seen along the normal (`reflection { min, max }`); without it the
+    /// reflection is constant, or (with `fresnel`) the minimum is black.
+    pub reflection_min: Option<DVec3>,
+    /// `fresnel`: the reflection varies with the angle by the Fresnel equations.
+    pub fresnel: bool,
+    /// `falloff`: exponent of the variation from minimum to maximum reflection (default 1).
+    pub reflection_falloff: f64,
+    /// `exponent` (or `reflection_exponent`): reflected light is raised to this power
+    /// (default 1).
+    pub reflection_exponent: f64,
+    /// `metallic` inside `reflection` (or `reflect_metallic`): tints the reflection with the
+    /// pigment (default 0).
+    pub reflect_metallic: f64,
+    /// `conserve_energy`: transparency is reduced by what the surface reflects.
+    pub conserve_energy: bool,
+    /// `irid { .. }`: thin-film interference colours.
+    pub irid: Option<Irid>,
+}
+
+impl Default for Finish {
+    fn default() -> Self {
+        Finish {
+            ambient: DVec3::splat(0.1),
+            emission: DVec3::ZERO,
+            diffuse: 0.6,
+            diffuse_back: 0.0,
+            brilliance: 1.0,
+            crand: 0.0,
+            phong: 0.0,
+            phong_size: 40.0,
+            specular: 0.0,
+            roughness: 0.05,
+            metallic: 0.0,
+            reflection: DVec3::ZERO,
+            reflection_min: None,
+            fresnel: false,
+            reflection_falloff: 1.0,
+            reflection_exponent: 1.0,
+            reflect_metallic: 0.0,
+            conserve_energy: false,
+            irid: None,
+        }
+    }
+}
+
+/// `irid { amount thickness T turbulence U }`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Irid {
+    /// Contribution of the effect to the surface colour.
+    pub amount: f64,
+    /// Film thickness (default 0).
+    pub thickness: f64,
+    /// Variation of the thickness (default 0).
+    pub turbulence: f64,
+}
+
+/// What is inside an object.
+#[derive(Clone, Debug)]
+pub struct Interior {
+    /// Index of refraction (default 1: no bending).
+    pub ior: f64,
+    /// `dispersion`: the index of refraction of violet light over that of red (default 1).
+    pub dispersion: f64,
+    /// `dispersion_samples`: wavelengths traced for dispersion (default 7).
+    pub dispersion_samples: u32,
+    /// `fade_distance`: distance at which light inside has faded halfway towards
+    /// `fade_colour` (0: no fading).
+    pub fade_distance: f64,
+    /// `fade_power` (default 0: no fading).
+    pub fade_power: f64,
+    /// `fade_color`: colour light fades to inside (default black).
+    pub fade_colour: DVec3,
+    /// `caustics` (parsed; no effect yet).
+    pub caustics: f64,
+}
+
+impl Default for Interior {
+    fn default() -> Self {
+        Interior {
+            ior: 1.0,
+            dispersion: 1.0,
+            dispersion_samples: 7,
+            fade_distance: 0.0,
+            fade_power: 0.0,
+            fade_colour: DVec3::ZERO,
+            caustics: 0.0,
+        }
+    }
+}

@@ -1,0 +1,94 @@
+//! Light sources as POV-Ray defines them.
+//!
+//! In: nothing (data definitions). Out: [`LightSource`], [`Spotlight`], [`AreaLight`].
+//! Holds: positions and directions in world space.
+
+use super::Object;
+use glam::DVec3;
+use std::sync::Arc;
+
+/// A light source.
+#[derive(Clone, Debug)]
+pub struct LightSource {
+    /// Position of the light.
+    pub position: DVec3,
+    /// Colour (intensity) of the light.
+    pub colour: DVec3,
+    /// A `shadowless` light is never blocked by objects.
+    pub shadowless: bool,
+    /// Spotlight cone (or cylinder), when the light is a spotlight or cylinder light.
+    pub spotlight: Option<Spotlight>,
+    /// `fade_distance`; 0 means no fading.
+    pub fade_distance: f64,
+    /// `fade_power`; 0 means no fading.
+    pub fade_power: f64,
+    /// `parallel`: the point the parallel light's rays run towards (`point_at`).
+    pub parallel: Option<DVec3>,
+    /// `area_light`: the array of point lights that softens shadows.
+    pub area: Option<AreaLight>,
+    /// `projected_through { object }`: light only passes where it crosses this object.
+    pub projected_through: Option<Arc<Object>>,
+    /// `looks_like { object }`: the light's visible shape, already at the light's position
+    /// and marked `no_shadow`; evaluation adds it to the scene's objects.
+    pub looks_like: Option<Arc<Object>>,
+}
+
+impl LightSource {
+    /// A plain point light of this colour at `position`.
+    pub fn point(position: DVec3, colour: DVec3) -> LightSource {
+        LightSource {
+            position,
+            colour,
+            shadowless: false,
+            spotlight: None,
+            fade_distance: 0.0,
+            fade_power: 0.0,
+            parallel: None,
+            area: None,
+            projected_through: None,
+            looks_like: None,
+        }
+    }
+}
+
+/// The cone of a `spotlight`, or the beam of a `cylinder` light.
+#[derive(Clone, Copy, Debug)]
+pub struct Spotlight {
+    /// The point the spotlight aims at.
+    pub point_at: DVec3,
+    /// Half-angle in degrees of the fully lit cone (default 30); for a cylinder light the
+    /// radius of the fully lit beam (default 0.75).
+    pub radius: f64,
+    /// Half-angle in degrees where the light reaches zero (default 45); for a cylinder light
+    /// the radius where it reaches zero (default 1).
+    pub falloff: f64,
+    /// Exponent sharpening the edge of the cone.
+    pub tightness: f64,
+    /// A `cylinder` light: the beam is bounded by a cylinder around the axis, not a cone.
+    pub cylinder: bool,
+}
+
+/// `area_light <axis1>, <axis2>, size1, size2` and its modifiers.
+#[derive(Clone, Copy, Debug)]
+pub struct AreaLight {
+    /// First edge of the light's rectangle (centred on the light's position).
+    pub axis1: DVec3,
+    /// Second edge of the rectangle.
+    pub axis2: DVec3,
+    /// Number of point lights along the first axis (at least 1).
+    pub size1: u32,
+    /// Number of point lights along the second axis (at least 1).
+    pub size2: u32,
+    /// `adaptive N`: subdivide the array at least N times, then only where corners differ;
+    /// `None` tests every point light.
+    pub adaptive: Option<u32>,
+    /// `jitter`: each point light moves randomly within its cell.
+    pub jitter: bool,
+    /// `circular`: the rectangle is squashed into an ellipse.
+    pub circular: bool,
+    /// `orient`: the array turns to face each lit point.
+    pub orient: bool,
+    /// `area_illumination`: each point light also lights (diffuse and highlights) from its
+    /// own position, not only from the centre.
+    pub area_illumination: bool,
+}

@@ -1,0 +1,2 @@
+// datetime() with a format naming a time zone.
+#declare Stamp = datetime(now, "%Y %Z");

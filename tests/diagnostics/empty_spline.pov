@@ -1,0 +1,2 @@
+// A spline without points.
+#declare Empty = spline { linear_spline }

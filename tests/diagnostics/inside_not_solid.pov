@@ -1,0 +1,3 @@
+// inside() on a shape without an inside.
+#declare Flat = triangle { <0,0,0>, <1,0,0>, <0,1,0> }
+#declare In = inside(Flat, <0,0,0>);

@@ -1,0 +1,3 @@
+// A macro argument naming nothing.
+#macro SetTo(P) #local P = 5; #end
+SetTo(Nothing)

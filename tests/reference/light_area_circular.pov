@@ -1,0 +1,10 @@
+// Tests: circular and orient area lights (a 9x9 circular light, and an oriented circular
+// one, which acts like a sphere of light).
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 4, -6> look_at <0, 0.5, 0> angle 50 }
+light_source { <2, 5, -1> rgb 0.7 area_light <3, 0, 0>, <0, 0, 3>, 9, 9 circular }
+light_source { <-4, 3, -2> rgb 0.3 area_light <2, 0, 0>, <0, 2, 0>, 5, 5 circular orient }
+plane { y, 0 pigment { rgb 0.9 } }
+sphere { <-0.8, 0.9, 0.3>, 0.7 pigment { rgb <0.9, 0.4, 0.3> } }
+box { <0.6, 0, -1.2>, <1.4, 1.2, -0.4> pigment { rgb <0.3, 0.5, 0.9> } }
