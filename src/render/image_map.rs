@@ -59,13 +59,20 @@ pub fn image_colour(image: &ImageMap, point: DVec3) -> Colour {
 /// level (stored value, 0 to 1) and rows and columns wrapping,
 /// x = ½·(h(r+1, c−1) − h(r+1, c+1)) and y = ½·(h(r+1, c−1) + h(r+1, c+1)) − h(r, c)
 /// (least-squares fit over a 3×3 neighbourhood: these weights within 0.002, the others
-/// below 0.002), linear in `bump_size`.
+/// below 0.002), linear in `bump_size`. With `use_index` on a palette image h is the
+/// palette index itself (0 to 255, not scaled; measured the same way to 1e-5).
 pub fn bump_map_tilt(image: &ImageMap, point: DVec3) -> DVec3 {
     let Some((u, v)) = image_coordinates(image, point) else {
         return DVec3::ZERO;
     };
     let (column, row) = pixel_position(image, u, v);
-    let height = |column: i64, row: i64| grey(pixel(image, column, row));
+    let palette = image.palette_indices.as_deref().filter(|_| image.use_index);
+    let height = |column: i64, row: i64| match palette {
+        Some(indices) => indices
+            .get(pixel_index(image, column, row))
+            .map_or(0.0, |&index| f64::from(index)),
+        None => grey(pixel(image, column, row)),
+    };
     let below_left = height(column - 1, row + 1);
     let below_right = height(column + 1, row + 1);
     DVec3::new(
