@@ -496,6 +496,17 @@ impl Evaluator {
                     value @ (Value::Colour(_) | Value::Float(_) | Value::Vector(_)) => {
                         pigment = Pigment::Solid(self.to_colour(value, expr.span())?)
                     }
+                    // `pigment { function { .. } color_map { .. } }`: a function pattern.
+                    Value::Function(literal) => {
+                        let function = self.compile_function(&literal)?;
+                        pigment = Pigment::Pattern {
+                            pattern: Box::new(Pattern::new(crate::pattern::PatternKind::Function(
+                                function,
+                            ))),
+                            map: PigmentMap::Colours(grey_ramp()),
+                            transform: Transform::IDENTITY,
+                        };
+                    }
                     _ => return Err(self.unexpected_in(&item, "pigment")),
                 },
                 Item::Comma(_) => {}

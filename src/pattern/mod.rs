@@ -67,6 +67,9 @@ pub struct PlacedWarp {
 /// The patterns.
 #[derive(Clone, Debug)]
 pub enum PatternKind {
+    /// `function { .. }`: a user function of x, y, z, its value used as is (the wave shape
+    /// then wraps it into [0, 1] as for every pattern).
+    Function(std::sync::Arc<crate::function::Function>),
     /// Banded like marble with its own turbulence (`agate_turb`, default 1).
     Agate {
         /// The built-in turbulence's amount.
@@ -301,15 +304,12 @@ impl PatternSpec {
     }
 
     /// True for the patterns that use the classic turbulence inside their formula instead
-    /// of moving the point with it.
+    /// of moving the point with it. (The spirals do both, measured: the point is moved, then
+    /// the scalar turbulence at the moved point is added.)
     fn handles_own_turbulence(&self) -> bool {
         matches!(
             self.kind,
-            PatternKind::Marble
-                | PatternKind::Wood
-                | PatternKind::Agate { .. }
-                | PatternKind::Spiral1(_)
-                | PatternKind::Spiral2(_)
+            PatternKind::Marble | PatternKind::Wood | PatternKind::Agate { .. }
         )
     }
 
@@ -353,13 +353,14 @@ impl PatternSpec {
             PatternKind::Boxed => geometric::boxed(p),
             PatternKind::Bozo | PatternKind::Bumps => noise_based::bozo(p, generator),
             PatternKind::Cells => noise_based::cells(p),
-            PatternKind::Crackle(settings) => noise_based::crackle(p, settings),
+            PatternKind::Crackle(settings) => noise_based::crackle(p, settings, generator),
             PatternKind::Cylindrical => geometric::cylindrical(p),
             PatternKind::Dents => noise_based::dents(p, generator),
             PatternKind::Facets { .. } | PatternKind::Pavement => 0.0,
             PatternKind::Fractal(fractal) => fractal.value(p.x, p.y),
             PatternKind::Gradient(direction) => geometric::gradient_raw(p, *direction),
             PatternKind::Granite => noise_based::granite(p, generator),
+            PatternKind::Function(function) => function.eval_point(p),
             PatternKind::Leopard => geometric::leopard(p),
             PatternKind::Marble => noise_based::marble(p, turbulence, generator),
             PatternKind::Onion => geometric::onion(p),
