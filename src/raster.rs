@@ -4,7 +4,8 @@
 //! In: a file path and POV-Ray's format keyword (`png`, `jpeg`, `tga`, `ppm`, `pgm`, `hdr`,
 //! `gif`, `bmp`, `sys`). Out: a [`Raster`] of raw channel values in [0, 1] (HDR values may be
 //! larger), rows from the top of the image. Holds: no gamma is applied here; what a value means
-//! (colour to linearise, height to use as is) is for the caller to decide.
+//! (colour to linearise, height to use as is) is for the caller to decide. Palette PNG files
+//! also give each pixel's palette index (for `material_map`).
 
 use std::path::Path;
 
@@ -24,6 +25,8 @@ pub struct Raster {
     pub sixteen_bit: bool,
     /// The file is high dynamic range (values are linear light, not encoded).
     pub high_dynamic_range: bool,
+    /// Each pixel's palette index, row by row from the top, for palette PNG files.
+    pub palette_indices: Option<Vec<u8>>,
 }
 
 impl Raster {
@@ -117,6 +120,10 @@ pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
     let sixteen_bit = matches!(colour_type, C::L16 | C::La16 | C::Rgb16 | C::Rgba16);
     let high_dynamic_range = matches!(colour_type, C::Rgb32F | C::Rgba32F);
     let pixels = decoded.to_rgba32f().pixels().map(|p| p.0).collect();
+    let palette_indices = match chosen {
+        image::ImageFormat::Png => png_palette_indices(&bytes, width, height),
+        _ => None,
+    };
     Ok(Raster {
         width,
         height,
@@ -124,7 +131,37 @@ pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
         grey,
         sixteen_bit,
         high_dynamic_range,
+        palette_indices,
     })
+}
+
+/// The palette index of every pixel of a palette PNG (`None` for other PNGs or when the
+/// file does not decode to `width` × `height` pixels).
+fn png_palette_indices(bytes: &[u8], width: u32, height: u32) -> Option<Vec<u8>> {
+    let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    decoder.set_transformations(png::Transformations::IDENTITY);
+    let mut reader = decoder.read_info().ok()?;
+    let mut buffer = vec![0; reader.output_buffer_size()?];
+    let frame = reader.next_frame(&mut buffer).ok()?;
+    if frame.color_type != png::ColorType::Indexed || (frame.width, frame.height) != (width, height)
+    {
+        return None;
+    }
+    let bits = frame.bit_depth as usize;
+    if !matches!(bits, 1 | 2 | 4 | 8) {
+        return None;
+    }
+    let per_byte = 8 / bits;
+    let mask = (1u16 << bits) - 1;
+    let mut indices = Vec::with_capacity(width as usize * height as usize);
+    for row in buffer.chunks(frame.line_size).take(height as usize) {
+        for column in 0..width as usize {
+            let byte = *row.get(column / per_byte)?;
+            let shift = 8 - bits * (column % per_byte + 1);
+            indices.push(((u16::from(byte) >> shift) & mask) as u8);
+        }
+    }
+    Some(indices)
 }
 
 #[cfg(test)]
@@ -144,6 +181,26 @@ mod tests {
         assert_eq!(raster.pixel(-5, 9), [0.0, 0.0, 0.2, 1.0]);
         assert!(!raster.grey && !raster.sixteen_bit);
         assert!(load(&folder.join("none.png"), RasterFormat::Png).is_err());
+        assert!(raster.palette_indices.is_none());
+        std::fs::remove_dir_all(&folder).unwrap();
+    }
+
+    #[test]
+    fn keeps_palette_indices_of_packed_palette_pngs() {
+        let folder = std::env::temp_dir().join(format!("durer-palette-{}", std::process::id()));
+        std::fs::create_dir_all(&folder).unwrap();
+        let path = folder.join("palette.png");
+        let mut encoder = png::Encoder::new(std::fs::File::create(&path).unwrap(), 3, 2);
+        encoder.set_color(png::ColorType::Indexed);
+        encoder.set_depth(png::BitDepth::Four);
+        encoder.set_palette((0..16u8).flat_map(|i| [i * 16, 0, 0]).collect::<Vec<u8>>());
+        let mut writer = encoder.write_header().unwrap();
+        // Rows of three 4-bit indices: 1 2 3 and 15 0 7 (the last nibble is padding).
+        writer.write_image_data(&[0x12, 0x30, 0xF0, 0x70]).unwrap();
+        writer.finish().unwrap();
+        let raster = load(&path, RasterFormat::Png).unwrap();
+        assert_eq!(raster.palette_indices, Some(vec![1, 2, 3, 15, 0, 7]));
+        assert_eq!(raster.pixel(0, 1)[0], 240.0 / 255.0);
         std::fs::remove_dir_all(&folder).unwrap();
     }
 }

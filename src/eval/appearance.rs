@@ -31,7 +31,6 @@ pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &[
     "function",
     "granite",
     "hexagon",
-    "image_pattern",
     "julia",
     "leopard",
     "magnet",
@@ -69,6 +68,11 @@ impl Evaluator {
         let mut pattern_transform = Transform::IDENTITY;
         let mut average = false;
         while let Some(item) = self.next_item(stream)? {
+            if let Some(spec) = self.image_pattern(&item)? {
+                pattern = Some((spec, None, item.span()));
+                pattern_transform = Transform::IDENTITY;
+                continue;
+            }
             if let Item::Keyword(word, span) = &item {
                 if &**word == "average" {
                     average = true;
@@ -165,10 +169,8 @@ impl Evaluator {
                             pattern_transform = Transform::IDENTITY;
                         }
                         "material_map" => {
-                            self.warn(
-                                block.head_span,
-                                "`material_map` is not supported yet; it is ignored",
-                            );
+                            let compound = self.eval_material_map(&mut body, block.head_span)?;
+                            texture.compound = Some(Arc::new(compound));
                         }
                         _ => match self.eval_block(block)? {
                             Value::Pigment(p) => texture.pigment = Rc::unwrap_or_clone(p),
@@ -360,6 +362,14 @@ impl Evaluator {
                     };
                     continue;
                 }
+            }
+            if let Some(spec) = self.image_pattern(&item)? {
+                pigment = Pigment::Pattern {
+                    pattern: Box::new(spec),
+                    map: PigmentMap::Colours(grey_ramp()),
+                    transform: Transform::IDENTITY,
+                };
+                continue;
             }
             if let Item::Keyword(word, span) = &item {
                 if let Some(spec) = self.pattern_keyword(word, *span, stream)? {

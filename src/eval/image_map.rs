@@ -6,23 +6,96 @@
 //!
 //! Gamma (POV-Ray 3.7): an image's stored values are decoded with the `gamma` given in the
 //! block (`gamma srgb` or a number), else with the sRGB transfer function, except for HDR
-//! files, which are linear already.
+//! files, which are linear already. `image_pattern` and `bump_map` use the stored values
+//! whatever `gamma` says (measured: a stored 64 gives the pattern value 0.25098 with and
+//! without `gamma 1.0`; bump tilts are linear in the stored grey levels).
 
 use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::raster::{load, RasterFormat};
-use crate::scene::{ImageGamma, ImageMap, ImageProjection};
-use crate::syntax::ast::Item;
+use crate::scene::{
+    CompoundTexture, ImageGamma, ImageMap, ImageProjection, Pattern, PatternKind, Texture,
+    Transform,
+};
+use crate::syntax::ast::{BlockHead, Item};
+use std::sync::Arc;
 
 impl Evaluator {
+    /// An `image_pattern { .. }` block as a pattern; `None` for any other item.
+    pub(crate) fn image_pattern(&mut self, item: &Item) -> EvalResult<Option<Pattern>> {
+        let Item::Block(block) = item else {
+            return Ok(None);
+        };
+        if !matches!(&block.head, BlockHead::Word(word) if &**word == "image_pattern") {
+            return Ok(None);
+        }
+        let mut body = Stream::new(block.body.clone());
+        let (image, _) =
+            self.read_image(&mut body, block.head_span, ImageUse::StoredValues, None)?;
+        Ok(Some(Pattern::new(PatternKind::ImagePattern(Arc::new(
+            image,
+        )))))
+    }
+
     /// Reads an `image_map` or `bump_map` body (`head_span` is the block's keyword), with
     /// the `bump_size` given inside it.
     pub(crate) fn eval_image_map(
         &mut self,
         stream: &mut Stream,
         head_span: Span,
+    ) -> EvalResult<(ImageMap, Option<f64>)> {
+        self.read_image(stream, head_span, ImageUse::Colours, None)
+    }
+
+    /// Reads a `material_map` body: the image (stored values, palette indices kept) and its
+    /// textures (POV-Ray 3.7 rejects transformations inside the block).
+    pub(crate) fn eval_material_map(
+        &mut self,
+        stream: &mut Stream,
+        head_span: Span,
+    ) -> EvalResult<CompoundTexture> {
+        let mut materials = MaterialItems {
+            textures: Vec::new(),
+        };
+        let (image, _) = self.read_image(
+            stream,
+            head_span,
+            ImageUse::StoredValues,
+            Some(&mut materials),
+        )?;
+        if materials.textures.is_empty() {
+            return Err(self
+                .error(head_span, "this `material_map` lists no textures")
+                .with_label("expected `texture { .. }` entries after the file name")
+                .into());
+        }
+        Ok(CompoundTexture::MaterialMap {
+            image: Arc::new(image),
+            textures: materials.textures,
+            transform: Transform::IDENTITY,
+        })
+    }
+
+    /// Reads a `bump_map` body (`head_span` is the block's keyword), with the `bump_size`
+    /// given inside it; the heights are the stored values (measured: no gamma decoding).
+    pub(crate) fn eval_bump_map(
+        &mut self,
+        stream: &mut Stream,
+        head_span: Span,
+    ) -> EvalResult<(ImageMap, Option<f64>)> {
+        self.read_image(stream, head_span, ImageUse::StoredValues, None)
+    }
+
+    /// Reads an image block's body for `purpose`; `materials` collects a `material_map`'s
+    /// textures (other blocks reject them).
+    fn read_image(
+        &mut self,
+        stream: &mut Stream,
+        head_span: Span,
+        purpose: ImageUse,
+        mut materials: Option<&mut MaterialItems>,
     ) -> EvalResult<(ImageMap, Option<f64>)> {
         let mut bump_size = None;
         let mut format = RasterFormat::System;
@@ -34,6 +107,9 @@ impl Evaluator {
         let mut transmit_all = 0.0;
         let mut gamma: Option<ImageGamma> = None;
         let mut use_index = false;
+        let mut use_alpha = false;
+        let mut palette_filter = Vec::new();
+        let mut palette_transmit = Vec::new();
         while let Some(item) = self.next_item(stream)? {
             match &item {
                 Item::Keyword(word, span) => match &**word {
@@ -61,23 +137,34 @@ impl Evaluator {
                     "once" => once = true,
                     "interpolate" => interpolation = self.expect_float(stream, "2 or 4")? as u8,
                     "filter" | "transmit" => {
-                        let amount = match self.peek_item(stream)? {
+                        // Later settings win (measured): `all` replaces earlier entries.
+                        let (all_amount, entries) = if &**word == "filter" {
+                            (&mut filter_all, &mut palette_filter)
+                        } else {
+                            (&mut transmit_all, &mut palette_transmit)
+                        };
+                        match self.peek_item(stream)? {
                             Some(Item::Keyword(all, _)) if &*all == "all" => {
                                 let _ = self.next_item(stream)?;
-                                Some(self.expect_float(stream, "a float")?)
+                                *all_amount = self.expect_float(stream, "a float")?;
+                                entries.clear();
                             }
                             _ => {
-                                let _index = self.expect_float(stream, "a palette index")?;
-                                let _ = self.expect_float(stream, "a float")?;
-                                self.warn(*span, format!("`{word}` of one palette entry is not supported yet; it is ignored"));
-                                None
-                            }
-                        };
-                        if let Some(amount) = amount {
-                            if &**word == "filter" {
-                                filter_all = amount;
-                            } else {
-                                transmit_all = amount;
+                                let index = self.expect_float(stream, "a palette index")?;
+                                self.skip_comma(stream)?;
+                                let amount = self.expect_float(stream, "a float")?;
+                                if !(0.0..256.0).contains(&index) {
+                                    return Err(self
+                                        .error(
+                                            *span,
+                                            format!("palette index {index} is outside 0 to 255"),
+                                        )
+                                        .with_label("no such palette entry")
+                                        .into());
+                                }
+                                let index = index as u8;
+                                entries.retain(|(entry, _)| *entry != index);
+                                entries.push((index, amount));
                             }
                         }
                     }
@@ -91,9 +178,10 @@ impl Evaluator {
                         });
                     }
                     "srgb" => gamma = Some(ImageGamma::Srgb),
-                    "premultiplied" | "use_alpha" => {
+                    "premultiplied" => {
                         let _ = self.optional_bool(stream)?;
                     }
+                    "use_alpha" => use_alpha = self.optional_bool(stream)?,
                     "use_color" | "use_colour" => use_index = false,
                     "use_index" => use_index = true,
                     "bump_size" => bump_size = Some(self.expect_float(stream, "a float")?),
@@ -105,6 +193,22 @@ impl Evaluator {
                         Value::String(name) => file = Some((name.to_string(), expr.span())),
                         _ => return Err(self.unexpected_in(&item, "image_map")),
                     }
+                }
+                Item::Expr(expr) if materials.is_some() => match self.eval_expr(expr)? {
+                    Value::Texture(texture) => {
+                        if let Some(materials) = materials.as_deref_mut() {
+                            materials.textures.push(Texture::clone(&texture));
+                        }
+                    }
+                    _ => return Err(self.unexpected_in(&item, "material_map")),
+                },
+                Item::Block(block) if matches!(&block.head, BlockHead::Word(word) if &**word == "texture") =>
+                {
+                    let Some(materials) = materials.as_deref_mut() else {
+                        return Err(self.unexpected_in(&item, "image_map"));
+                    };
+                    let mut body = Stream::new(block.body.clone());
+                    materials.textures.push(self.eval_texture(&mut body)?);
                 }
                 Item::Comma(_) => {}
                 _ => return Err(self.unexpected_in(&item, "image_map")),
@@ -136,6 +240,7 @@ impl Evaluator {
             .with_label("unreadable image")
         })?;
         let decoding = match gamma {
+            _ if purpose == ImageUse::StoredValues => ImageGamma::Linear,
             Some(gamma) => gamma,
             None if raster.high_dynamic_range => ImageGamma::Linear,
             None => ImageGamma::Srgb,
@@ -162,9 +267,28 @@ impl Evaluator {
             filter_all,
             transmit_all,
             use_index,
+            use_alpha,
+            palette_indices: raster.palette_indices,
+            palette_filter,
+            palette_transmit,
         };
         Ok((image, bump_size))
     }
+}
+
+/// What a `material_map` body holds besides the image.
+struct MaterialItems {
+    /// The textures the pixels' indices choose from.
+    textures: Vec<Texture>,
+}
+
+/// What an image block is read for.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum ImageUse {
+    /// `image_map` and `bump_map`: colours made linear.
+    Colours,
+    /// `image_pattern` and `bump_map`: the stored values.
+    StoredValues,
 }
 
 /// A stored channel value turned into linear light.

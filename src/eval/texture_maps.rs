@@ -134,7 +134,7 @@ impl Evaluator {
             }
             _ => {
                 // bump_map on its own: a normal.
-                let (image, bump_size) = self.eval_image_map(stream, block.head_span)?;
+                let (image, bump_size) = self.eval_bump_map(stream, block.head_span)?;
                 let mut normal = Normal::new(NormalSource::BumpMap(Arc::new(image)));
                 normal.amount = bump_size.unwrap_or(1.0);
                 Value::Normal(Rc::new(normal))
@@ -315,6 +315,18 @@ impl Evaluator {
         let mut average = false;
         let mut pattern_started = false;
         while let Some(item) = self.next_item(stream)? {
+            if let Some(spec) = self.image_pattern(&item)? {
+                let mut fresh = Normal::new(NormalSource::Pattern {
+                    pattern: spec,
+                    slope_map: None,
+                });
+                if let Some(amount) = self.optional_amount(stream)? {
+                    fresh.amount = amount;
+                }
+                normal = Some(fresh);
+                pattern_started = true;
+                continue;
+            }
             if let Item::Keyword(word, span) = &item {
                 if &**word == "average" {
                     average = true;
@@ -454,7 +466,7 @@ impl Evaluator {
                         }
                         "bump_map" => {
                             let (image, bump_size) =
-                                self.eval_image_map(&mut body, block.head_span)?;
+                                self.eval_bump_map(&mut body, block.head_span)?;
                             let mut fresh = Normal::new(NormalSource::BumpMap(Arc::new(image)));
                             fresh.amount = bump_size.unwrap_or(1.0);
                             normal = Some(fresh);

@@ -386,6 +386,7 @@ impl Evaluator {
                 Item::Block(block) => match self.eval_block(block)? {
                     Value::Transform(t) => transforms.push(*t),
                     Value::Camera(c) => camera = Rc::unwrap_or_clone(c),
+                    Value::Normal(normal) => camera.normal = Some(Rc::unwrap_or_clone(normal)),
                     Value::Nothing => {}
                     _ => return Err(self.unexpected_in(&item, "camera")),
                 },

@@ -154,6 +154,8 @@ pub enum PatternKind {
     Wood,
     /// Sharp 1/f noise.
     Wrinkles,
+    /// `image_pattern { .. }`: the grey level (or transparency) of an image's pixels.
+    ImagePattern(std::sync::Arc<crate::scene::ImageMap>),
 }
 
 impl PatternSpec {
@@ -379,6 +381,7 @@ impl PatternSpec {
             PatternKind::Waves => noise_based::waves(p, generator),
             PatternKind::Wood => noise_based::wood(p, turbulence, generator),
             PatternKind::Wrinkles => noise_based::wrinkles(p, generator),
+            PatternKind::ImagePattern(image) => crate::render::image_map::image_value(image, p),
             PatternKind::Checker
             | PatternKind::Brick { .. }
             | PatternKind::Hexagon

@@ -28,7 +28,7 @@
 //! - `normal_map`, block normals and `average`: the weighted sum of the entries' perturbed
 //!   normals, normalised.
 
-use super::image_map::image_height;
+use super::image_map::bump_map_tilt;
 use super::pattern::{blend_position, block_index};
 use crate::scene::{BlendMap, Normal, NormalSource, SlopeEntry};
 use glam::DVec3;
@@ -86,8 +86,7 @@ fn tilt(normal: &Normal, world_point: DVec3, facing: DVec3, depth: u32) -> DVec3
             facing + normal.amount * to_world(normal, perturbation, facing)
         }
         NormalSource::BumpMap(image) => {
-            let slope = pattern_slope(|p| image_height(image, p), point, normal.accuracy);
-            facing - normal.amount * TILT_PER_SLOPE * to_world(normal, slope, facing)
+            facing + normal.amount * to_world(normal, bump_map_tilt(image, point), facing)
         }
         NormalSource::Map { pattern, map } => match map {
             BlendMap::Blocks(blocks) => {

@@ -14,6 +14,7 @@
 //!   (`filter · pigment + transmit`). Only the bottom layer lets rays pass on through the
 //!   surface.
 
+use super::image_map::material_choice;
 use super::lights::transmission;
 use super::pattern::{blend_position, block_index, pigment_colour};
 use crate::scene::{BlendMap, Colour, CompoundTexture, Texture};
@@ -112,6 +113,17 @@ fn components(
                         }
                     }
                 }
+            }
+        }
+        CompoundTexture::MaterialMap {
+            image,
+            textures,
+            transform,
+        } => {
+            let point = transform.point_to_inner(world_point);
+            let chosen = material_choice(image, point, textures.len());
+            if let Some(texture) = chosen.and_then(|index| textures.get(index)) {
+                recurse(texture, DVec3::ONE, passes_light);
             }
         }
         CompoundTexture::Average(entries) => {

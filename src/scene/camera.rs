@@ -3,6 +3,7 @@
 //! In: nothing (data definition). Out: [`Camera`], [`Projection`], [`FocalBlur`]. Holds:
 //! vectors are final (look_at, angle, sky and transformations applied); angles in degrees.
 
+use super::texture::Normal;
 use glam::DVec3;
 
 /// The kind of projection a camera makes.
@@ -77,6 +78,8 @@ pub struct Camera {
     pub vertical_angle: f64,
     /// Depth of field, when `aperture` and `blur_samples` ask for it.
     pub focal_blur: Option<FocalBlur>,
+    /// Camera `normal { }`: bends every ray's direction as if it were a surface normal.
+    pub normal: Option<Normal>,
 }
 
 impl Default for Camera {
@@ -90,6 +93,7 @@ impl Default for Camera {
             angle: DEFAULT_ANGLE,
             vertical_angle: DEFAULT_ANGLE / 2.0,
             focal_blur: None,
+            normal: None,
         }
     }
 }

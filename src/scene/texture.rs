@@ -57,6 +57,13 @@ pub enum CompoundTexture {
     },
     /// `average`: the weighted mean of the shaded textures.
     Average(Vec<(f64, Texture)>),
+    /// `material_map`: each image pixel's palette index (or 8-bit red value) picks a texture
+    /// (see `render::image_map::material_choice`).
+    MaterialMap {
+        image: Arc<ImageMap>,
+        textures: Vec<Texture>,
+        transform: Transform,
+    },
 }
 
 /// What a pattern's value selects: entries interpolated by key, or one item per block.
@@ -174,7 +181,8 @@ pub enum ImageProjection {
 }
 
 /// An image used as a pigment (`image_map`), as heights (`bump_map`) or as a pattern
-/// (`image_pattern`), already decoded into linear values.
+/// (`image_pattern`), already decoded into linear values (an `image_pattern` keeps the
+/// stored values: POV-Ray applies no gamma there).
 #[derive(Clone, Debug)]
 pub struct ImageMap {
     /// Width in pixels.
@@ -195,6 +203,14 @@ pub struct ImageMap {
     pub transmit_all: f64,
     /// `use_index` for bump maps (the palette index stands in for the grey value).
     pub use_index: bool,
+    /// `use_alpha` of an `image_pattern`: the value is the pixel's transparency.
+    pub use_alpha: bool,
+    /// Each pixel's palette index, rows from the top (palette PNG files only).
+    pub palette_indices: Option<Vec<u8>>,
+    /// `filter N, F` of single palette entries (replacing `filter_all` for them).
+    pub palette_filter: Vec<(u8, f64)>,
+    /// `transmit N, T` of single palette entries (replacing `transmit_all` for them).
+    pub palette_transmit: Vec<(u8, f64)>,
 }
 
 impl Texture {
@@ -227,6 +243,14 @@ impl CompoundTexture {
             CompoundTexture::Average(entries) => entries
                 .iter_mut()
                 .for_each(|(_, texture)| texture.transform(t)),
+            CompoundTexture::MaterialMap {
+                textures,
+                transform,
+                ..
+            } => {
+                *transform = transform.then(t);
+                textures.iter_mut().for_each(|texture| texture.transform(t));
+            }
         }
     }
 }

@@ -393,3 +393,26 @@ fn area_light_modifiers_need_an_area_light() {
         &["`jitter` needs an `area_light` before it"],
     );
 }
+
+#[test]
+fn palette_entry_outside_the_palette_is_refused() {
+    check(
+        "palette_index_range",
+        2,
+        60,
+        &[
+            "palette index 300 is outside 0 to 255",
+            "no such palette entry",
+        ],
+    );
+}
+
+#[test]
+fn material_map_without_textures_is_an_error() {
+    check(
+        "material_map_empty",
+        2,
+        24,
+        &["lists no textures", "expected `texture { .. }` entries"],
+    );
+}
