@@ -278,6 +278,11 @@ impl Evaluator {
                 let value = self.eval_expr(&expr)?;
                 match value {
                     Value::Float(key) => Ok(key),
+                    // An `average` entry without its weight may start with a function pattern.
+                    Value::Function(_) => {
+                        body.push_back(Item::Expr(expr));
+                        Ok(1.0)
+                    }
                     other => Err(self
                         .error(
                             expr.span(),
