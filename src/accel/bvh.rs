@@ -420,17 +420,21 @@ mod tests {
         fn vector(&mut self, scale: f64) -> DVec3 {
             DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * 2.0 * scale
         }
+        /// `count` boxes with centres within `spread` of the origin and sides up to `size`.
+        fn boxes(&mut self, count: usize, spread: f64, size: f64) -> Vec<Aabb> {
+            (0..count)
+                .map(|_| {
+                    let centre = self.vector(spread);
+                    Aabb::from_corners(centre, centre + self.vector(size))
+                })
+                .collect()
+        }
     }
 
     #[test]
     fn box_queries_match_brute_force() {
         let mut random = Random(0x5eed_0fb0_c5c5);
-        let boxes: Vec<Aabb> = (0..700)
-            .map(|_| {
-                let centre = random.vector(10.0);
-                Aabb::from_corners(centre, centre + random.vector(1.5))
-            })
-            .collect();
+        let boxes = random.boxes(700, 10.0, 1.5);
         let (bvh, order) = Bvh::build(&boxes);
         for _ in 0..300 {
             let point = random.vector(10.0);
@@ -470,12 +474,7 @@ mod tests {
     #[test]
     fn parallel_build_equals_serial_build() {
         let mut random = Random(0x0ddb_a11f_00d5_eed5);
-        let boxes: Vec<Aabb> = (0..3 * PARALLEL_RANGE)
-            .map(|_| {
-                let centre = random.vector(100.0);
-                Aabb::from_corners(centre, centre + random.vector(1.0))
-            })
-            .collect();
+        let boxes = random.boxes(3 * PARALLEL_RANGE, 100.0, 1.0);
         let (parallel, parallel_order) = Bvh::build(&boxes);
         let (serial, serial_order) = rayon::ThreadPoolBuilder::new()
             .num_threads(1)
@@ -504,12 +503,7 @@ mod tests {
     #[test]
     fn every_primitive_in_exactly_one_leaf() {
         let mut random = Random(0x1234_5678_9abc_def1);
-        let boxes: Vec<Aabb> = (0..5000)
-            .map(|_| {
-                let centre = random.vector(100.0);
-                Aabb::from_corners(centre, centre + random.vector(2.0))
-            })
-            .collect();
+        let boxes = random.boxes(5000, 100.0, 2.0);
         let (bvh, order) = Bvh::build(&boxes);
         let mut seen = vec![0; boxes.len()];
         for node in &bvh.nodes {
@@ -528,12 +522,7 @@ mod tests {
     #[test]
     fn nearest_box_matches_brute_force() {
         let mut random = Random(0x9e37_79b9_7f4a_7c15);
-        let boxes: Vec<Aabb> = (0..2000)
-            .map(|_| {
-                let centre = random.vector(50.0);
-                Aabb::from_corners(centre, centre + random.vector(3.0))
-            })
-            .collect();
+        let boxes = random.boxes(2000, 50.0, 3.0);
         let (bvh, order) = Bvh::build(&boxes);
         for _ in 0..2000 {
             let origin = random.vector(80.0);

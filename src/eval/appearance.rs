@@ -425,18 +425,7 @@ impl Evaluator {
                         // Colour components given straight in the pigment modify its colour.
                         let amount = self.expect_float(stream, "a float")?;
                         if let Pigment::Solid(colour) = &mut pigment {
-                            match &**word {
-                                "red" => colour.red = amount,
-                                "green" => colour.green = amount,
-                                "blue" => colour.blue = amount,
-                                "filter" => colour.filter = amount,
-                                "transmit" => colour.transmit = amount,
-                                _ => {
-                                    colour.red = amount;
-                                    colour.green = amount;
-                                    colour.blue = amount;
-                                }
-                            }
+                            set_colour_component(colour, word, amount);
                         }
                     }
                     "quick_color" | "quick_colour" => {
@@ -632,18 +621,7 @@ impl Evaluator {
                                 let last = values.len() - 1;
                                 let (value, at) = values[last].clone();
                                 let mut colour = self.to_colour(value, at)?;
-                                match &**word {
-                                    "red" => colour.red = amount,
-                                    "green" => colour.green = amount,
-                                    "blue" => colour.blue = amount,
-                                    "filter" => colour.filter = amount,
-                                    "transmit" => colour.transmit = amount,
-                                    _ => {
-                                        colour.red = amount;
-                                        colour.green = amount;
-                                        colour.blue = amount;
-                                    }
-                                }
+                                set_colour_component(&mut colour, word, amount);
                                 values[last] = (Value::Colour(colour), at);
                             }
                             _ => return Err(self.unexpected_in(&part, "color_map entry")),
@@ -709,6 +687,22 @@ impl Evaluator {
             self.set_default_texture(texture);
         }
         Ok(())
+    }
+}
+
+/// Sets the component a colour keyword (`red green blue filter transmit gray grey`) names.
+fn set_colour_component(colour: &mut Colour, keyword: &str, amount: f64) {
+    match keyword {
+        "red" => colour.red = amount,
+        "green" => colour.green = amount,
+        "blue" => colour.blue = amount,
+        "filter" => colour.filter = amount,
+        "transmit" => colour.transmit = amount,
+        _ => {
+            colour.red = amount;
+            colour.green = amount;
+            colour.blue = amount;
+        }
     }
 }
 

@@ -220,18 +220,7 @@ impl Evaluator {
                 .with_label("expected a file name in quotes")
                 .into());
         };
-        let path = match self.find_include(&name) {
-            Ok(path) => path,
-            Err(folders) => {
-                let searched: Vec<String> =
-                    folders.iter().map(|f| f.display().to_string()).collect();
-                return Err(self
-                    .error(name_span, format!("image file \"{name}\" not found"))
-                    .with_label("no such file")
-                    .with_help(format!("searched: {}", searched.join(", ")))
-                    .into());
-            }
-        };
+        let path = self.find_file(&name, name_span, "image file", "no such file")?;
         let raster = load(&path, format).map_err(|message| {
             self.error(
                 name_span,

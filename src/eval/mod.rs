@@ -281,6 +281,24 @@ impl Evaluator {
 
     /// Finds an include file: the scene's folder, `-L` folders, `DURER_INCLUDE_PATH`,
     /// then POV-Ray's installed include folder.
+    /// Finds a file on the include search path, or reports `what` (such as "include file")
+    /// as not found at `span` with `label`, listing the folders searched.
+    pub(crate) fn find_file(
+        &self,
+        name: &str,
+        span: Span,
+        what: &str,
+        label: &str,
+    ) -> EvalResult<PathBuf> {
+        self.find_include(name).map_err(|folders| {
+            let searched: Vec<String> = folders.iter().map(|f| f.display().to_string()).collect();
+            self.error(span, format!("cannot find {what} `{name}`"))
+                .with_label(label.to_string())
+                .with_help(format!("searched: {}", searched.join(", ")))
+                .into()
+        })
+    }
+
     pub(crate) fn find_include(&self, name: &str) -> Result<PathBuf, Vec<PathBuf>> {
         let direct = Path::new(name);
         if direct.is_absolute() {
@@ -322,18 +340,7 @@ impl Evaluator {
         span: Span,
         stream: &mut Stream,
     ) -> EvalResult<()> {
-        let path = match self.find_include(name) {
-            Ok(path) => path,
-            Err(folders) => {
-                let searched: Vec<String> =
-                    folders.iter().map(|f| f.display().to_string()).collect();
-                return Err(self
-                    .error(span, format!("cannot find include file `{name}`"))
-                    .with_label("included here")
-                    .with_help(format!("searched: {}", searched.join(", ")))
-                    .into());
-            }
-        };
+        let path = self.find_file(name, span, "include file", "included here")?;
         self.enter_nesting(span)?;
         self.trace.push(TraceEntry {
             what: format!("file `{name}`"),

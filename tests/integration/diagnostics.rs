@@ -252,7 +252,7 @@ fn missing_image_file_lists_the_folders_searched() {
         2,
         40,
         &[
-            "image file \"no_such_image.png\" not found",
+            "cannot find image file `no_such_image.png`",
             "searched:",
             "diagnostics",
         ],
@@ -289,7 +289,7 @@ fn missing_height_field_image_lists_the_folders_searched() {
         1,
         20,
         &[
-            "height field image `no_such_height.png` not found",
+            "cannot find height field image `no_such_height.png`",
             "searched: ",
         ],
     );

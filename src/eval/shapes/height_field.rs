@@ -123,18 +123,7 @@ impl Evaluator {
         span: Span,
         format: RasterFormat,
     ) -> EvalResult<(usize, usize, Vec<f64>)> {
-        let path = match self.find_include(name) {
-            Ok(path) => path,
-            Err(folders) => {
-                let searched: Vec<String> =
-                    folders.iter().map(|f| f.display().to_string()).collect();
-                return Err(self
-                    .error(span, format!("height field image `{name}` not found"))
-                    .with_label("no such file")
-                    .with_help(format!("searched: {}", searched.join(", ")))
-                    .into());
-            }
-        };
+        let path = self.find_file(name, span, "height field image", "no such file")?;
         let raster = crate::raster::load(&path, format).map_err(|message| {
             self.error(span, format!("cannot read `{}`: {message}", path.display()))
         })?;
