@@ -83,7 +83,7 @@ struct Inversion {
 struct Appearance {
     texture: Arc<Texture>,
     texture_key: TextureKey,
-    interior: Interior,
+    interior: Arc<Interior>,
     interior_key: InteriorKey,
     flags: Flags,
 }
@@ -119,7 +119,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
     let appearance = Appearance {
         texture: Arc::new(Texture::default()),
         texture_key: TextureKey::Default,
-        interior: Interior::default(),
+        interior: Arc::new(Interior::default()),
         interior_key: InteriorKey::Default,
         flags: Flags::default(),
     };
@@ -280,7 +280,7 @@ impl Builder {
             }
         }
         if let Some(interior) = &object.interior {
-            appearance.interior = Interior::clone(interior);
+            appearance.interior = Arc::new(Interior::clone(interior));
             appearance.interior_key = InteriorKey::Owned(self.new_owner());
         }
         appearance.flags.no_shadow |= object.no_shadow;

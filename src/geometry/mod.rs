@@ -88,14 +88,14 @@ pub struct SurfaceHit {
 pub struct Material {
     /// The texture, with every pattern transform mapping pattern space to world space.
     pub texture: Arc<Texture>,
-    /// What is inside the object.
-    pub interior: Interior,
+    /// What is inside the object (shared by every material with the same interior).
+    pub interior: Arc<Interior>,
     /// The object casts no shadow.
     pub no_shadow: bool,
-    /// `no_image`: camera rays should pass through (not yet read by the renderer).
+    /// `no_image`: camera rays pass through.
     pub no_image: bool,
-    /// `no_reflection`: reflected rays should pass through (not yet read by the renderer).
+    /// `no_reflection`: reflected rays pass through.
     pub no_reflection: bool,
-    /// `double_illuminate`: lit from both sides (not yet read by the renderer).
+    /// `double_illuminate`: lit from both sides.
     pub double_illuminate: bool,
 }
