@@ -60,10 +60,12 @@ impl Bvh {
             centroids: &centroids,
         };
         let mut order: Vec<u32> = (0..bounds.len() as u32).collect();
-        let mut nodes = Vec::with_capacity(bounds.len().max(1) * 2);
+        // Leaves hold a few primitives each, so a tree has about as many nodes as primitives.
+        let mut nodes = Vec::with_capacity(bounds.len().max(1));
         if !bounds.is_empty() {
             builder.build_node(&mut order, 0, 0, &mut nodes);
         }
+        nodes.shrink_to_fit();
         (Bvh { nodes }, order)
     }
 
@@ -285,7 +287,7 @@ impl Builder<'_> {
         let (left, right) = order.split_at_mut(middle);
         let right_index = if count >= PARALLEL_RANGE {
             let build = |part: &mut [u32], part_offset: usize| {
-                let mut part_nodes = Vec::with_capacity(part.len() * 2);
+                let mut part_nodes = Vec::with_capacity(part.len());
                 self.build_node(part, part_offset, depth + 1, &mut part_nodes);
                 part_nodes
             };
