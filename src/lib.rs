@@ -8,6 +8,7 @@ pub mod diag;
 pub mod eval;
 pub mod function;
 pub mod geometry;
+pub mod hash;
 pub mod noise;
 pub mod pattern;
 pub mod raster;

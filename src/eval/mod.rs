@@ -29,12 +29,12 @@ mod view;
 pub use value::{Array, Value, Vector};
 
 use crate::diag::{did_you_mean, Diagnostic, FileId, SourceMap, Span, TraceEntry};
+use crate::hash::FastHash;
 use crate::scene::{
     Atmosphere, Camera, Colour, GlobalSettings, LightSource, Object, Scene, Texture,
 };
 use crate::syntax::ast::Item;
 use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 use std::sync::Arc;
@@ -126,31 +126,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
 const EMBEDDED_FOLDER: &str = "<durer standard library>";
 
 /// One symbol table: the global one, an include file's or a macro call's.
-pub(crate) type Scope = HashMap<Rc<str>, Value, BuildHasherDefault<NameHasher>>;
-
-/// A fast hasher for short identifier names (FNV-1a); scopes are looked up constantly and
-/// their keys are not attacker-chosen in a way that matters for a local renderer.
-#[derive(Default)]
-pub(crate) struct NameHasher(u64);
-
-impl Hasher for NameHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        let mut hash = if self.0 == 0 {
-            0xcbf2_9ce4_8422_2325
-        } else {
-            self.0
-        };
-        for byte in bytes {
-            hash ^= u64::from(*byte);
-            hash = hash.wrapping_mul(0x0100_0000_01b3);
-        }
-        self.0 = hash;
-    }
-}
+pub(crate) type Scope = HashMap<Rc<str>, Value, FastHash>;
 
 pub(crate) struct Evaluator {
     pub(crate) options: EvalOptions,

@@ -6,16 +6,16 @@
 //! that contain `name`, in ascending order.
 
 use super::value::Value;
-use super::{NameHasher, Scope};
+use super::Scope;
+use crate::hash::FastHash;
 use std::collections::HashMap;
-use std::hash::BuildHasherDefault;
 use std::rc::Rc;
 
 /// Symbol tables, outermost (global) first.
 pub(crate) struct ScopeStack {
     tables: Vec<Scope>,
     /// For each name, the indices of the tables that hold it, ascending.
-    holders: HashMap<Rc<str>, Vec<usize>, BuildHasherDefault<NameHasher>>,
+    holders: HashMap<Rc<str>, Vec<usize>, FastHash>,
 }
 
 impl ScopeStack {

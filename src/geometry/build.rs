@@ -16,6 +16,7 @@ use super::instance::{MeshGeometry, MeshInstance};
 use super::leaf::{Leaf, LocalShape};
 use super::Material;
 use crate::accel::Aabb;
+use crate::hash::FastHash;
 use crate::scene::{CsgOperation, Interior, Object, Shape, Texture, Transform};
 use glam::DAffine3;
 use std::collections::HashMap;
@@ -100,7 +101,7 @@ struct Flags {
 /// Working state of one build.
 struct Builder {
     materials: Vec<Material>,
-    material_of: HashMap<(TextureKey, InteriorKey, Flags), u32>,
+    material_of: HashMap<(TextureKey, InteriorKey, Flags), u32, FastHash>,
     next_owner: usize,
     leaf_count: usize,
     /// Prepared geometry of each scene mesh placed at top level, by the mesh's address.
@@ -111,7 +112,7 @@ struct Builder {
 pub fn build_scene(objects: &[Object]) -> BuiltScene {
     let mut builder = Builder {
         materials: Vec::new(),
-        material_of: HashMap::new(),
+        material_of: HashMap::default(),
         next_owner: 0,
         leaf_count: 0,
         meshes: HashMap::new(),
