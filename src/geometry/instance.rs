@@ -8,17 +8,23 @@
 //! mapped without normalising), so limits pass through unchanged; queries never allocate.
 
 use super::leaf::{Leaf, LocalShape};
+use super::roots::Roots;
 use super::Ray;
 use crate::accel::{Aabb, Bvh};
 use crate::scene::{Mesh, Transform};
 use glam::{DAffine3, DVec3};
 use std::sync::Arc;
 
+/// Crossings closer than this to the start of an inside ray do not count.
+const INSIDE_EPSILON: f64 = 1e-9;
+
 /// A mesh's triangles in its local space, behind their own BVH.
 #[derive(Debug)]
 pub struct MeshGeometry {
     leaves: Vec<Leaf>,
     bvh: Bvh,
+    /// `inside_vector`, when the mesh is a solid.
+    inside_vector: Option<DVec3>,
 }
 
 impl MeshGeometry {
@@ -39,7 +45,11 @@ impl MeshGeometry {
             .iter()
             .filter_map(|&index| leaves[index as usize].take())
             .collect();
-        MeshGeometry { leaves, bvh }
+        MeshGeometry {
+            leaves,
+            bvh,
+            inside_vector: mesh.inside_vector.and_then(DVec3::try_normalize),
+        }
     }
 
     /// Number of triangles kept.
@@ -89,6 +99,37 @@ impl MeshInstance {
     /// The instance's material index.
     pub fn material(&self) -> u32 {
         self.material
+    }
+
+    /// True when the world `point` is inside the mesh: a mesh with an `inside_vector` is
+    /// inside where a ray from the point along that vector crosses its triangles an odd
+    /// number of times; other meshes have no inside.
+    pub fn inside(&self, point: DVec3) -> bool {
+        let Some(direction) = self.geometry.inside_vector else {
+            return false;
+        };
+        let ray = Ray {
+            origin: self.local_from_world.transform_point3(point),
+            direction,
+        };
+        let mut odd = false;
+        let leaves = &self.geometry.leaves;
+        self.geometry.bvh.for_each_on_ray(
+            ray.origin,
+            direction.recip(),
+            0.0,
+            f64::INFINITY,
+            |at| {
+                let mut roots = Roots::new();
+                leaves[at].intersect(&ray, &mut roots);
+                for (distance, _) in roots.iter() {
+                    if distance > INSIDE_EPSILON {
+                        odd = !odd;
+                    }
+                }
+            },
+        );
+        odd
     }
 
     /// The nearest triangle hit strictly between the limits: distance, leaf and part.

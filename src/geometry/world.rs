@@ -139,15 +139,15 @@ impl World {
         }
     }
 
-    /// True when `point` is inside any object (the scene language's `inside`). Meshes have no
-    /// inside here, as in POV-Ray without `inside_vector`.
+    /// True when `point` is inside any object (the scene language's `inside`). Meshes are
+    /// inside only with an `inside_vector`, as in POV-Ray.
     pub fn inside(&self, point: DVec3) -> bool {
         self.primitives
             .iter()
             .chain(&self.unbounded)
             .any(|primitive| match primitive {
                 Primitive::Leaf(leaf) => leaf.inside(point),
-                Primitive::Mesh(_) => false,
+                Primitive::Mesh(instance) => instance.inside(point),
                 Primitive::Csg(tree) => tree.inside(point),
             })
     }

@@ -62,3 +62,17 @@ Check((inside(Pl, <0,0,0>)), "a point on a plane")
 Check((!inside(Cy, <0,1,0>)), "a point on a cylinder cap")
 Check((!inside(Cy, <1,0.5,0>)), "a point on a cylinder side")
 Check((inside(Tr, <2.9,0,0>) & !inside(Tr, <3.1,0,0>)), "a transformed sphere")
+// A mesh with an inside_vector is a solid: the same 60 random points as POV-Ray 3.7 sees them.
+#declare Oct = mesh {
+  #local P = array[6] { <1, 0, 0>, <-1, 0, 0>, <0, 1, 0>, <0, -1, 0>, <0, 0, 1>, <0, 0, -1> }
+  #for (I, 0, 1) #for (J, 2, 3) #for (K, 4, 5) triangle { P[I], P[J], P[K] } #end #end #end
+  inside_vector <0.2, 0.3, 1>
+  scale <1.2, 0.8, 1> rotate z*20 translate x*0.1
+}
+#declare MeshSeed = seed(7);
+#declare MeshInside = "";
+#for (I, 0, 59)
+  #local Pt = <rand(MeshSeed), rand(MeshSeed), rand(MeshSeed)> * 2.4 - 1.2;
+  #declare MeshInside = concat(MeshInside, str(inside(Oct, Pt), 0, 0));
+#end
+Check(MeshInside = "000000000100000001000000000000000000010000000011000100010001", "inside a mesh with inside_vector")
