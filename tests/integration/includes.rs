@@ -145,6 +145,11 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         "finish.inc",
         include_str!("../../src/eval/stdlib/finish.inc"),
     ),
+    ("glass.inc", include_str!("../../src/eval/stdlib/glass.inc")),
+    (
+        "glass_old.inc",
+        include_str!("../../src/eval/stdlib/glass_old.inc"),
+    ),
     ("golds.inc", include_str!("../../src/eval/stdlib/golds.inc")),
     (
         "metals.inc",
@@ -153,7 +158,8 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
 ];
 
 /// (name, is a number) for each identifier an embedded file declares: numbers are floats,
-/// vectors and colours; the rest are finishes and textures.
+/// vectors and colours; the rest are finishes, interiors, materials, pigments and textures.
+/// A `deprecated [once] "message"` marker before the name is skipped.
 fn declared_names(text: &str) -> Vec<(String, bool)> {
     let mut names: Vec<(String, bool)> = Vec::new();
     for line in text.lines() {
@@ -163,12 +169,17 @@ fn declared_names(text: &str) -> Vec<(String, bool)> {
         let Some((name, value)) = rest.split_once('=') else {
             continue;
         };
-        let name = name.trim().to_string();
+        let name = name.trim();
+        let name = match name.strip_prefix("deprecated") {
+            Some(marked) => marked.rsplit('"').next().unwrap_or(marked).trim(),
+            None => name,
+        };
+        let name = name.to_string();
         if name.ends_with("_Temp") || names.iter().any(|(n, _)| *n == name) {
             continue;
         }
         let value = value.trim_start();
-        let appearance = ["finish", "texture", "pigment"]
+        let appearance = ["finish", "texture", "pigment", "interior", "material"]
             .iter()
             .any(|word| value.starts_with(word));
         names.push((name, !appearance));
