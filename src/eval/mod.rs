@@ -122,6 +122,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("glass_old.inc", include_str!("stdlib/glass_old.inc")),
     ("golds.inc", include_str!("stdlib/golds.inc")),
     ("metals.inc", include_str!("stdlib/metals.inc")),
+    ("skies.inc", include_str!("stdlib/skies.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

@@ -155,10 +155,12 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         "metals.inc",
         include_str!("../../src/eval/stdlib/metals.inc"),
     ),
+    ("skies.inc", include_str!("../../src/eval/stdlib/skies.inc")),
 ];
 
 /// (name, is a number) for each identifier an embedded file declares: numbers are floats,
-/// vectors and colours; the rest are finishes, interiors, materials, pigments and textures.
+/// vectors and colours; the rest are finishes, interiors, materials, pigments, textures, sky
+/// spheres and objects.
 /// A `deprecated [once] "message"` marker before the name is skipped.
 fn declared_names(text: &str) -> Vec<(String, bool)> {
     let mut names: Vec<(String, bool)> = Vec::new();
@@ -179,9 +181,18 @@ fn declared_names(text: &str) -> Vec<(String, bool)> {
             continue;
         }
         let value = value.trim_start();
-        let appearance = ["finish", "texture", "pigment", "interior", "material"]
-            .iter()
-            .any(|word| value.starts_with(word));
+        let appearance = [
+            "finish",
+            "texture",
+            "pigment",
+            "interior",
+            "material",
+            "sky_sphere",
+            "sphere",
+            "union",
+        ]
+        .iter()
+        .any(|word| value.starts_with(word));
         names.push((name, !appearance));
     }
     names
@@ -195,7 +206,14 @@ fn dump_include(
     dir: &std::path::Path,
     installed: bool,
 ) -> String {
-    let mut scene = format!("#include \"{file}\"\n#fopen Out \"dump.txt\" write\n");
+    // Some of POV-Ray's files (skies.inc) expect colors.inc to be included first; durer's
+    // stand alone.
+    let colours = if installed {
+        "#include \"colors.inc\"\n"
+    } else {
+        ""
+    };
+    let mut scene = format!("{colours}#include \"{file}\"\n#fopen Out \"dump.txt\" write\n");
     for (name, number) in names {
         if *number {
             scene.push_str(&format!(
