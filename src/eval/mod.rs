@@ -118,8 +118,11 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("colors.inc", include_str!("stdlib/colors.inc")),
     ("consts.inc", include_str!("stdlib/consts.inc")),
     ("finish.inc", include_str!("stdlib/finish.inc")),
+    ("glass.inc", include_str!("stdlib/glass.inc")),
+    ("glass_old.inc", include_str!("stdlib/glass_old.inc")),
     ("golds.inc", include_str!("stdlib/golds.inc")),
     ("metals.inc", include_str!("stdlib/metals.inc")),
+    ("skies.inc", include_str!("stdlib/skies.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

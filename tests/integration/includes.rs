@@ -145,17 +145,37 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         "finish.inc",
         include_str!("../../src/eval/stdlib/finish.inc"),
     ),
+    ("glass.inc", include_str!("../../src/eval/stdlib/glass.inc")),
+    (
+        "glass_old.inc",
+        include_str!("../../src/eval/stdlib/glass_old.inc"),
+    ),
     ("golds.inc", include_str!("../../src/eval/stdlib/golds.inc")),
     (
         "metals.inc",
         include_str!("../../src/eval/stdlib/metals.inc"),
     ),
+    ("skies.inc", include_str!("../../src/eval/stdlib/skies.inc")),
 ];
 
-/// (name, is a number) for each identifier an embedded file declares: numbers are floats,
-/// vectors and colours; the rest are finishes and textures.
-fn declared_names(text: &str) -> Vec<(String, bool)> {
-    let mut names: Vec<(String, bool)> = Vec::new();
+/// What a declared identifier holds, by the keyword starting its value; `None` for
+/// numbers (floats, vectors and colours).
+const APPEARANCE_KINDS: &[&str] = &[
+    "finish",
+    "texture",
+    "pigment",
+    "interior",
+    "material",
+    "sky_sphere",
+    "sphere",
+    "union",
+];
+
+/// (name, kind) for each identifier an embedded file declares; the kind is one of
+/// [`APPEARANCE_KINDS`], or `None` for numbers. A `deprecated [once] "message"` marker
+/// before the name is skipped.
+fn declared_names(text: &str) -> Vec<(String, Option<&'static str>)> {
+    let mut names: Vec<(String, Option<&'static str>)> = Vec::new();
     for line in text.lines() {
         let Some(rest) = line.strip_prefix("#declare ") else {
             continue;
@@ -163,15 +183,21 @@ fn declared_names(text: &str) -> Vec<(String, bool)> {
         let Some((name, value)) = rest.split_once('=') else {
             continue;
         };
-        let name = name.trim().to_string();
+        let name = name.trim();
+        let name = match name.strip_prefix("deprecated") {
+            Some(marked) => marked.rsplit('"').next().unwrap_or(marked).trim(),
+            None => name,
+        };
+        let name = name.to_string();
         if name.ends_with("_Temp") || names.iter().any(|(n, _)| *n == name) {
             continue;
         }
         let value = value.trim_start();
-        let appearance = ["finish", "texture", "pigment"]
+        let kind = APPEARANCE_KINDS
             .iter()
-            .any(|word| value.starts_with(word));
-        names.push((name, !appearance));
+            .copied()
+            .find(|word| value.starts_with(word));
+        names.push((name, kind));
     }
     names
 }
@@ -180,13 +206,20 @@ fn declared_names(text: &str) -> Vec<(String, bool)> {
 /// components for numbers, `defined` for the rest.
 fn dump_include(
     file: &str,
-    names: &[(String, bool)],
+    names: &[(String, Option<&'static str>)],
     dir: &std::path::Path,
     installed: bool,
 ) -> String {
-    let mut scene = format!("#include \"{file}\"\n#fopen Out \"dump.txt\" write\n");
-    for (name, number) in names {
-        if *number {
+    // Some of POV-Ray's files (skies.inc) expect colors.inc to be included first; durer's
+    // stand alone.
+    let colours = if installed {
+        "#include \"colors.inc\"\n"
+    } else {
+        ""
+    };
+    let mut scene = format!("{colours}#include \"{file}\"\n#fopen Out \"dump.txt\" write\n");
+    for (name, kind) in names {
+        if kind.is_none() {
             scene.push_str(&format!(
                 "#write (Out, \"{name} \", vstr(5, <0,0,0,0,0> + ({name}), \" \", 0, 9), \"\\n\")\n"
             ));
@@ -245,6 +278,94 @@ fn embedded_include_files_match_povray() {
             let (x, y) = (parse(a), parse(b));
             let same = x.len() == y.len() && x.iter().zip(&y).all(|(p, q)| (p - q).abs() < 1e-6);
             assert!(same, "{file}: embedded `{a}` differs from POV-Ray's `{b}`");
+        }
+    }
+}
+
+/// The statements of a tiny scene showing the declared identifier `name` of `kind`: a ball
+/// with it (or under it, for a sky sphere) in front of a chequered floor and wall.
+fn showcase(name: &str, kind: &str) -> String {
+    let ball = "sphere { <0, 1, 0>, 1";
+    let subject = match kind {
+        "finish" => format!("{ball} pigment {{ rgb <0.8, 0.5, 0.3> }} finish {{ {name} }} }}"),
+        "texture" => format!("{ball} texture {{ {name} }} }}"),
+        "pigment" => format!("{ball} pigment {{ {name} }} }}"),
+        "interior" => format!(
+            "{ball} pigment {{ rgbf <0.9, 0.95, 1, 0.9> }} interior {{ {name} fade_color rgb <0.2, 0.6, 0.3> }} }}"
+        ),
+        "material" => format!("{ball} material {{ {name} }} }}"),
+        "sky_sphere" => format!("sky_sphere {{ {name} }} {ball} pigment {{ rgb 0.5 }} }}"),
+        _ => format!("object {{ {name} }}"),
+    };
+    format!(
+        "camera {{ location <0, 1.5, -4> look_at <0, 1.8, 0> angle 80 }}\n\
+         light_source {{ <-5, 8, -6>, rgb 1 }}\n\
+         plane {{ y, 0 pigment {{ checker rgb 0.2 rgb 0.9 }} }}\n\
+         plane {{ z, 3 pigment {{ checker rgb <0.1, 0.2, 0.6> rgb 0.9 }} }}\n\
+         {subject}\n"
+    )
+}
+
+/// Renders a small image of every finish, texture, interior, material, pigment, sky sphere
+/// and object `file` declares, each in its own scene.
+fn render_showcases(file: &str, installed: bool) -> Vec<(String, durer::render::Image)> {
+    let text = EMBEDDED_FILES
+        .iter()
+        .find(|(f, _)| *f == file)
+        .map(|(_, t)| *t)
+        .expect("embedded file");
+    let dir = scratch(&format!("showcase-{file}-{installed}"));
+    let mut images = Vec::new();
+    for (name, kind) in declared_names(text) {
+        let Some(kind) = kind else { continue };
+        let path = dir.join(format!("{name}.pov"));
+        let colours = if installed {
+            "#include \"colors.inc\"\n"
+        } else {
+            ""
+        };
+        let scene = format!(
+            "#version 3.7;\n{colours}#include \"{file}\"\n{}",
+            showcase(&name, kind)
+        );
+        std::fs::write(&path, scene).expect("write scene");
+        let options = durer::eval::EvalOptions {
+            search_installed_povray: installed,
+            ..Default::default()
+        };
+        let evaluated = evaluate_with(&path, options);
+        let Some(mut scene) = evaluated.scene else {
+            panic!("{file}: {name} does not evaluate");
+        };
+        let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+        let options = durer::render::RenderOptions {
+            width: 24,
+            height: 18,
+            antialias: None,
+        };
+        images.push((
+            name,
+            durer::render::render(&scene, &world, &options, &|_| {}),
+        ));
+    }
+    images
+}
+
+/// Finishes, textures, interiors, sky spheres and objects cannot be compared by value, so
+/// each is rendered in a small scene with the embedded file and with POV-Ray's: the images
+/// must be the same.
+#[test]
+fn embedded_appearances_render_like_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    for (file, _) in EMBEDDED_FILES {
+        let ours = render_showcases(file, false);
+        let theirs = render_showcases(file, true);
+        assert_eq!(ours.len(), theirs.len(), "{file}");
+        for ((name, a), (_, b)) in ours.iter().zip(&theirs) {
+            assert!(a == b, "{file}: {name} renders differently from POV-Ray's");
         }
     }
 }
