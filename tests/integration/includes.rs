@@ -77,6 +77,23 @@ fn embedded_colour_names() -> Vec<String> {
         .collect()
 }
 
+/// Evaluates the scene at `path` (with or without POV-Ray's installed include folder) and
+/// fails the test, naming `context`, if it reports any error.
+fn evaluate_cleanly(path: &std::path::Path, installed: bool, context: &str) {
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: installed,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(path, options);
+    let errors: Vec<String> = evaluated
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Error)
+        .map(|d| durer::report::render_plain(d, &evaluated.sources))
+        .collect();
+    assert!(errors.is_empty(), "{context}: {}", errors.join("\n"));
+}
+
 /// Evaluates a scene that includes colors.inc and writes every colour's components to a file.
 fn dump_colours(dir: &std::path::Path, installed: bool) -> String {
     let mut scene = String::from("#include \"colors.inc\"\n#fopen Out \"colours.txt\" write\n");
@@ -88,18 +105,7 @@ fn dump_colours(dir: &std::path::Path, installed: bool) -> String {
     scene.push_str("#fclose Out\n");
     let path = dir.join("colours.pov");
     std::fs::write(&path, scene).expect("write scene");
-    let options = durer::eval::EvalOptions {
-        search_installed_povray: installed,
-        ..Default::default()
-    };
-    let evaluated = evaluate_with(&path, options);
-    let errors: Vec<String> = evaluated
-        .diagnostics
-        .iter()
-        .filter(|d| d.severity == Severity::Error)
-        .map(|d| durer::report::render_plain(d, &evaluated.sources))
-        .collect();
-    assert!(errors.is_empty(), "{}", errors.join("\n"));
+    evaluate_cleanly(&path, installed, "colors.inc");
     std::fs::read_to_string(dir.join("colours.txt")).expect("colours written")
 }
 
@@ -232,18 +238,7 @@ fn dump_include(
     scene.push_str("#fclose Out\n");
     let path = dir.join("dump.pov");
     std::fs::write(&path, scene).expect("write scene");
-    let options = durer::eval::EvalOptions {
-        search_installed_povray: installed,
-        ..Default::default()
-    };
-    let evaluated = evaluate_with(&path, options);
-    let errors: Vec<String> = evaluated
-        .diagnostics
-        .iter()
-        .filter(|d| d.severity == Severity::Error)
-        .map(|d| durer::report::render_plain(d, &evaluated.sources))
-        .collect();
-    assert!(errors.is_empty(), "{file}: {}", errors.join("\n"));
+    evaluate_cleanly(&path, installed, file);
     std::fs::read_to_string(dir.join("dump.txt")).expect("dump written")
 }
 
