@@ -16,45 +16,12 @@ use std::sync::Arc;
 
 /// Patterns POV-Ray has that durer does not render yet (they fall back to their first colour).
 pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "agate",
     "aoi",
-    "boxed",
-    "bozo",
-    "brick",
-    "bumps",
-    "cells",
-    "crackle",
-    "cylindrical",
     "density_file",
-    "dents",
-    "facets",
     "function",
-    "granite",
-    "hexagon",
-    "julia",
-    "leopard",
-    "magnet",
-    "mandel",
-    "marble",
-    "onion",
-    "pavement",
-    "pigment_pattern",
-    "planar",
-    "quilted",
-    "radial",
-    "ripples",
-    "slope",
-    "spherical",
-    "spiral1",
-    "spiral2",
-    "spotted",
-    "square",
-    "tiling",
-    "triangular",
-    "waves",
-    "wood",
-    "wrinkles",
     "object",
+    "pigment_pattern",
+    "slope",
 ];
 
 impl Evaluator {
@@ -105,16 +72,7 @@ impl Evaluator {
                     UnsupportedWord::Other => {}
                     UnsupportedWord::Modifier => continue,
                     UnsupportedWord::Pattern(spec) => {
-                        let count = match &**word {
-                            "brick" => Some(2),
-                            "hexagon" => Some(3),
-                            _ => None,
-                        };
-                        let blocks = match count {
-                            Some(count) => self.texture_block_list(stream, count)?,
-                            None => None,
-                        };
-                        pattern = Some((*spec, blocks.map(BlendMap::Blocks), *span));
+                        pattern = Some((*spec, None, *span));
                         pattern_transform = Transform::IDENTITY;
                         continue;
                     }
@@ -333,8 +291,6 @@ impl Evaluator {
         let mut pigment = self.default_texture.pigment.clone();
         let mut colour_map: Option<Vec<(f64, Colour)>> = None;
         let mut average = false;
-        let mut frequency = 1.0;
-        let mut phase = 0.0;
         while let Some(item) = self.next_item(stream)? {
             if let Item::Keyword(word, _) = &item {
                 if &**word == "average" {
@@ -406,19 +362,20 @@ impl Evaluator {
                         }
                         pigment.transform(&t);
                     }
-                    "frequency" => frequency = self.expect_float(stream, "a float")?,
-                    "phase" => phase = self.expect_float(stream, "a float")?,
-                    "turbulence" | "octaves" | "omega" | "lambda" => {
+                    // Pattern modifiers on a pigment without a pattern change nothing, as in
+                    // POV-Ray (which refuses a pattern written after them).
+                    "frequency" | "phase" | "turbulence" | "octaves" | "omega" | "lambda"
+                    | "agate_turb" => {
                         self.warn(
                             *span,
-                            format!("pigment `{word}` is not supported yet; it is ignored"),
+                            format!("`{word}` has no pattern to modify here; it is ignored"),
                         );
                         let _ = self.expect_value(stream, "a value")?;
                     }
                     "ramp_wave" | "triangle_wave" | "sine_wave" | "scallop_wave" | "cubic_wave" => {
                         self.warn(
                             *span,
-                            format!("`{word}` is not supported yet; it is ignored"),
+                            format!("`{word}` has no pattern to modify here; it is ignored"),
                         );
                     }
                     "red" | "green" | "blue" | "filter" | "transmit" | "gray" | "grey" => {
@@ -431,15 +388,14 @@ impl Evaluator {
                     "quick_color" | "quick_colour" => {
                         let _ = self.expect_value(stream, "a colour")?;
                     }
-                    "agate_turb" => {
-                        self.warn(*span, "`agate_turb` is not supported yet; it is ignored");
-                        let _ = self.expect_value(stream, "a value")?;
-                    }
                     "uv_mapping" => {
                         self.warn(*span, "`uv_mapping` is not supported yet; it is ignored");
                     }
                     "poly_wave" => {
-                        self.warn(*span, "`poly_wave` is not supported yet; it is ignored");
+                        self.warn(
+                            *span,
+                            "`poly_wave` has no pattern to modify here; it is ignored",
+                        );
                         let _ = self.optional_bool(stream)?;
                     }
                     w if UNSUPPORTED_PATTERNS.contains(&w) => {
@@ -447,11 +403,6 @@ impl Evaluator {
                             *span,
                             format!("pattern `{w}` is not supported yet; its first colour is used"),
                         );
-                        // Patterns with a required operand.
-                        if matches!(w, "agate" | "brick" | "hexagon" | "checker") {
-                        } else if matches!(w, "mandel" | "julia" | "magnet") {
-                            let _ = self.expect_value(stream, "a value")?;
-                        }
                         pigment = Pigment::Pattern {
                             pattern: Box::new(Pattern::new(crate::pattern::PatternKind::Gradient(
                                 DVec3::ZERO,
@@ -509,13 +460,6 @@ impl Evaluator {
         {
             if let Some(map) = colour_map {
                 *entries = map;
-            }
-            if frequency != 1.0 || phase != 0.0 {
-                for (value, _) in entries.iter_mut() {
-                    *value = (*value - phase) / frequency;
-                }
-                // Frequency and phase reshape the value → colour lookup; approximate by
-                // remapping the map entries (exact for frequency 1).
             }
         }
         Ok(pigment)

@@ -95,9 +95,6 @@ impl Evaluator {
                     span,
                     format!("pattern `{w}` in `{owner}` is not supported yet; it is left flat"),
                 );
-                if matches!(w, "mandel" | "julia" | "magnet") {
-                    let _ = self.expect_value(stream, "a value")?;
-                }
                 Ok(UnsupportedWord::Pattern(Box::new(Pattern::new(
                     PatternKind::Gradient(glam::DVec3::ZERO),
                 ))))
