@@ -68,6 +68,10 @@ impl Spline {
             Some(ends) => ends,
             None => return [0.0; 5],
         };
+        // A single point, or a parameter that is not a number, has nothing to interpolate.
+        if n == 1 || t.is_nan() {
+            return first.1;
+        }
         // Too few points for the kind: fall back to straight segments, as POV-Ray does.
         let kind = match kind {
             SplineKind::Quadratic if n < 3 => SplineKind::Linear,
@@ -108,7 +112,10 @@ impl Spline {
                 let start = i.saturating_sub(1);
                 quadratic_through(&points[start..start + 3], t)
             }
-            SplineKind::Cubic => catmull_rom(&points[i - 1..i + 3], t),
+            SplineKind::Cubic => {
+                let start = i.clamp(1, n - 3);
+                catmull_rom(&points[start - 1..start + 3], t)
+            }
             SplineKind::Natural => natural(points, i, t),
         }
     }

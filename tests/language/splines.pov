@@ -52,3 +52,10 @@ Check((abs(AtTwo(Points) - 1.333333333) < 1e-8), "a spline passed to a macro")
   #for (I, 0, 4) I, <I, I*I, 0> #end
 }
 Check(Near(Looped(2.5), <2.5,6.5,0>), "points from a #for loop")
+// A parameter that is not a number gives the first point (it never crashes).
+#declare NanCubic = spline { cubic_spline 0, <0,0>, 1, <1,1>, 2, <2,4>, 3, <3,9> }
+#declare NanOne = spline { linear_spline 0, <5,6> }
+#declare NanValue = val("nan");
+#declare A = NanCubic(NanValue);
+#declare B = NanOne(NanValue);
+#if (B.x != 5 | B.y != 6) #error "one-point spline at NaN" #end
