@@ -85,7 +85,10 @@ impl RasterFormat {
 }
 
 /// Largest image accepted, in pixels (a guard against hostile headers).
-const MAX_PIXELS: u64 = 1 << 28;
+const MAX_PIXELS: u64 = 1 << 26;
+
+/// Widest or tallest image accepted, in pixels.
+const MAX_SIDE: u32 = 1 << 16;
 
 /// Reads and decodes `path` as `format` (`System` guesses from the contents).
 pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
@@ -103,7 +106,12 @@ pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
         (keyword, None) => keyword,
     };
     let mut reader = image::ImageReader::with_format(std::io::Cursor::new(&bytes), chosen);
-    reader.no_limits();
+    // Refuse oversized images from their header, before any pixel memory is allocated.
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(MAX_SIDE);
+    limits.max_image_height = Some(MAX_SIDE);
+    limits.max_alloc = Some(MAX_PIXELS * 16);
+    reader.limits(limits);
     let decoded = reader
         .decode()
         .map_err(|error| format!("cannot decode {}: {error}", path.display()))?;
@@ -141,6 +149,9 @@ fn png_palette_indices(bytes: &[u8], width: u32, height: u32) -> Option<Vec<u8>>
     let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
     decoder.set_transformations(png::Transformations::IDENTITY);
     let mut reader = decoder.read_info().ok()?;
+    if reader.info().color_type != png::ColorType::Indexed {
+        return None;
+    }
     let mut buffer = vec![0; reader.output_buffer_size()?];
     let frame = reader.next_frame(&mut buffer).ok()?;
     if frame.color_type != png::ColorType::Indexed || (frame.width, frame.height) != (width, height)
