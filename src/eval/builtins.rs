@@ -145,7 +145,8 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
         }
         "min_extent" | "max_extent" => {
             arity(ev, 1)?;
-            let world = object_world(ev, call, 0)?;
+            let argument = ev.argument(call, 0)?;
+            let world = object_world(ev, argument, call.arguments[0].span())?;
             // POV-Ray reports unbounded objects as reaching 1e10 in every direction.
             let corner = match (world.bounds(), name) {
                 (Some(bounds), "min_extent") => bounds.min,
@@ -157,8 +158,9 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
         }
         "inside" => {
             arity(ev, 2)?;
-            if let Value::Object(object) = ev.argument(call, 0)? {
-                if let Some(part) = first_non_solid(&object) {
+            let argument = ev.argument(call, 0)?;
+            if let Value::Object(object) = &argument {
+                if let Some(part) = first_non_solid(object) {
                     return Err(ev
                         .error(call.arguments[0].span(), "`inside` needs a solid object")
                         .with_label(format!(
@@ -167,7 +169,7 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
                         .into());
                 }
             }
-            let world = object_world(ev, call, 0)?;
+            let world = object_world(ev, argument, call.arguments[0].span())?;
             let point = vector(ev, 1)?;
             Value::Float(f64::from(world.inside(point)))
         }
@@ -175,7 +177,8 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             if !(3..=4).contains(&call.arguments.len()) {
                 return Err(ev.error(call.span, "`trace` takes 3 or 4 arguments").into());
             }
-            let world = object_world(ev, call, 0)?;
+            let argument = ev.argument(call, 0)?;
+            let world = object_world(ev, argument, call.arguments[0].span())?;
             let origin = vector(ev, 1)?;
             let direction = vector(ev, 2)?.normalize_or_zero();
             let ray = crate::geometry::Ray::new(origin, direction);
@@ -531,6 +534,9 @@ fn first_non_solid(object: &crate::scene::Object) -> Option<&'static str> {
     }
 }
 
+/// Most prepared worlds kept for `trace`, `inside`, `min_extent` and `max_extent`.
+const QUERY_WORLD_CACHE: usize = 64;
+
 /// Extent reported for objects without finite bounds.
 const UNBOUNDED_EXTENT: f64 = 1e10;
 
@@ -538,31 +544,29 @@ const UNBOUNDED_EXTENT: f64 = 1e10;
 /// object value, since scenes call `trace` in loops.
 fn object_world(
     ev: &mut Evaluator,
-    call: &Call,
-    index: usize,
+    argument: Value,
+    span: crate::diag::Span,
 ) -> EvalResult<Rc<crate::geometry::World>> {
-    match ev.argument(call, index)? {
+    match argument {
         Value::Object(object) => {
             let key = Arc::as_ptr(&object) as usize;
             if let Some((_, world)) = ev.query_worlds.get(&key) {
                 return Ok(world.clone());
             }
-            let scene = crate::scene::Scene {
-                camera: Default::default(),
-                lights: Vec::new(),
-                objects: vec![(*object).clone()],
-                background: crate::scene::Colour::BLACK,
-                atmosphere: Default::default(),
-                settings: Default::default(),
-            };
-            let world = Rc::new(crate::geometry::World::build(&scene));
+            let world = Rc::new(crate::geometry::World::build_from_objects(vec![
+                (*object).clone()
+            ]));
+            // Objects written inline in a loop are new every time: keep the cache small.
+            if ev.query_worlds.len() >= QUERY_WORLD_CACHE {
+                ev.query_worlds.clear();
+            }
             // The cache holds the object too, so its address cannot be reused meanwhile.
             ev.query_worlds.insert(key, (object, world.clone()));
             Ok(world)
         }
         other => Err(ev
             .error(
-                call.arguments[index].span(),
+                span,
                 format!("expected an object, found {}", other.type_name()),
             )
             .into()),
