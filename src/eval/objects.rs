@@ -119,7 +119,7 @@ impl Evaluator {
                         )
                         .into());
                 }
-                let mut points = Vec::with_capacity(count as usize);
+                let mut points = Vec::with_capacity((count as usize).min(1 << 20));
                 for _ in 0..count as usize {
                     points.push(self.expect_vector(stream, "a point")?.truncate());
                 }

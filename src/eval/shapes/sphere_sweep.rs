@@ -48,7 +48,7 @@ impl Evaluator {
                 .into());
         }
         self.skip_comma(stream)?;
-        let mut spheres = Vec::with_capacity(count as usize);
+        let mut spheres = Vec::with_capacity((count as usize).min(1 << 20));
         for _ in 0..count as usize {
             let centre = self.expect_vector(stream, "a sphere's centre")?;
             self.skip_comma(stream)?;
