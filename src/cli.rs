@@ -67,17 +67,20 @@ struct RenderArgs {
 #[derive(Args)]
 struct AntialiasArgs {
     /// Turn anti-aliasing on: supersample pixels differing from a neighbour by more than
-    /// THRESHOLD (0 to 3; POV-Ray's +A uses 0.3).
-    #[arg(long, value_name = "THRESHOLD", value_parser = parse_threshold)]
+    /// THRESHOLD (0 to 3; without a value 0.3, as POV-Ray's +A).
+    #[arg(long, value_name = "THRESHOLD", value_parser = parse_threshold,
+          num_args = 0..=1, default_missing_value = "0.3")]
     antialias: Option<f64>,
     /// Supersampling method: 1 non-recursive grid, 2 recursive (POV-Ray's +AM).
-    #[arg(long, value_name = "1|2", value_parser = clap::value_parser!(u32).range(1..=2))]
+    #[arg(long, value_name = "1|2", value_parser = clap::value_parser!(u32).range(1..=2),
+          requires = "antialias")]
     aa_method: Option<u32>,
     /// Grid size (method 1) or recursion depth (method 2), 1 to 9 (POV-Ray's +R; default 3).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=9))]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=9),
+          requires = "antialias")]
     aa_depth: Option<u32>,
     /// Jitter of the supersamples, 0 (off) to 1 (POV-Ray's +J; default 1).
-    #[arg(long, value_name = "AMOUNT", value_parser = parse_jitter)]
+    #[arg(long, value_name = "AMOUNT", value_parser = parse_jitter, requires = "antialias")]
     jitter: Option<f64>,
 }
 
