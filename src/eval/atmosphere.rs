@@ -60,7 +60,13 @@ impl Evaluator {
                     "fog_offset" => offset = self.expect_float(stream, "a float")?,
                     "fog_alt" => altitude = self.expect_float(stream, "a float")?,
                     "turb_depth" => depth = self.expect_float(stream, "a float")?,
-                    "turbulence" => turbulence = Some(self.expect_vector(stream, "a vector")?),
+                    "turbulence" => {
+                        self.warn(
+                            *span,
+                            "fog `turbulence` is not applied yet; the fog is even",
+                        );
+                        turbulence = Some(self.expect_vector(stream, "a vector")?);
+                    }
                     "octaves" => {
                         let octaves = self.expect_float(stream, "a float")?;
                         shape.octaves = octaves.clamp(1.0, 10.0) as u32;
