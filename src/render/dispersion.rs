@@ -20,19 +20,30 @@ fn raw_band(index: u32, count: u32) -> (f64, DVec3) {
     (t - 0.5, hue_colour(t * VIOLET_HUE))
 }
 
-/// The exponent offset and colour weight of band `index` of `count` (weights sum to white).
-pub fn band(index: u32, count: u32) -> (f64, DVec3) {
-    let mut total = DVec3::ZERO;
-    for other in 0..count {
-        total += raw_band(other, count).1;
+/// The colour bands of a dispersive refraction: their weights are normalised once, so that
+/// all `count` bands together give white.
+pub struct Bands {
+    count: u32,
+    total: DVec3,
+}
+
+impl Bands {
+    /// The `count` bands.
+    pub fn new(count: u32) -> Bands {
+        let total = (0..count).map(|index| raw_band(index, count).1).sum();
+        Bands { count, total }
     }
-    let (offset, colour) = raw_band(index, count);
-    let weight = DVec3::new(
-        safe_ratio(colour.x, total.x),
-        safe_ratio(colour.y, total.y),
-        safe_ratio(colour.z, total.z),
-    );
-    (offset, weight)
+
+    /// The exponent offset and colour weight of band `index`.
+    pub fn band(&self, index: u32) -> (f64, DVec3) {
+        let (offset, colour) = raw_band(index, self.count);
+        let weight = DVec3::new(
+            safe_ratio(colour.x, self.total.x),
+            safe_ratio(colour.y, self.total.y),
+            safe_ratio(colour.z, self.total.z),
+        );
+        (offset, weight)
+    }
 }
 
 fn safe_ratio(part: f64, total: f64) -> f64 {
@@ -66,12 +77,12 @@ mod tests {
         for count in [2, 7, 20] {
             let mut total = DVec3::ZERO;
             for index in 0..count {
-                total += band(index, count).1;
+                total += Bands::new(count).band(index).1;
             }
             assert!((total - DVec3::ONE).abs().max_element() < 1e-12, "{count}");
         }
-        let (red_offset, red) = band(0, 7);
-        let (violet_offset, violet) = band(6, 7);
+        let (red_offset, red) = Bands::new(7).band(0);
+        let (violet_offset, violet) = Bands::new(7).band(6);
         assert!(red_offset < 0.0 && violet_offset > 0.0);
         assert!(red.x > red.z && violet.z > violet.x);
     }

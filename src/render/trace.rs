@@ -39,7 +39,7 @@
 //!   bailout (parent · max(T))² · reflection.)
 
 use super::atmosphere::AtmosphereShader;
-use super::dispersion::band;
+use super::dispersion::Bands;
 use super::encoding::is_legacy_scene;
 use super::lights::{prepare_lights, transmission, SceneLight};
 use super::normal::perturbed_normal;
@@ -454,9 +454,10 @@ impl Tracer<'_> {
         let interior = &self.world.materials.get(hit.material as usize)?.interior;
         let count = interior.dispersion_samples.max(2);
         refract(ray.direction, normal, media.ior() / ior)?;
+        let bands = Bands::new(count);
         let mut total = DVec3::ZERO;
         for index in 0..count {
-            let (offset, colour) = band(index, count);
+            let (offset, colour) = bands.band(index);
             let band_ior = sanitise_ior(ior * interior.dispersion.powf(offset));
             let mut beyond = media.entered(hit.material, band_ior);
             beyond.band = Some(offset);
