@@ -250,11 +250,16 @@ fn point_jitter(x: f64, y: f64, amount: f64) -> DVec2 {
 
 /// A well-mixed hash of `value` as a number in [0, 1) (SplitMix64's finaliser).
 pub fn unit_hash(value: u64) -> f64 {
+    (mix64(value) >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// SplitMix64's finaliser: a well-spread 64-bit hash of `value` (shared by the renderer's
+/// deterministic jitters).
+pub fn mix64(value: u64) -> u64 {
     let mut z = value.wrapping_add(0x9e37_79b9_7f4a_7c15);
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^= z >> 31;
-    (z >> 11) as f64 / (1u64 << 53) as f64
+    z ^ (z >> 31)
 }
 
 #[cfg(test)]

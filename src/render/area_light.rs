@@ -23,6 +23,7 @@
 //!   rectangle (renders match POV-Ray's to a few levels in penumbrae, not exactly).
 //! - `orient` turns the array to face the lit point (axes keep their lengths).
 
+use super::antialias::mix64;
 use crate::scene::AreaLight;
 use glam::DVec3;
 use std::ops::{Add, Div};
@@ -85,7 +86,7 @@ impl AreaArray {
         let mut u = grid_coordinate(i, self.size1);
         let mut v = grid_coordinate(j, self.size2);
         if let Some(seed) = self.jitter_seed {
-            let bits = mix(seed ^ (u64::from(i) << 32 | u64::from(j)));
+            let bits = mix64(seed ^ (u64::from(i) << 32 | u64::from(j)));
             let (a, b) = (unit_from(bits), unit_from(bits >> 32));
             if self.size1 > 1 {
                 u += (a - 0.5) / f64::from(self.size1 - 1);
@@ -182,24 +183,16 @@ fn oriented_axes(area: &AreaLight, towards_light: DVec3) -> (DVec3, DVec3) {
 /// A number in [0, 1) that depends only on `point` and `salt` (for deterministic
 /// randomness such as `crand`).
 pub fn point_random(point: DVec3, salt: u64) -> f64 {
-    unit_from(mix(hash_point(point) ^ salt))
+    unit_from(mix64(hash_point(point) ^ salt))
 }
 
 /// A seed from the bits of a point (the same point always gives the same jitter).
 fn hash_point(point: DVec3) -> u64 {
     let mut hash = 0x9e37_79b9_7f4a_7c15u64;
     for coordinate in [point.x, point.y, point.z] {
-        hash = mix(hash ^ coordinate.to_bits());
+        hash = mix64(hash ^ coordinate.to_bits());
     }
     hash
-}
-
-/// A 64-bit mixing function (SplitMix64's finaliser).
-fn mix(mut x: u64) -> u64 {
-    x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    x = (x ^ (x >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    x ^ (x >> 31)
 }
 
 /// A number in [0, 1) from the low 32 bits.
