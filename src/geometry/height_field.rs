@@ -84,6 +84,12 @@ impl HeightField {
         if entry > exit || !entry.is_finite() || !exit.is_finite() {
             return;
         }
+        // Start at the ray's origin when it is inside the box: crossings behind it would only
+        // take the places of the ones ahead in the bounded list of roots.
+        let entry = entry.max(0.0);
+        if entry > exit {
+            return;
+        }
         // Walk the cells in grid coordinates.
         let cells = self.cells();
         let grid_origin = DVec2::new(origin.x * cells.x, origin.z * cells.y);
