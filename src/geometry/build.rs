@@ -537,6 +537,9 @@ impl Builder {
                     nodes
                         .pop()
                         .unwrap_or_else(|| CsgNode::combine(Combination::Union, Vec::new()))
+                } else if inversion.odd && matches!(shape, Shape::Text(_)) {
+                    // Outside every letter: the inverted letters intersected.
+                    CsgNode::combine(Combination::Intersection, nodes)
                 } else {
                     CsgNode::combine(Combination::Union, nodes)
                 }
