@@ -98,7 +98,7 @@ pub struct Object {
     /// `clipped_by` objects, in this object's local space: only the parts of the object inside
     /// all of them remain.
     pub clipped_by: Vec<Object>,
-    /// `bounded_by` objects, in this object's local space (a hint: durer does not need them).
+    /// `bounded_by` objects, in this object's local space (the object takes their box: rays missing it miss the object, as in POV-Ray 3.7).
     pub bounded_by: Vec<Object>,
     /// `no_image`: invisible to camera rays (still casts shadows and shows in reflections).
     pub no_image: bool,
