@@ -8,14 +8,12 @@
 //! there are more; per-ray work uses a per-thread scratch vector that is reused.
 
 use super::roots::Roots;
+use super::roots::CROSSING_BUFFER;
 use super::torus::{real_roots_between, MAX_DEGREE};
 use crate::accel::Aabb;
 use crate::scene::{Blob as SceneBlob, BlobKind};
 use glam::{DAffine3, DVec3};
 use std::cell::RefCell;
-
-/// Crossings collected per line before keeping the nearest.
-const CROSSING_BUFFER: usize = 64;
 
 /// One field element: a distance measured in the component's space, maybe limited to a slab
 /// along an axis (cylinder body and caps).

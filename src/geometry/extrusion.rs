@@ -10,6 +10,7 @@
 //! line, nearest ahead first when there are more; nothing allocates per ray.
 
 use super::roots::Roots;
+use super::roots::CROSSING_BUFFER;
 use super::torus::real_roots_between;
 use crate::accel::Aabb;
 use glam::{DVec2, DVec3};
@@ -20,8 +21,6 @@ const FRONT_CAP: u8 = 0;
 const BACK_CAP: u8 = 1;
 /// Part tag of side walls whose segment number does not fit in a tag.
 const UNKNOWN_SIDE: u8 = u8::MAX;
-/// Crossings collected per line before keeping the nearest.
-const CROSSING_BUFFER: usize = 64;
 
 /// One cubic segment in power form: `a s³ + b s² + c s + start` for s in [0, 1].
 #[derive(Clone, Copy, Debug)]

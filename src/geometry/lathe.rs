@@ -10,14 +10,13 @@
 
 use super::extrusion::Segment;
 use super::roots::Roots;
+use super::roots::CROSSING_BUFFER;
 use super::torus::{real_roots_between, MAX_DEGREE};
 use crate::accel::Aabb;
 use glam::{DVec2, DVec3};
 
 /// Part tag for crossings whose segment number does not fit in a tag.
 const UNKNOWN_SEGMENT: u8 = u8::MAX;
-/// Crossings collected per line before keeping the nearest.
-const CROSSING_BUFFER: usize = 64;
 
 /// Multiplies two polynomials given lowest power first.
 fn multiply(first: &[f64; 4], second: &[f64; 4]) -> [f64; 7] {

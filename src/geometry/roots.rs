@@ -84,6 +84,10 @@ impl Roots {
     }
 }
 
+/// Room for the crossings a shape gathers per line before [`Roots::push_nearest`] keeps the
+/// nearest ones (shapes with many pieces: blobs, lathes, extrusions, surfaces of revolution).
+pub const CROSSING_BUFFER: usize = 64;
+
 /// Real roots of `a x² + 2 half_b x + c = 0`, smaller first, computed without cancellation.
 ///
 /// Returns `None` when there is no real root; a linear equation (`a == 0`) gives its single

@@ -5,6 +5,7 @@
 //! cubic per segment), inside test, outward normals, bounds. Holds: segments whose heights do
 //! not increase are dropped; nothing allocates per ray.
 
+use super::roots::CROSSING_BUFFER;
 use super::roots::{solve_quadratic, Roots};
 use super::torus::{real_roots_between, MAX_DEGREE};
 use crate::accel::Aabb;
@@ -142,13 +143,22 @@ impl Sor {
     /// Pushes the crossings of the line `origin + t direction`.
     pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
         let (o, d) = (origin, direction);
+        // Gathered first, so that the nearest crossings are kept when there are many.
+        let mut crossings = [(0.0, 0u8); CROSSING_BUFFER];
+        let mut count = 0;
+        let mut record = |t: f64, part: u8| {
+            if count < CROSSING_BUFFER {
+                crossings[count] = (t, part);
+                count += 1;
+            }
+        };
         if !self.open && d.y != 0.0 {
             for ((height, radius_squared), part) in [(self.bottom, BOTTOM_CAP), (self.top, TOP_CAP)]
             {
                 let t = (height - o.y) / d.y;
                 let (x, z) = (o.x + t * d.x, o.z + t * d.z);
                 if x * x + z * z <= radius_squared {
-                    roots.push(t, part);
+                    record(t, part);
                 }
             }
         }
@@ -174,7 +184,7 @@ impl Sor {
                 let count =
                     real_roots_between(&cubic, first.min(second), first.max(second), &mut found);
                 for &t in &found[..count] {
-                    roots.push(t, SIDE);
+                    record(t, SIDE);
                 }
             } else if o.y >= piece.low && o.y < piece.high {
                 let radius_squared = piece.radius_squared(o.y);
@@ -182,13 +192,14 @@ impl Sor {
                 let half_b = o.x * d.x + o.z * d.z;
                 let constant = o.x * o.x + o.z * o.z - radius_squared;
                 if let Some((near, far)) = solve_quadratic(quadratic_a, half_b, constant) {
-                    roots.push(near, SIDE);
+                    record(near, SIDE);
                     if far != near {
-                        roots.push(far, SIDE);
+                        record(far, SIDE);
                     }
                 }
             }
         }
+        roots.push_nearest(&mut crossings[..count]);
     }
 
     /// True when `point` is inside the solid.
