@@ -352,8 +352,7 @@ impl Evaluator {
 
     /// Looks an identifier up, innermost scope first, following references.
     pub(crate) fn lookup(&self, name: &str) -> Option<&Value> {
-        let index = self.scopes.innermost_holder(name)?;
-        match self.scopes.get(index, name)? {
+        match self.scopes.innermost_binding(name)?.1 {
             Value::Reference { scope, name } => self.lookup_from(*scope, name),
             other => Some(other),
         }
@@ -363,8 +362,8 @@ impl Evaluator {
     pub(crate) fn lookup_from(&self, top: usize, name: &str) -> Option<&Value> {
         let (mut top, mut name) = (top, name);
         loop {
-            let index = self.scopes.holder_at_or_below(name, top)?;
-            match self.scopes.get(index, name)? {
+            let (index, value) = self.scopes.binding_at_or_below(name, top)?;
+            match value {
                 Value::Reference {
                     scope,
                     name: target,
@@ -403,12 +402,12 @@ impl Evaluator {
         let mut top = top;
         let mut name = name.clone();
         loop {
-            match self.scopes.holder_at_or_below(&name, top) {
-                Some(i) => match self.scopes.get(i, &name) {
-                    Some(Value::Reference {
+            match self.scopes.binding_at_or_below(&name, top) {
+                Some((i, value)) => match value {
+                    Value::Reference {
                         scope,
                         name: target,
-                    }) if *scope < i => {
+                    } if *scope < i => {
                         top = *scope;
                         name = target.clone();
                     }
