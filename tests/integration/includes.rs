@@ -460,3 +460,47 @@ fn embedded_texture_macros_match_povray() {
         }
     }
 }
+
+/// Like POV-Ray's, durer's textures.inc, woods.inc and woodmaps.inc read their
+/// declarations as version 3.5 and then set the including file's version again, which
+/// counts as the scene declaring one (gamma handling depends on that): a scene without
+/// `#version` renders the same with either file.
+#[test]
+fn embedded_texture_files_set_the_version_like_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    for file in ["textures.inc", "woods.inc", "woodmaps.inc"] {
+        let render = |installed: bool| {
+            let dir = scratch(&format!("version-{file}-{installed}"));
+            let path = dir.join("scene.pov");
+            let scene = format!(
+                "#include \"{file}\"\n\
+                 camera {{ location <0, 0, -3> look_at 0 }}\n\
+                 light_source {{ <2, 4, -5>, rgb 1 }}\n\
+                 sphere {{ 0, 1 pigment {{ rgb <0.5, 0.3, 0.2> }} }}\n"
+            );
+            std::fs::write(&path, scene).expect("write scene");
+            let options = durer::eval::EvalOptions {
+                search_installed_povray: installed,
+                ..Default::default()
+            };
+            let mut scene = evaluate_with(&path, options)
+                .scene
+                .unwrap_or_else(|| panic!("{file}: the scene does not evaluate"));
+            let world =
+                durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+            let options = durer::render::RenderOptions {
+                width: 16,
+                height: 12,
+                antialias: None,
+            };
+            durer::render::render(&scene, &world, &options, &|_| {})
+        };
+        assert!(
+            render(false) == render(true),
+            "{file}: a scene without #version renders differently"
+        );
+    }
+}
