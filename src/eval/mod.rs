@@ -123,6 +123,9 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("golds.inc", include_str!("stdlib/golds.inc")),
     ("metals.inc", include_str!("stdlib/metals.inc")),
     ("skies.inc", include_str!("stdlib/skies.inc")),
+    ("textures.inc", include_str!("stdlib/textures.inc")),
+    ("woodmaps.inc", include_str!("stdlib/woodmaps.inc")),
+    ("woods.inc", include_str!("stdlib/woods.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
