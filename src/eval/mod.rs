@@ -123,6 +123,9 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("golds.inc", include_str!("stdlib/golds.inc")),
     ("metals.inc", include_str!("stdlib/metals.inc")),
     ("skies.inc", include_str!("stdlib/skies.inc")),
+    ("stones.inc", include_str!("stdlib/stones.inc")),
+    ("stones1.inc", include_str!("stdlib/stones1.inc")),
+    ("stones2.inc", include_str!("stdlib/stones2.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
