@@ -126,6 +126,9 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("textures.inc", include_str!("stdlib/textures.inc")),
     ("woodmaps.inc", include_str!("stdlib/woodmaps.inc")),
     ("woods.inc", include_str!("stdlib/woods.inc")),
+    ("stones.inc", include_str!("stdlib/stones.inc")),
+    ("stones1.inc", include_str!("stdlib/stones1.inc")),
+    ("stones2.inc", include_str!("stdlib/stones2.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

@@ -171,6 +171,14 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         include_str!("../../src/eval/stdlib/woodmaps.inc"),
     ),
     ("woods.inc", include_str!("../../src/eval/stdlib/woods.inc")),
+    (
+        "stones1.inc",
+        include_str!("../../src/eval/stdlib/stones1.inc"),
+    ),
+    (
+        "stones2.inc",
+        include_str!("../../src/eval/stdlib/stones2.inc"),
+    ),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
@@ -503,4 +511,36 @@ fn embedded_texture_files_set_the_version_like_povray() {
             "{file}: a scene without #version renders differently"
         );
     }
+}
+
+/// durer's stones.inc only includes its two halves: without POV-Ray's files, the textures of
+/// both (first and last of each family) are declared after including it.
+#[test]
+fn embedded_stones_inc_loads_both_halves() {
+    let dir = scratch("embedded-stones");
+    let names = [
+        "T_Grnt0",
+        "T_Grnt29",
+        "T_Grnt0a",
+        "T_Grnt24a",
+        "T_Crack1",
+        "T_Crack4",
+        "T_Stone1",
+        "T_Stone24",
+        "T_Stone25",
+        "T_Stone44",
+        "g4",
+    ];
+    let mut scene = String::from("#include \"stones.inc\"\n#fopen Out \"found.txt\" write\n");
+    for name in names {
+        scene.push_str(&format!(
+            "#ifdef ({name}) #write (Out, \"{name}\\n\") #end\n"
+        ));
+    }
+    scene.push_str("#fclose Out\n");
+    let path = dir.join("stones.pov");
+    std::fs::write(&path, scene).expect("write scene");
+    evaluate_cleanly(&path, false, "stones.inc");
+    let found = std::fs::read_to_string(dir.join("found.txt")).expect("names written");
+    assert_eq!(found.lines().collect::<Vec<_>>(), names);
 }
