@@ -469,17 +469,17 @@ fn embedded_texture_macros_match_povray() {
     }
 }
 
-/// Like POV-Ray's, durer's textures.inc, woods.inc and woodmaps.inc read their
-/// declarations as version 3.5 and then set the including file's version again, which
+/// Like POV-Ray's, durer's include files read their declarations as version 3.5 and then set the including file's version again, which
 /// counts as the scene declaring one (gamma handling depends on that): a scene without
 /// `#version` renders the same with either file.
 #[test]
-fn embedded_texture_files_set_the_version_like_povray() {
+fn embedded_files_set_the_version_like_povray() {
     if povray_include_folder().is_none() {
         eprintln!("POV-Ray's include files are not installed; skipping");
         return;
     }
-    for file in ["textures.inc", "woods.inc", "woodmaps.inc"] {
+    let files = EMBEDDED_FILES.iter().map(|(file, _)| *file);
+    for file in files.chain(["colors.inc"]) {
         let render = |installed: bool| {
             let dir = scratch(&format!("version-{file}-{installed}"));
             let path = dir.join("scene.pov");
@@ -494,9 +494,7 @@ fn embedded_texture_files_set_the_version_like_povray() {
                 search_installed_povray: installed,
                 ..Default::default()
             };
-            let mut scene = evaluate_with(&path, options)
-                .scene
-                .unwrap_or_else(|| panic!("{file}: the scene does not evaluate"));
+            let mut scene = evaluate_with(&path, options).scene?;
             let world =
                 durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
             let options = durer::render::RenderOptions {
@@ -504,12 +502,17 @@ fn embedded_texture_files_set_the_version_like_povray() {
                 height: 12,
                 antialias: None,
             };
-            durer::render::render(&scene, &world, &options, &|_| {})
+            Some(durer::render::render(&scene, &world, &options, &|_| {}))
         };
-        assert!(
-            render(false) == render(true),
-            "{file}: a scene without #version renders differently"
-        );
+        // Some of POV-Ray's files (skies.inc, stones1.inc) do not load on their own: they
+        // need colors.inc first. durer's do.
+        let ours = render(false).unwrap_or_else(|| panic!("{file}: the scene does not evaluate"));
+        if let Some(theirs) = render(true) {
+            assert!(
+                ours == theirs,
+                "{file}: a scene without #version renders differently"
+            );
+        }
     }
 }
 
