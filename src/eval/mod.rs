@@ -123,6 +123,8 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("golds.inc", include_str!("stdlib/golds.inc")),
     ("metals.inc", include_str!("stdlib/metals.inc")),
     ("skies.inc", include_str!("stdlib/skies.inc")),
+    ("functions.inc", include_str!("stdlib/functions.inc")),
+    ("math.inc", include_str!("stdlib/math.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
