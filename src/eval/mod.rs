@@ -125,6 +125,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("skies.inc", include_str!("stdlib/skies.inc")),
     ("functions.inc", include_str!("stdlib/functions.inc")),
     ("math.inc", include_str!("stdlib/math.inc")),
+    ("transforms.inc", include_str!("stdlib/transforms.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
