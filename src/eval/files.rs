@@ -54,7 +54,10 @@ impl Evaluator {
                     .truncate(mode == "write")
                     .open(&resolved);
                 match opened {
-                    Ok(f) => DataFile::Writing(std::io::BufWriter::new(f)),
+                    Ok(f) => {
+                        self.forget_parsed(&resolved);
+                        DataFile::Writing(std::io::BufWriter::new(f))
+                    }
                     Err(e) => {
                         return Err(self
                             .error(

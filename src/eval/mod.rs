@@ -126,6 +126,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("functions.inc", include_str!("stdlib/functions.inc")),
     ("math.inc", include_str!("stdlib/math.inc")),
     ("transforms.inc", include_str!("stdlib/transforms.inc")),
+    ("strings.inc", include_str!("stdlib/strings.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
@@ -222,6 +223,13 @@ impl Evaluator {
             self.scene_item(item)?;
         }
         Ok(())
+    }
+
+    /// Drops the cached parse of a file the scene is rewriting, so that a later `#include` of
+    /// it (strings.inc's `Parse_String`) reads the new text.
+    pub(crate) fn forget_parsed(&mut self, path: &Path) {
+        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        self.parsed.remove(&key);
     }
 
     /// Reads and parses a file once; later loads reuse the AST.
