@@ -127,6 +127,8 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("math.inc", include_str!("stdlib/math.inc")),
     ("transforms.inc", include_str!("stdlib/transforms.inc")),
     ("strings.inc", include_str!("stdlib/strings.inc")),
+    ("rand.inc", include_str!("stdlib/rand.inc")),
+    ("arrays.inc", include_str!("stdlib/arrays.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

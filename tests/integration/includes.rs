@@ -382,6 +382,11 @@ const EMBEDDED_LIBRARIES: &[(&str, &str)] = &[
         "strings.inc",
         include_str!("../../src/eval/stdlib/strings.inc"),
     ),
+    ("rand.inc", include_str!("../../src/eval/stdlib/rand.inc")),
+    (
+        "arrays.inc",
+        include_str!("../../src/eval/stdlib/arrays.inc"),
+    ),
 ];
 
 /// Whether two lines of probe output agree: the same words, numbers equal to a millionth of
