@@ -479,3 +479,33 @@ fn embedded_libraries_declare_povray_names() {
         );
     }
 }
+
+/// arrays.inc's ARRAYS_WriteDF3 writes the density files POV-Ray writes: the three sizes as
+/// big-endian 16-bit numbers, then each value scaled to 8 or 16 bits, rounded, x fastest.
+#[test]
+fn embedded_arrays_write_povray_density_files() {
+    let dir = scratch("library-df3");
+    let scene = dir.join("df3.pov");
+    std::fs::write(
+        &scene,
+        "#include \"arrays.inc\"\n\
+         #declare Grid = array[2][3] {{0, 0.5, 1}, {0.25, 0.75, 0.1}}\n\
+         ARRAYS_WriteDF3(Grid, \"grid8.df3\", 8)\n\
+         ARRAYS_WriteDF3(Grid, \"grid16.df3\", 16)\n",
+    )
+    .expect("write scene");
+    evaluate_cleanly(&scene, false, "arrays.inc");
+    // The bytes povray 3.7 writes for the same scene.
+    let eight = [0, 2, 0, 3, 0, 1, 0x00, 0x40, 0x80, 0xbf, 0xff, 0x1a];
+    let sixteen = [
+        0, 2, 0, 3, 0, 1, 0x00, 0x00, 0x40, 0x00, 0x80, 0x00, 0xbf, 0xff, 0xff, 0xff, 0x19, 0x9a,
+    ];
+    assert_eq!(
+        std::fs::read(dir.join("grid8.df3")).expect("8-bit file"),
+        eight
+    );
+    assert_eq!(
+        std::fs::read(dir.join("grid16.df3")).expect("16-bit file"),
+        sixteen
+    );
+}

@@ -1,7 +1,7 @@
 // Calls every macro of arrays.inc and writes the arrays they leave, one `name values..` line
 // each, to probe.txt; tests/integration/includes.rs runs it with durer's embedded arrays.inc
-// and compares the result with POV-Ray's output. (ARRAYS_WriteDF3 is only called: durer does
-// not write binary values yet.)
+// and compares the result with POV-Ray's output. (The density files ARRAYS_WriteDF3 writes
+// are checked byte by byte in includes.rs.)
 #version 3.7;
 #include "arrays.inc"
 #fopen Out "probe.txt" write
