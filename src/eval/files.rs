@@ -7,7 +7,7 @@
 use super::value::{Value, Vector};
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::syntax::ast::{Expr, Target};
+use crate::syntax::ast::{Expr, Target, WriteValue};
 use std::io::Write;
 use std::path::{Component, Path, PathBuf};
 use std::rc::Rc;
@@ -54,7 +54,10 @@ impl Evaluator {
                     .truncate(mode == "write")
                     .open(&resolved);
                 match opened {
-                    Ok(f) => DataFile::Writing(std::io::BufWriter::new(f)),
+                    Ok(f) => {
+                        self.forget_parsed(&resolved);
+                        DataFile::Writing(std::io::BufWriter::new(f))
+                    }
                     Err(e) => {
                         return Err(self
                             .error(
@@ -137,30 +140,53 @@ impl Evaluator {
         Ok(())
     }
 
-    /// `#write (Handle, values..)`: strings as they are, floats and vectors as POV-Ray writes them.
+    /// `#write (Handle, values..)`: strings as they are, floats and vectors as POV-Ray writes them;
+    /// a value after `uint8`, `sint16be` and the like as binary integers, one per component.
     pub(crate) fn file_write(
         &mut self,
         handle: &Rc<str>,
-        values: &[Expr],
+        values: &[WriteValue],
         span: Span,
     ) -> EvalResult<()> {
         let index = self.file_index(handle, span)?;
-        let mut text = String::new();
-        for value in values {
-            match self.eval_expr(value)? {
-                Value::String(s) => text.push_str(&s),
-                Value::Float(f) => text.push_str(&format_number(f)),
+        let mut bytes = Vec::new();
+        for WriteValue { binary, value } in values {
+            let evaluated = self.eval_expr(value)?;
+            if let Some(integer) = binary {
+                let components = match &evaluated {
+                    Value::Float(f) => std::slice::from_ref(f),
+                    Value::Vector(v) => &v.components[..v.len as usize],
+                    other => {
+                        return Err(self
+                            .error(
+                                value.span(),
+                                format!(
+                                    "binary `#write` needs a float or a vector, found {}",
+                                    other.type_name()
+                                ),
+                            )
+                            .into())
+                    }
+                };
+                for component in components {
+                    integer.encode(*component, &mut bytes);
+                }
+                continue;
+            }
+            match evaluated {
+                Value::String(s) => bytes.extend_from_slice(s.as_bytes()),
+                Value::Float(f) => bytes.extend_from_slice(format_number(f).as_bytes()),
                 Value::Vector(v) => {
                     let parts: Vec<String> = v.components[..v.len as usize]
                         .iter()
                         .map(|c| format_number(*c))
                         .collect();
-                    text.push_str(&format!("<{}>", parts.join(",")));
+                    bytes.extend_from_slice(format!("<{}>", parts.join(",")).as_bytes());
                 }
                 Value::Colour(c) => {
                     let parts: Vec<String> =
                         c.to_array().iter().map(|c| format_number(*c)).collect();
-                    text.push_str(&format!("rgbft <{}>", parts.join(",")));
+                    bytes.extend_from_slice(format!("rgbft <{}>", parts.join(",")).as_bytes());
                 }
                 other => {
                     return Err(self
@@ -174,7 +200,7 @@ impl Evaluator {
         }
         match &mut self.files[index] {
             Some(DataFile::Writing(writer)) => writer
-                .write_all(text.as_bytes())
+                .write_all(&bytes)
                 .map_err(|e| self.error(span, format!("cannot write: {e}")).into()),
             _ => Err(self
                 .error(span, format!("`{handle}` was opened for reading"))

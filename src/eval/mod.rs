@@ -129,6 +129,12 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("stones.inc", include_str!("stdlib/stones.inc")),
     ("stones1.inc", include_str!("stdlib/stones1.inc")),
     ("stones2.inc", include_str!("stdlib/stones2.inc")),
+    ("functions.inc", include_str!("stdlib/functions.inc")),
+    ("math.inc", include_str!("stdlib/math.inc")),
+    ("transforms.inc", include_str!("stdlib/transforms.inc")),
+    ("strings.inc", include_str!("stdlib/strings.inc")),
+    ("rand.inc", include_str!("stdlib/rand.inc")),
+    ("arrays.inc", include_str!("stdlib/arrays.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
@@ -225,6 +231,13 @@ impl Evaluator {
             self.scene_item(item)?;
         }
         Ok(())
+    }
+
+    /// Drops the cached parse of a file the scene is rewriting, so that a later `#include` of
+    /// it (strings.inc's `Parse_String`) reads the new text.
+    pub(crate) fn forget_parsed(&mut self, path: &Path) {
+        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        self.parsed.remove(&key);
     }
 
     /// Reads and parses a file once; later loads reuse the AST.

@@ -578,10 +578,18 @@ impl Lowerer {
             }
             Rule::write => {
                 let handle = Rc::from(inner.next().expect("handle").as_str());
-                let values = inner
-                    .filter(|p| p.as_rule() == Rule::full_expr)
-                    .map(|p| self.full_expr(p))
-                    .collect();
+                let mut values = Vec::new();
+                let mut binary = None;
+                for p in inner {
+                    match p.as_rule() {
+                        Rule::write_type => binary = BinaryInteger::from_keyword(p.as_str()),
+                        Rule::full_expr => values.push(WriteValue {
+                            binary: binary.take(),
+                            value: self.full_expr(p),
+                        }),
+                        _ => {}
+                    }
+                }
                 DirectiveKind::FileWrite { handle, values }
             }
             other => unreachable!("grammar rule {other:?} is not a directive"),

@@ -478,8 +478,8 @@ fn embedded_files_set_the_version_like_povray() {
         eprintln!("POV-Ray's include files are not installed; skipping");
         return;
     }
-    let files = EMBEDDED_FILES.iter().map(|(file, _)| *file);
-    for file in files.chain(["colors.inc"]) {
+    let files = EMBEDDED_FILES.iter().chain(EMBEDDED_LIBRARIES);
+    for file in files.map(|(file, _)| *file).chain(["colors.inc"]) {
         let render = |installed: bool| {
             let dir = scratch(&format!("version-{file}-{installed}"));
             let path = dir.join("scene.pov");
@@ -546,4 +546,149 @@ fn embedded_stones_inc_loads_both_halves() {
     evaluate_cleanly(&path, false, "stones.inc");
     let found = std::fs::read_to_string(dir.join("found.txt")).expect("names written");
     assert_eq!(found.lines().collect::<Vec<_>>(), names);
+}
+
+/// durer's embedded libraries of functions and macros. Each has a probe scene
+/// `tests/stdlib/NAME.pov` that calls what the file declares and writes the results to
+/// `probe.txt`, and POV-Ray's answers in `tests/stdlib/NAME.txt` (scripts/probe-stdlib.sh).
+const EMBEDDED_LIBRARIES: &[(&str, &str)] = &[
+    (
+        "functions.inc",
+        include_str!("../../src/eval/stdlib/functions.inc"),
+    ),
+    ("math.inc", include_str!("../../src/eval/stdlib/math.inc")),
+    (
+        "transforms.inc",
+        include_str!("../../src/eval/stdlib/transforms.inc"),
+    ),
+    (
+        "strings.inc",
+        include_str!("../../src/eval/stdlib/strings.inc"),
+    ),
+    ("rand.inc", include_str!("../../src/eval/stdlib/rand.inc")),
+    (
+        "arrays.inc",
+        include_str!("../../src/eval/stdlib/arrays.inc"),
+    ),
+];
+
+/// Whether two lines of probe output agree: the same words, numbers equal to a millionth of
+/// their size (POV-Ray keeps colours and 5D vectors in single precision).
+fn probe_lines_agree(ours: &str, theirs: &str) -> bool {
+    let (a, b): (Vec<&str>, Vec<&str>) = (
+        ours.split_whitespace().collect(),
+        theirs.split_whitespace().collect(),
+    );
+    a.len() == b.len()
+        && a.iter()
+            .zip(&b)
+            .all(|(p, q)| match (p.parse::<f64>(), q.parse::<f64>()) {
+                (Ok(x), Ok(y)) => (x - y).abs() <= 1e-6 * y.abs().max(1.0),
+                _ => p == q,
+            })
+}
+
+/// Runs the probe scene of `file` with durer's embedded include files only and returns what
+/// it wrote.
+fn run_library_probe(file: &str) -> String {
+    let name = file.trim_end_matches(".inc");
+    let probe = crate::tests_folder()
+        .join("stdlib")
+        .join(format!("{name}.pov"));
+    let dir = scratch(&format!("library-{name}"));
+    let scene = dir.join(format!("{name}.pov"));
+    std::fs::copy(&probe, &scene).expect("copy probe scene");
+    evaluate_cleanly(&scene, false, file);
+    std::fs::read_to_string(dir.join("probe.txt")).expect("probe written")
+}
+
+/// Every function and macro of the embedded libraries gives POV-Ray's results: the probe
+/// scenes' output with durer's files equals POV-Ray's output with its own, line by line.
+#[test]
+fn embedded_libraries_give_povray_results() {
+    for (file, _) in EMBEDDED_LIBRARIES {
+        let ours = run_library_probe(file);
+        let expected = crate::tests_folder()
+            .join("stdlib")
+            .join(format!("{}.txt", file.trim_end_matches(".inc")));
+        let theirs = std::fs::read_to_string(&expected).expect("POV-Ray's probe output");
+        for (a, b) in ours.lines().zip(theirs.lines()) {
+            assert!(
+                probe_lines_agree(a, b),
+                "{file}: durer wrote `{a}`, POV-Ray `{b}`"
+            );
+        }
+        assert_eq!(ours.lines().count(), theirs.lines().count(), "{file}");
+    }
+}
+
+/// The names a standard include file's text declares with `#declare` or `#macro`, besides
+/// its include guard.
+fn library_names(text: &str) -> std::collections::BTreeSet<String> {
+    text.lines()
+        .map(str::trim_start)
+        .filter_map(|l| {
+            l.strip_prefix("#declare")
+                .or_else(|| l.strip_prefix("#macro"))
+        })
+        .filter_map(|rest| {
+            let name: String = rest
+                .trim_start()
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            (!name.is_empty() && !name.to_ascii_uppercase().ends_with("_INC_TEMP")).then_some(name)
+        })
+        .collect()
+}
+
+/// The embedded libraries declare exactly the functions, macros and variables of POV-Ray's
+/// files of the same names.
+#[test]
+fn embedded_libraries_declare_povray_names() {
+    let Some(folder) = povray_include_folder() else {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    };
+    for (file, text) in EMBEDDED_LIBRARIES {
+        let bytes = std::fs::read(folder.join(file)).expect("POV-Ray's file");
+        let theirs = library_names(&String::from_utf8_lossy(&bytes));
+        let ours = library_names(text);
+        let missing: Vec<_> = theirs.difference(&ours).collect();
+        let extra: Vec<_> = ours.difference(&theirs).collect();
+        assert!(
+            missing.is_empty() && extra.is_empty(),
+            "{file}: missing {missing:?}, not in POV-Ray's {extra:?}"
+        );
+    }
+}
+
+/// arrays.inc's ARRAYS_WriteDF3 writes the density files POV-Ray writes: the three sizes as
+/// big-endian 16-bit numbers, then each value scaled to 8 or 16 bits, rounded, x fastest.
+#[test]
+fn embedded_arrays_write_povray_density_files() {
+    let dir = scratch("library-df3");
+    let scene = dir.join("df3.pov");
+    std::fs::write(
+        &scene,
+        "#include \"arrays.inc\"\n\
+         #declare Grid = array[2][3] {{0, 0.5, 1}, {0.25, 0.75, 0.1}}\n\
+         ARRAYS_WriteDF3(Grid, \"grid8.df3\", 8)\n\
+         ARRAYS_WriteDF3(Grid, \"grid16.df3\", 16)\n",
+    )
+    .expect("write scene");
+    evaluate_cleanly(&scene, false, "arrays.inc");
+    // The bytes povray 3.7 writes for the same scene.
+    let eight = [0, 2, 0, 3, 0, 1, 0x00, 0x40, 0x80, 0xbf, 0xff, 0x1a];
+    let sixteen = [
+        0, 2, 0, 3, 0, 1, 0x00, 0x00, 0x40, 0x00, 0x80, 0x00, 0xbf, 0xff, 0xff, 0xff, 0x19, 0x9a,
+    ];
+    assert_eq!(
+        std::fs::read(dir.join("grid8.df3")).expect("8-bit file"),
+        eight
+    );
+    assert_eq!(
+        std::fs::read(dir.join("grid16.df3")).expect("16-bit file"),
+        sixteen
+    );
 }
