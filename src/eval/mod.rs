@@ -123,6 +123,10 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("golds.inc", include_str!("stdlib/golds.inc")),
     ("metals.inc", include_str!("stdlib/metals.inc")),
     ("skies.inc", include_str!("stdlib/skies.inc")),
+    ("shapes.inc", include_str!("stdlib/shapes.inc")),
+    ("shapes_old.inc", include_str!("stdlib/shapes_old.inc")),
+    ("shapes2.inc", include_str!("stdlib/shapes2.inc")),
+    ("shapesq.inc", include_str!("stdlib/shapesq.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
