@@ -612,11 +612,11 @@ fn embedded_shape_queries_match_povray() {
 }
 
 /// The HF_ macros, which durer cannot run from POV-Ray's shapes.inc (they interleave
-/// `#write` with braces), render tests/includes/shapes_hf.pov like POV-Ray did, and the
+/// `#write` with braces), render tests/stdlib/shapes_hf.pov like POV-Ray did, and the
 /// meshes they write to files render like the ones they make directly.
 #[test]
 fn embedded_height_field_macros_render_like_povray() {
-    let path = crate::tests_folder().join("includes/shapes_hf.pov");
+    let path = crate::tests_folder().join("stdlib/shapes_hf.pov");
     let options = durer::eval::EvalOptions {
         search_installed_povray: false,
         ..Default::default()
