@@ -681,3 +681,53 @@ fn embedded_height_field_macros_render_like_povray() {
         );
     }
 }
+
+/// Bad arguments to shapes.inc's macros stop with an error that says what is wrong, and
+/// the error's trace leads back to the call in the scene.
+#[test]
+fn embedded_shape_macros_report_bad_arguments() {
+    let cases = [
+        (
+            "Circle_Text(\"timrom.ttf\", \"\", 0.4, 0, 0.1, 1.5, false, Align_Center, 90)",
+            "Circle_Text: the text is empty",
+        ),
+        (
+            "Round_Cone2_Union(<0, 0, 0>, 1, <0.1, 0, 0>, 0.3)",
+            "Round_Cone2: one sphere lies inside the other",
+        ),
+        (
+            "Connect_Spheres(<0, 0, 0>, 1, <0.1, 0, 0>, 0.3)",
+            "Connect_Spheres: one sphere lies inside the other",
+        ),
+        (
+            "HF_Square(function { x }, 0, 0, <5, 1>, 0, \"\", <-1, 0, -1>, <1, 1, 1>)",
+            "Res must be at least 2",
+        ),
+    ];
+    let dir = scratch("shape-macro-errors");
+    for (index, (call, message)) in cases.iter().enumerate() {
+        let path = dir.join(format!("bad{index}.pov"));
+        std::fs::write(
+            &path,
+            format!("#include \"shapes.inc\"\n\nobject {{ {call} }}\n"),
+        )
+        .expect("write scene");
+        let options = durer::eval::EvalOptions {
+            search_installed_povray: false,
+            ..Default::default()
+        };
+        let evaluated = evaluate_with(&path, options);
+        let error = evaluated
+            .diagnostics
+            .iter()
+            .find(|d| d.severity == Severity::Error)
+            .unwrap_or_else(|| panic!("{call}: expected an error"));
+        let text = durer::report::render_plain(error, &evaluated.sources);
+        assert!(error.message.contains(message), "{call}:\n{text}");
+        let call_site = error.trace.last().expect("a macro trace").span;
+        let (line, column) = evaluated
+            .sources
+            .line_column(call_site.file, call_site.start);
+        assert_eq!((line, column), (3, 10), "{call}:\n{text}");
+    }
+}
