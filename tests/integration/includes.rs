@@ -402,17 +402,17 @@ fn declared_shapes(text: &str) -> Vec<(String, bool)> {
         .collect()
 }
 
-/// The includes opening a scene that uses `file`: durer's embedded file alone, or POV-Ray's
-/// after its shapes.inc (which its shapes2.inc and shapesq.inc need, as scenes know).
+/// The lines opening a scene that uses `file`: `#version`, then durer's embedded file alone,
+/// or POV-Ray's after its shapes.inc (which its shapes2.inc and shapesq.inc need, as scenes know).
 fn shape_includes(file: &str, installed: bool) -> String {
     if installed {
-        format!("#include \"shapes.inc\"\n#include \"{file}\"\n")
+        format!("#version 3.7;\n#include \"shapes.inc\"\n#include \"{file}\"\n")
     } else {
-        format!("#include \"{file}\"\n")
+        format!("#version 3.7;\n#include \"{file}\"\n")
     }
 }
 
-/// Evaluates and renders a small lit scene: `includes`, then `body`. Embedded include files
+/// Evaluates and renders a small lit scene: `includes` (with `#version` if any), then `body`. Embedded include files
 /// only unless `installed`.
 fn render_shape_scene(
     dir: &std::path::Path,
@@ -423,7 +423,7 @@ fn render_shape_scene(
 ) -> durer::render::Image {
     let path = dir.join(format!("{name}.pov"));
     let scene = format!(
-        "#version 3.7;\n{includes}\
+        "{includes}\
          camera {{ location <3, 4, -9> look_at <0, 0.3, 0> angle 40 }}\n\
          light_source {{ <-5, 8, -6>, rgb 1 }}\n\
          light_source {{ <6, 3, -3>, rgb 0.5 }}\n\
@@ -557,7 +557,7 @@ fn embedded_shape_macros_render_like_povray() {
             call.replace("FONT", &font)
         );
         let name = format!("call{index}");
-        let includes = "#include \"shapes.inc\"\n";
+        let includes = "#version 3.7;\n#include \"shapes.inc\"\n";
         let a = render_shape_scene(&ours, &name, includes, &body, false);
         let b = render_shape_scene(&theirs, &name, includes, &body, true);
         assert!(
@@ -657,7 +657,7 @@ fn embedded_height_field_macros_render_like_povray() {
         "HF_Torus(Ripple, 1, 0, 12, 1, FILE, 0.8, 0.2, 0.5)",
     ];
     for (index, call) in calls.iter().enumerate() {
-        let includes = format!("#include \"shapes.inc\"\n{ripple}");
+        let includes = format!("#version 3.7;\n#include \"shapes.inc\"\n{ripple}");
         let direct = format!(
             "object {{ {} pigment {{ rgb <1, 0.6, 0.3> }} }}",
             call.replace("FILE", "\"\"")
@@ -730,4 +730,36 @@ fn embedded_shape_macros_report_bad_arguments() {
             .line_column(call_site.file, call_site.start);
         assert_eq!((line, column), (3, 10), "{call}:\n{text}");
     }
+}
+
+/// Like POV-Ray's files, durer's read their declarations as version 3.5 and then restore the
+/// including file's version, which counts as the scene's `#version`: a scene without one
+/// renders the same with either file.
+#[test]
+fn embedded_shape_files_set_the_version_like_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    let includes = "#include \"shapes.inc\"\n#include \"shapes2.inc\"\n#include \"shapesq.inc\"\n";
+    let body =
+        "object { Round_Box_Union(<-1, 0, -1>, <1, 1, 1>, 0.2) pigment { rgb <1, 0.6, 0.3> } }";
+    let ours = render_shape_scene(
+        &scratch("unversioned-ours"),
+        "unversioned",
+        includes,
+        body,
+        false,
+    );
+    let theirs = render_shape_scene(
+        &scratch("unversioned-theirs"),
+        "unversioned",
+        includes,
+        body,
+        true,
+    );
+    assert!(
+        ours == theirs,
+        "a scene without #version renders differently"
+    );
 }
