@@ -123,6 +123,12 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("golds.inc", include_str!("stdlib/golds.inc")),
     ("metals.inc", include_str!("stdlib/metals.inc")),
     ("skies.inc", include_str!("stdlib/skies.inc")),
+    ("textures.inc", include_str!("stdlib/textures.inc")),
+    ("woodmaps.inc", include_str!("stdlib/woodmaps.inc")),
+    ("woods.inc", include_str!("stdlib/woods.inc")),
+    ("stones.inc", include_str!("stdlib/stones.inc")),
+    ("stones1.inc", include_str!("stdlib/stones1.inc")),
+    ("stones2.inc", include_str!("stdlib/stones2.inc")),
     ("shapes.inc", include_str!("stdlib/shapes.inc")),
     ("shapes_old.inc", include_str!("stdlib/shapes_old.inc")),
     ("shapes2.inc", include_str!("stdlib/shapes2.inc")),
@@ -356,8 +362,7 @@ impl Evaluator {
 
     /// Looks an identifier up, innermost scope first, following references.
     pub(crate) fn lookup(&self, name: &str) -> Option<&Value> {
-        let index = self.scopes.innermost_holder(name)?;
-        match self.scopes.get(index, name)? {
+        match self.scopes.innermost_binding(name)?.1 {
             Value::Reference { scope, name } => self.lookup_from(*scope, name),
             other => Some(other),
         }
@@ -367,8 +372,8 @@ impl Evaluator {
     pub(crate) fn lookup_from(&self, top: usize, name: &str) -> Option<&Value> {
         let (mut top, mut name) = (top, name);
         loop {
-            let index = self.scopes.holder_at_or_below(name, top)?;
-            match self.scopes.get(index, name)? {
+            let (index, value) = self.scopes.binding_at_or_below(name, top)?;
+            match value {
                 Value::Reference {
                     scope,
                     name: target,
@@ -407,12 +412,12 @@ impl Evaluator {
         let mut top = top;
         let mut name = name.clone();
         loop {
-            match self.scopes.holder_at_or_below(&name, top) {
-                Some(i) => match self.scopes.get(i, &name) {
-                    Some(Value::Reference {
+            match self.scopes.binding_at_or_below(&name, top) {
+                Some((i, value)) => match value {
+                    Value::Reference {
                         scope,
                         name: target,
-                    }) if *scope < i => {
+                    } if *scope < i => {
                         top = *scope;
                         name = target.clone();
                     }

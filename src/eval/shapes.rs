@@ -42,7 +42,10 @@ impl Evaluator {
             corners[index] = self.expect_vector(stream, "a corner")?;
             normals[index] = self.expect_vector(stream, "the corner's normal")?;
         }
-        Ok(Shape::SmoothTriangle { corners, normals })
+        Ok(Shape::SmoothTriangle {
+            corners: Box::new(corners),
+            normals: Box::new(normals),
+        })
     }
 
     /// `polygon { n, p1, .. pn }`: a sub-polygon closes when a point repeats its first point.
@@ -93,8 +96,8 @@ impl Evaluator {
             } else {
                 match self.eval_smooth_triangle(&mut body)? {
                     Shape::SmoothTriangle { corners, normals } => MeshTriangle {
-                        corners,
-                        normals: Some(normals),
+                        corners: *corners,
+                        normals: Some(*normals),
                     },
                     _ => continue,
                 }

@@ -134,15 +134,15 @@ pub enum Expr {
     /// `name(arguments)`: built-in function, macro or user function.
     Call(Rc<Call>),
     /// Unary operation.
-    Unary(UnaryOp, Box<Expr>, Span),
+    Unary(UnaryOp, Rc<Expr>, Span),
     /// Binary operation.
-    Binary(BinaryOp, Box<Expr>, Box<Expr>, Span),
+    Binary(BinaryOp, Rc<Expr>, Rc<Expr>, Span),
     /// `c ? a : b`.
-    Conditional(Box<(Expr, Expr, Expr)>, Span),
+    Conditional(Rc<(Expr, Expr, Expr)>, Span),
     /// `value.x`, `value.red`...
-    Member(Box<Expr>, Name, Span),
+    Member(Rc<Expr>, Name, Span),
     /// `array[index]`.
-    Index(Box<Expr>, Box<Expr>, Span),
+    Index(Rc<Expr>, Rc<Expr>, Span),
     /// `color rgb <..> filter 0.5`...
     Colour(Rc<ColourLiteral>),
     /// `array[n] { ... }`.

@@ -162,6 +162,23 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         include_str!("../../src/eval/stdlib/metals.inc"),
     ),
     ("skies.inc", include_str!("../../src/eval/stdlib/skies.inc")),
+    (
+        "textures.inc",
+        include_str!("../../src/eval/stdlib/textures.inc"),
+    ),
+    (
+        "woodmaps.inc",
+        include_str!("../../src/eval/stdlib/woodmaps.inc"),
+    ),
+    ("woods.inc", include_str!("../../src/eval/stdlib/woods.inc")),
+    (
+        "stones1.inc",
+        include_str!("../../src/eval/stdlib/stones1.inc"),
+    ),
+    (
+        "stones2.inc",
+        include_str!("../../src/eval/stdlib/stones2.inc"),
+    ),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
@@ -175,6 +192,7 @@ const APPEARANCE_KINDS: &[&str] = &[
     "sky_sphere",
     "sphere",
     "union",
+    "color_map",
 ];
 
 /// (name, kind) for each identifier an embedded file declares; the kind is one of
@@ -290,6 +308,9 @@ fn showcase(name: &str, kind: &str) -> String {
         ),
         "material" => format!("{ball} material {{ {name} }} }}"),
         "sky_sphere" => format!("sky_sphere {{ {name} }} {ball} pigment {{ rgb 0.5 }} }}"),
+        "color_map" => {
+            format!("{ball} pigment {{ gradient y color_map {{ {name} }} scale 0.5 }} }}")
+        }
         _ => format!("object {{ {name} }}"),
     };
     format!(
@@ -363,6 +384,165 @@ fn embedded_appearances_render_like_povray() {
             assert!(a == b, "{file}: {name} renders differently from POV-Ray's");
         }
     }
+}
+
+/// Calls of the pattern macros of textures.inc, each with the turn that brings the
+/// macro's plane to face the camera.
+const TEXTURE_MACRO_CALLS: &[(&str, &str)] = &[
+    ("Tiles_Ptrn()", ""),
+    ("Tiles_Ptrn()", "scale <0.7, 0.4, 1> rotate 30*z"),
+    ("Hex_Tiles_Ptrn()", "rotate -90*x"),
+    ("Hex_Tiles_Ptrn()", "rotate -90*x scale 0.6"),
+    ("Star_Ptrn(1, 5, 2)", ""),
+    ("Star_Ptrn(1.4, 7, 3)", ""),
+    ("Star_Ptrn(1.5, 6, 1)", "rotate 10*z"),
+    ("Irregular_Bricks_Ptrn(0.1, 1, 0.5, 0.5)", "scale 0.5"),
+    ("Irregular_Bricks_Ptrn(0.05, 2, 0.8, 0.2)", "scale 0.4"),
+];
+
+/// What durer makes of a flat, self-lit panel coloured by the pattern `call`: its image,
+/// or the messages of its errors when durer cannot evaluate it.
+fn render_texture_macro(
+    call: &str,
+    turn: &str,
+    dir: &std::path::Path,
+    installed: bool,
+) -> Result<durer::render::Image, Vec<String>> {
+    let path = dir.join("macro.pov");
+    let scene = format!(
+        "#version 3.7;\n#include \"textures.inc\"\n\
+         camera {{ orthographic location <0, 0, -10> look_at 0 right 6*x up 4.5*y }}\n\
+         box {{ <-4, -3, 0>, <4, 3, 1>\n\
+           pigment {{ {call} color_map {{ [0 rgb <0.2, 0.1, 0>] [0.5 rgb <0.9, 0.5, 0.2>] [1 rgb 1] }} {turn} }}\n\
+           finish {{ ambient 1 diffuse 0 }}\n\
+         }}\n"
+    );
+    std::fs::write(&path, scene).expect("write scene");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: installed,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(&path, options);
+    let errors: Vec<String> = evaluated
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Error)
+        .map(|d| d.message.clone())
+        .collect();
+    match evaluated.scene {
+        Some(mut scene) if errors.is_empty() => {
+            let world =
+                durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+            let options = durer::render::RenderOptions {
+                width: 40,
+                height: 30,
+                antialias: None,
+            };
+            Ok(durer::render::render(&scene, &world, &options, &|_| {}))
+        }
+        _ => Err(errors),
+    }
+}
+
+/// The pattern macros of durer's textures.inc give what POV-Ray's give: the same image, or
+/// (where durer lacks a feature a macro needs) the same errors.
+#[test]
+fn embedded_texture_macros_match_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    let ours_dir = scratch("texture-macros-ours");
+    let theirs_dir = scratch("texture-macros-theirs");
+    for (call, turn) in TEXTURE_MACRO_CALLS {
+        let ours = render_texture_macro(call, turn, &ours_dir, false);
+        let theirs = render_texture_macro(call, turn, &theirs_dir, true);
+        match (&ours, &theirs) {
+            (Ok(a), Ok(b)) => assert!(a == b, "{call} renders differently from POV-Ray's"),
+            (Err(a), Err(b)) => assert_eq!(a, b, "{call} fails differently from POV-Ray's"),
+            _ => panic!(
+                "{call}: embedded gives {:?}, POV-Ray's {:?}",
+                ours.as_ref().err(),
+                theirs.as_ref().err()
+            ),
+        }
+    }
+}
+
+/// Like POV-Ray's, durer's textures.inc, woods.inc and woodmaps.inc read their
+/// declarations as version 3.5 and then set the including file's version again, which
+/// counts as the scene declaring one (gamma handling depends on that): a scene without
+/// `#version` renders the same with either file.
+#[test]
+fn embedded_texture_files_set_the_version_like_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    for file in ["textures.inc", "woods.inc", "woodmaps.inc"] {
+        let render = |installed: bool| {
+            let dir = scratch(&format!("version-{file}-{installed}"));
+            let path = dir.join("scene.pov");
+            let scene = format!(
+                "#include \"{file}\"\n\
+                 camera {{ location <0, 0, -3> look_at 0 }}\n\
+                 light_source {{ <2, 4, -5>, rgb 1 }}\n\
+                 sphere {{ 0, 1 pigment {{ rgb <0.5, 0.3, 0.2> }} }}\n"
+            );
+            std::fs::write(&path, scene).expect("write scene");
+            let options = durer::eval::EvalOptions {
+                search_installed_povray: installed,
+                ..Default::default()
+            };
+            let mut scene = evaluate_with(&path, options)
+                .scene
+                .unwrap_or_else(|| panic!("{file}: the scene does not evaluate"));
+            let world =
+                durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+            let options = durer::render::RenderOptions {
+                width: 16,
+                height: 12,
+                antialias: None,
+            };
+            durer::render::render(&scene, &world, &options, &|_| {})
+        };
+        assert!(
+            render(false) == render(true),
+            "{file}: a scene without #version renders differently"
+        );
+    }
+}
+
+/// durer's stones.inc only includes its two halves: without POV-Ray's files, the textures of
+/// both (first and last of each family) are declared after including it.
+#[test]
+fn embedded_stones_inc_loads_both_halves() {
+    let dir = scratch("embedded-stones");
+    let names = [
+        "T_Grnt0",
+        "T_Grnt29",
+        "T_Grnt0a",
+        "T_Grnt24a",
+        "T_Crack1",
+        "T_Crack4",
+        "T_Stone1",
+        "T_Stone24",
+        "T_Stone25",
+        "T_Stone44",
+        "g4",
+    ];
+    let mut scene = String::from("#include \"stones.inc\"\n#fopen Out \"found.txt\" write\n");
+    for name in names {
+        scene.push_str(&format!(
+            "#ifdef ({name}) #write (Out, \"{name}\\n\") #end\n"
+        ));
+    }
+    scene.push_str("#fclose Out\n");
+    let path = dir.join("stones.pov");
+    std::fs::write(&path, scene).expect("write scene");
+    evaluate_cleanly(&path, false, "stones.inc");
+    let found = std::fs::read_to_string(dir.join("found.txt")).expect("names written");
+    assert_eq!(found.lines().collect::<Vec<_>>(), names);
 }
 
 /// durer's embedded shape files, with their text. They have their own tests: POV-Ray's
