@@ -135,6 +135,10 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("strings.inc", include_str!("stdlib/strings.inc")),
     ("rand.inc", include_str!("stdlib/rand.inc")),
     ("arrays.inc", include_str!("stdlib/arrays.inc")),
+    ("shapes.inc", include_str!("stdlib/shapes.inc")),
+    ("shapes_old.inc", include_str!("stdlib/shapes_old.inc")),
+    ("shapes2.inc", include_str!("stdlib/shapes2.inc")),
+    ("shapesq.inc", include_str!("stdlib/shapesq.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
