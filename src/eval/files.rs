@@ -181,7 +181,8 @@ impl Evaluator {
                         .iter()
                         .map(|c| format_number(*c))
                         .collect();
-                    bytes.extend_from_slice(format!("<{}>", parts.join(",")).as_bytes());
+                    // POV-Ray follows a written vector with a space.
+                    bytes.extend_from_slice(format!("<{}> ", parts.join(",")).as_bytes());
                 }
                 Value::Colour(c) => {
                     let parts: Vec<String> =
@@ -313,14 +314,37 @@ fn next_datum(text: &str, position: &mut usize) -> Result<Option<Value>, String>
     Ok(Some(Value::Float(value)))
 }
 
-/// Floats as POV-Ray writes them: up to six significant decimals, no trailing zeros.
+/// Floats as POV-Ray writes them: C's `%g`, six significant digits without trailing zeros,
+/// switching to an exponent below 1e-4 and from 1e6 on (`1e-05`, `1.23457e+06`).
 fn format_number(value: f64) -> String {
-    let text = format!("{value:.6}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".to_string()
+    const DIGITS: i32 = 6;
+    if !value.is_finite() {
+        return match (value.is_nan(), value < 0.0) {
+            (true, _) => "nan".into(),
+            (false, true) => "-inf".into(),
+            (false, false) => "inf".into(),
+        };
+    }
+    if value == 0.0 {
+        return if value.is_sign_negative() { "-0" } else { "0" }.into();
+    }
+    // The exponent after rounding to six digits decides the form, as in C.
+    let scientific = format!("{:.*e}", (DIGITS - 1) as usize, value);
+    let (mantissa, exponent) = scientific.split_once('e').unwrap_or((&scientific, "0"));
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    let trim = |text: &str| -> String {
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            text.to_string()
+        }
+    };
+    if (-4..DIGITS).contains(&exponent) {
+        let decimals = (DIGITS - 1 - exponent) as usize;
+        trim(&format!("{value:.decimals$}"))
     } else {
-        text.to_string()
+        let sign = if exponent < 0 { '-' } else { '+' };
+        format!("{}e{sign}{:02}", trim(mantissa), exponent.abs())
     }
 }
 
@@ -347,4 +371,33 @@ fn normalise(path: &Path) -> PathBuf {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::format_number;
+
+    /// What povray 3.7 writes for these floats with `#write`.
+    #[test]
+    fn numbers_are_written_like_povray() {
+        let cases = [
+            (0.000123456789, "0.000123457"),
+            (123456.789, "123457"),
+            (1e10, "1e+10"),
+            (1.5, "1.5"),
+            (0.0, "0"),
+            (-0.0, "-0"),
+            (-2.25e-7, "-2.25e-07"),
+            (1.0 / 3.0, "0.333333"),
+            (1e-5, "1e-05"),
+            (999999.5, "1e+06"),
+            (1234567.0, "1.23457e+06"),
+            (0.1 + 0.2, "0.3"),
+            (-1e300, "-1e+300"),
+            (100.0, "100"),
+        ];
+        for (value, written) in cases {
+            assert_eq!(format_number(value), written, "{value}");
+        }
+    }
 }
