@@ -54,18 +54,24 @@ impl Bvh {
     /// Large ranges build their two halves in parallel; the result is the same whatever the
     /// number of threads.
     pub fn build(bounds: &[Aabb]) -> (Bvh, Vec<u32>) {
-        let centroids: Vec<DVec3> = bounds.iter().map(Aabb::centre).collect();
-        let builder = Builder {
-            bounds,
-            centroids: &centroids,
-        };
-        let mut order: Vec<u32> = (0..bounds.len() as u32).collect();
+        // The builder reorders these records in place, so every pass over a range reads
+        // memory in sequence instead of gathering boxes through an index.
+        let mut records: Vec<Record> = bounds
+            .iter()
+            .enumerate()
+            .map(|(index, bounds)| Record {
+                bounds: *bounds,
+                centroid: bounds.centre(),
+                index: index as u32,
+            })
+            .collect();
         // Leaves hold a few primitives each, so a tree has about as many nodes as primitives.
         let mut nodes = Vec::with_capacity(bounds.len().max(1));
-        if !bounds.is_empty() {
-            builder.build_node(&mut order, 0, 0, &mut nodes);
+        if !records.is_empty() {
+            build_node(&mut records, 0, 0, &mut nodes);
         }
         nodes.shrink_to_fit();
+        let order = records.iter().map(|record| record.index).collect();
         (Bvh { nodes }, order)
     }
 
@@ -240,9 +246,12 @@ impl Bvh {
 }
 
 /// What every part of one build shares (read only, so subtrees can be built in parallel).
-struct Builder<'a> {
-    bounds: &'a [Aabb],
-    centroids: &'a [DVec3],
+/// A primitive as the builder sorts it: its box, the box's centre and its caller's index.
+#[derive(Clone, Copy)]
+struct Record {
+    bounds: Aabb,
+    centroid: DVec3,
+    index: u32,
 }
 
 /// Ranges at least this large build their two halves on parallel threads.
@@ -255,142 +264,127 @@ struct Bin {
     count: usize,
 }
 
-impl Builder<'_> {
-    /// Builds the subtree over `order` (the primitives at positions `offset ..` of the whole
-    /// order), appending its nodes to `nodes`; returns the subtree's root index.
-    fn build_node(
-        &self,
-        order: &mut [u32],
-        offset: usize,
-        depth: usize,
-        nodes: &mut Vec<Node>,
-    ) -> usize {
-        let node_index = nodes.len();
-        let mut bounds = Aabb::EMPTY;
-        let mut centroid_bounds = Aabb::EMPTY;
-        for &primitive in order.iter() {
-            bounds = bounds.union(&self.bounds[primitive as usize]);
-            centroid_bounds = centroid_bounds.grown_to(self.centroids[primitive as usize]);
-        }
-        let count = order.len();
-        nodes.push(Node {
-            bounds,
-            first: offset as u32,
-            count: count as u32,
-        });
-        if count <= SMALL_LEAF || depth >= MAX_DEPTH {
-            return node_index;
-        }
-        let Some(middle) = self.choose_split(order, &bounds, &centroid_bounds) else {
-            return node_index;
-        };
-        let (left, right) = order.split_at_mut(middle);
-        let right_index = if count >= PARALLEL_RANGE {
-            let build = |part: &mut [u32], part_offset: usize| {
-                let mut part_nodes = Vec::with_capacity(part.len());
-                self.build_node(part, part_offset, depth + 1, &mut part_nodes);
-                part_nodes
-            };
-            let (left_nodes, right_nodes) =
-                rayon::join(|| build(left, offset), || build(right, offset + middle));
-            append_subtree(nodes, left_nodes);
-            let right_index = nodes.len();
-            append_subtree(nodes, right_nodes);
-            right_index
-        } else {
-            self.build_node(left, offset, depth + 1, nodes);
-            self.build_node(right, offset + middle, depth + 1, nodes)
-        };
-        nodes[node_index].first = right_index as u32;
-        nodes[node_index].count = 0;
-        node_index
+/// Builds the subtree over `records` (at `offset` in the final order), appending its nodes
+/// to `nodes`; returns the index of its root.
+fn build_node(records: &mut [Record], offset: usize, depth: usize, nodes: &mut Vec<Node>) -> usize {
+    let node_index = nodes.len();
+    let mut bounds = Aabb::EMPTY;
+    let mut centroid_bounds = Aabb::EMPTY;
+    for record in records.iter() {
+        bounds = bounds.union(&record.bounds);
+        centroid_bounds = centroid_bounds.grown_to(record.centroid);
     }
+    let count = records.len();
+    nodes.push(Node {
+        bounds,
+        first: offset as u32,
+        count: count as u32,
+    });
+    if count <= SMALL_LEAF || depth >= MAX_DEPTH {
+        return node_index;
+    }
+    let Some(middle) = choose_split(records, &bounds, &centroid_bounds) else {
+        return node_index;
+    };
+    let (left, right) = records.split_at_mut(middle);
+    let right_index = if count >= PARALLEL_RANGE {
+        let build = |part: &mut [Record], part_offset: usize| {
+            let mut part_nodes = Vec::with_capacity(part.len());
+            build_node(part, part_offset, depth + 1, &mut part_nodes);
+            part_nodes
+        };
+        let (left_nodes, right_nodes) =
+            rayon::join(|| build(left, offset), || build(right, offset + middle));
+        append_subtree(nodes, left_nodes);
+        let right_index = nodes.len();
+        append_subtree(nodes, right_nodes);
+        right_index
+    } else {
+        build_node(left, offset, depth + 1, nodes);
+        build_node(right, offset + middle, depth + 1, nodes)
+    };
+    nodes[node_index].first = right_index as u32;
+    nodes[node_index].count = 0;
+    node_index
+}
 
-    /// Reorders `order` for the best split and returns the split position within it, or
-    /// `None` when a leaf is better.
-    fn choose_split(
-        &self,
-        order: &mut [u32],
-        bounds: &Aabb,
-        centroid_bounds: &Aabb,
-    ) -> Option<usize> {
-        let count = order.len();
-        let extent = centroid_bounds.extent();
-        let axis = if extent.x >= extent.y && extent.x >= extent.z {
-            0
-        } else if extent.y >= extent.z {
-            1
-        } else {
-            2
-        };
-        let axis_min = centroid_bounds.min[axis];
-        let axis_extent = extent[axis];
-        if !(axis_extent > 0.0 && axis_extent.is_finite()) {
-            // Every centroid coincides: bins cannot separate them, so halve large ranges.
-            return (count > LARGE_LEAF).then_some(count / 2);
-        }
-        let scale = BIN_COUNT as f64 / axis_extent;
-        let bin_of = |centroid: DVec3| -> usize {
-            // NaN converts to 0 and overflow saturates, so the index always stays in range.
-            (((centroid[axis] - axis_min) * scale) as usize).min(BIN_COUNT - 1)
-        };
-        let mut bins = [Bin {
-            bounds: Aabb::EMPTY,
-            count: 0,
-        }; BIN_COUNT];
-        for &primitive in order.iter() {
-            let bin = &mut bins[bin_of(self.centroids[primitive as usize])];
-            bin.bounds = bin.bounds.union(&self.bounds[primitive as usize]);
-            bin.count += 1;
-        }
-        // Sweep from the right to get the cost of every right-hand side.
-        let mut right_area = [0.0; BIN_COUNT];
-        let mut right_count = [0usize; BIN_COUNT];
-        let mut accumulated = Aabb::EMPTY;
-        let mut accumulated_count = 0;
-        for split in (1..BIN_COUNT).rev() {
-            accumulated = accumulated.union(&bins[split].bounds);
-            accumulated_count += bins[split].count;
-            right_area[split] = accumulated.surface_area();
-            right_count[split] = accumulated_count;
-        }
-        let mut best_split = 0;
-        let mut best_cost = f64::INFINITY;
-        let mut left = Aabb::EMPTY;
-        let mut left_count = 0;
-        for split in 1..BIN_COUNT {
-            left = left.union(&bins[split - 1].bounds);
-            left_count += bins[split - 1].count;
-            if left_count == 0 || right_count[split] == 0 {
-                continue;
-            }
-            let cost = left.surface_area() * left_count as f64
-                + right_area[split] * right_count[split] as f64;
-            if cost < best_cost {
-                best_cost = cost;
-                best_split = split;
-            }
-        }
-        let area = bounds.surface_area();
-        let leaf_cost = area * count as f64;
-        let split_cost = TRAVERSAL_COST * area + best_cost;
-        if best_split == 0 || (count <= LARGE_LEAF && leaf_cost <= split_cost) {
-            return (count > LARGE_LEAF).then_some(count / 2);
-        }
-        let centroids = self.centroids;
-        let range = order;
-        let mut boundary = 0;
-        for index in 0..range.len() {
-            if bin_of(centroids[range[index] as usize]) < best_split {
-                range.swap(index, boundary);
-                boundary += 1;
-            }
-        }
-        if boundary == 0 || boundary == count {
-            return Some(count / 2);
-        }
-        Some(boundary)
+/// Reorders `records` for the best split and returns the split position within them, or
+/// `None` when a leaf is better.
+fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Aabb) -> Option<usize> {
+    let count = records.len();
+    let extent = centroid_bounds.extent();
+    let axis = if extent.x >= extent.y && extent.x >= extent.z {
+        0
+    } else if extent.y >= extent.z {
+        1
+    } else {
+        2
+    };
+    let axis_min = centroid_bounds.min[axis];
+    let axis_extent = extent[axis];
+    if !(axis_extent > 0.0 && axis_extent.is_finite()) {
+        // Every centroid coincides: bins cannot separate them, so halve large ranges.
+        return (count > LARGE_LEAF).then_some(count / 2);
     }
+    let scale = BIN_COUNT as f64 / axis_extent;
+    let bin_of = |centroid: DVec3| -> usize {
+        // NaN converts to 0 and overflow saturates, so the index always stays in range.
+        (((centroid[axis] - axis_min) * scale) as usize).min(BIN_COUNT - 1)
+    };
+    let mut bins = [Bin {
+        bounds: Aabb::EMPTY,
+        count: 0,
+    }; BIN_COUNT];
+    for record in records.iter() {
+        let bin = &mut bins[bin_of(record.centroid)];
+        bin.bounds = bin.bounds.union(&record.bounds);
+        bin.count += 1;
+    }
+    // Sweep from the right to get the cost of every right-hand side.
+    let mut right_area = [0.0; BIN_COUNT];
+    let mut right_count = [0usize; BIN_COUNT];
+    let mut accumulated = Aabb::EMPTY;
+    let mut accumulated_count = 0;
+    for split in (1..BIN_COUNT).rev() {
+        accumulated = accumulated.union(&bins[split].bounds);
+        accumulated_count += bins[split].count;
+        right_area[split] = accumulated.surface_area();
+        right_count[split] = accumulated_count;
+    }
+    let mut best_split = 0;
+    let mut best_cost = f64::INFINITY;
+    let mut left = Aabb::EMPTY;
+    let mut left_count = 0;
+    for split in 1..BIN_COUNT {
+        left = left.union(&bins[split - 1].bounds);
+        left_count += bins[split - 1].count;
+        if left_count == 0 || right_count[split] == 0 {
+            continue;
+        }
+        let cost =
+            left.surface_area() * left_count as f64 + right_area[split] * right_count[split] as f64;
+        if cost < best_cost {
+            best_cost = cost;
+            best_split = split;
+        }
+    }
+    let area = bounds.surface_area();
+    let leaf_cost = area * count as f64;
+    let split_cost = TRAVERSAL_COST * area + best_cost;
+    if best_split == 0 || (count <= LARGE_LEAF && leaf_cost <= split_cost) {
+        return (count > LARGE_LEAF).then_some(count / 2);
+    }
+    let mut boundary = 0;
+    for index in 0..count {
+        if bin_of(records[index].centroid) < best_split {
+            records.swap(index, boundary);
+            boundary += 1;
+        }
+    }
+    if boundary == 0 || boundary == count {
+        return Some(count / 2);
+    }
+    Some(boundary)
 }
 
 /// Appends a subtree built on its own (node indices counted from 0) to `nodes`, moving its
