@@ -140,7 +140,7 @@ impl Evaluator {
             }
             Expr::Colour(literal) => self.eval_colour_literal(literal),
             Expr::Array(literal) => self.eval_array(literal),
-            Expr::Function(function) => Ok(self.function_value(function)),
+            Expr::Function(function) => self.function_value(function),
             Expr::Directive(directive) => self.directive_value(directive),
         }
     }

@@ -416,3 +416,65 @@ fn material_map_without_textures_is_an_error() {
         &["lists no textures", "expected `texture { .. }` entries"],
     );
 }
+
+#[test]
+fn pigment_function_member_must_exist() {
+    check(
+        "pigment_function_wrong_member",
+        2,
+        25,
+        &[
+            "`P` returns a colour, which has no member `.w`",
+            ".gray .hf",
+        ],
+    );
+}
+
+#[test]
+fn pigment_function_inside_a_function_needs_a_member() {
+    check(
+        "pigment_function_without_member",
+        2,
+        29,
+        &[
+            "`P` returns a colour; pick one of its components",
+            "add a member, e.g. `P(..).red`",
+        ],
+    );
+}
+
+#[test]
+fn pattern_function_has_no_members() {
+    check(
+        "pattern_function_member",
+        2,
+        25,
+        &["`Q` returns a float, which has no member `.red`"],
+    );
+}
+
+#[test]
+fn transform_function_called_with_wrong_arity() {
+    check(
+        "transform_function_arity",
+        2,
+        25,
+        &[
+            "function `T` takes 3 arguments, found 2",
+            "the function is declared here",
+        ],
+    );
+}
+
+#[test]
+fn spline_called_inside_a_function_is_refused() {
+    check(
+        "spline_called_in_function",
+        2,
+        25,
+        &[
+            "the spline `S` cannot be called inside a function",
+            "function { spline { S } }",
+        ],
+    );
+}

@@ -53,12 +53,33 @@ impl Evaluator {
         function.compiled(self)
     }
 
-    /// The value of a function literal: compiled here, where its identifiers are bound.
-    pub(crate) fn function_value(&mut self, literal: &Rc<FunctionLiteral>) -> Value {
-        Value::Function(Rc::new(UserFunction {
+    /// The value of a function literal: compiled here, where its identifiers are bound (as
+    /// POV-Ray does), with its mistakes reported here. Only an `internal(N)` function durer
+    /// lacks is kept, to be refused where it is called (functions.inc declares them all).
+    pub(crate) fn function_value(&mut self, literal: &Rc<FunctionLiteral>) -> EvalResult<Value> {
+        let compiled = self.compile_literal(literal);
+        let is_internal = matches!(&literal.body, FunctionBody::Expr(Expr::Call(call)) if &*call.name == "internal");
+        Ok(Value::Function(Rc::new(UserFunction {
             literal: literal.clone(),
-            compiled: self.compile_literal(literal),
-        }))
+            compiled: if is_internal { compiled } else { Ok(compiled?) },
+        })))
+    }
+
+    /// A user function's compiled form for a call; a function that could not be compiled is
+    /// reported at the call.
+    fn compiled_for_call(
+        &mut self,
+        function: &Rc<UserFunction>,
+        call: &Call,
+    ) -> EvalResult<Arc<Function>> {
+        function.compiled.clone().map_err(|error| {
+            let mut diagnostic = self
+                .error(call.span, format!("`{}`: {}", call.name, error.message))
+                .with_label("called here")
+                .with_secondary(error.span, "defined here");
+            diagnostic.help = error.help.clone();
+            Box::new(diagnostic)
+        })
     }
 
     fn compile_literal(&mut self, function: &Rc<FunctionLiteral>) -> EvalResult<Arc<Function>> {
@@ -263,11 +284,7 @@ impl Evaluator {
             return Ok(Node::Call(callee, arguments.into_boxed_slice()));
         }
         if let Some(Value::Spline(_)) = self.lookup(name) {
-            return Err(self
-                .error(call.name_span, format!("the spline `{name}` cannot be called inside a function"))
-                .with_label("POV-Ray refuses splines here")
-                .with_help(format!("make it a function: `#declare F = function {{ spline {{ {name} }} }}`, then call `F(t).x`"))
-                .into());
+            return Err(self.spline_call_error(call));
         }
         if matches!(name, "sum" | "prod") {
             return self.compile_series(call, names);
@@ -335,7 +352,7 @@ impl Evaluator {
             return Ok(None);
         };
         let callee = callee.clone();
-        let compiled = self.compile_function(&callee)?;
+        let compiled = self.compiled_for_call(&callee, call)?;
         if call.arguments.len() != compiled.arity() {
             return Err(self
                 .error(
@@ -377,6 +394,9 @@ impl Evaluator {
                 .into());
         };
         let Some(callee) = self.called_function(call)? else {
+            if let Some(Value::Spline(_)) = self.lookup(&call.name) {
+                return Err(self.spline_call_error(call));
+            }
             return Err(self
                 .error(
                     call.name_span,
@@ -391,7 +411,11 @@ impl Evaluator {
                     "`{}` returns a float, which has no member `.{member}`",
                     call.name
                 ),
-                output => format!("{} has no member `.{member}`", output_name(output)),
+                output => format!(
+                    "`{}` returns {}, which has no member `.{member}`",
+                    call.name,
+                    output_name(output)
+                ),
             };
             return Err(self
                 .error(span, message)
@@ -406,6 +430,21 @@ impl Evaluator {
             component,
             arguments.into_boxed_slice(),
         ))
+    }
+
+    /// POV-Ray does not call splines inside functions; a spline function does it.
+    fn spline_call_error(&self, call: &Call) -> Box<crate::diag::Diagnostic> {
+        let name = &call.name;
+        self.error(
+            call.name_span,
+            format!("the spline `{name}` cannot be called inside a function"),
+        )
+        .with_label("POV-Ray refuses splines here")
+        .with_help(format!(
+            "make it a function: `#declare F = function {{ spline {{ {name} }} }}`, then call \
+             `F(t).x`"
+        ))
+        .into()
     }
 
     /// `sum(i, from, to, body)` / `prod(..)`.
@@ -514,14 +553,7 @@ impl Evaluator {
         function: &Rc<UserFunction>,
         call: &Call,
     ) -> EvalResult<Value> {
-        let compiled = self.compile_function(function).map_err(|error| {
-            let mut diagnostic = self
-                .error(call.span, format!("`{}`: {}", call.name, error.message))
-                .with_label("called here")
-                .with_secondary(error.span, "defined here");
-            diagnostic.help = error.help.clone();
-            Box::new(diagnostic)
-        })?;
+        let compiled = self.compiled_for_call(function, call)?;
         if call.arguments.len() != compiled.arity() {
             return Err(self
                 .error(
