@@ -593,13 +593,9 @@ mod tests {
     use crate::eval::value::Value;
     use crate::eval::{EvalOptions, Evaluator};
 
-    /// Every operator and built-in a compiled function knows, evaluated by the scene language
-    /// at a few points (stored in `Values`) and by the compiled function.
-    const SCENE: &str = r#"
-#declare C = 0.25;
-#declare V = <0.5, 2, 3>;
-#declare G = function(a, b) { a * b - C * V.y }
-#declare F = function {
+    /// Every operator and built-in a compiled function knows, as a function body and as a
+    /// macro body the scene language evaluates with `x, y, z` bound to macro arguments.
+    const FORMULA: &str = "
   G(x, y) + sin(3 * z) * (x < y ? 2 : -1) + select(x - 0.1, 1, 2, 3) + select(y, 4, 5)
   + mod(z * 7, 2) + atan2(y, x) + pow(abs(x), 1.5) + max(x, y, z) + min(x, 2 * y)
   + ln(2 + x) + log(3 + y) + floor(x * 3) + ceil(y * 3) + int(z * 2.5) + degrees(x)
@@ -607,21 +603,34 @@ mod tests {
   + (x != y) + (x <= 0.3) + (y >= -0.2) + sqrt(abs(z)) + cos(x) * tan(y / 2) + -x / 3
   + asin(x / 2) + acos(y / 2) + atan(z) + sinh(x) + cosh(y) + tanh(z) + asinh(x)
   + acosh(2 + y) + atanh(z / 2)
-}
-#declare Points = array[5] { <0.3, -0.2, 0.7>, <-0.5, 0.5, -0.1>, <0, 0, 0>,
-  <0.9, 0.4, -0.8>, <0.1, 0.1, 0.3> }
+";
+
+    /// The compiled function `F` and the macro `Formula` over the same formula; `Values` holds
+    /// the scene language's values at `Points`.
+    fn scene() -> String {
+        format!(
+            r#"
+#declare C = 0.25;
+#declare V = <0.5, 2, 3>;
+#declare G = function(a, b) {{ a * b - C * V.y }}
+#declare F = function {{ {FORMULA} }}
+#macro Formula(x, y, z) ({FORMULA}) #end
+#declare Points = array[5] {{ <0.3, -0.2, 0.7>, <-0.5, 0.5, -0.1>, <0, 0, 0>,
+  <0.9, 0.4, -0.8>, <0.1, 0.1, 0.3> }}
 #declare Values = array[5];
 #for (I, 0, 4)
-  #declare Values[I] = F(Points[I].x, Points[I].y, Points[I].z);
+  #declare Values[I] = Formula(Points[I].x, Points[I].y, Points[I].z);
 #end
-"#;
+"#
+        )
+    }
 
     #[test]
     fn compiled_functions_equal_the_scene_languages_values() {
         let folder = std::env::temp_dir().join(format!("durer-function-vm-{}", std::process::id()));
         std::fs::create_dir_all(&folder).unwrap();
         let path = folder.join("functions.pov");
-        std::fs::write(&path, SCENE).unwrap();
+        std::fs::write(&path, scene()).unwrap();
         let mut evaluator = Evaluator::new(EvalOptions::default());
         let result = evaluator.run_main(&path);
         std::fs::remove_dir_all(&folder).ok();
