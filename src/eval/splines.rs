@@ -2,7 +2,8 @@
 //!
 //! In: a spline block's items (or a call's arguments). Out: a [`Spline`] value, or the point
 //! at a parameter. Holds: points are sorted by parameter, a repeated parameter replaces its
-//! point; values match what POV-Ray 3.7 prints for every kind, inside and outside the range.
+//! point (POV-Ray's exception: see [`Spline::insert`]); values match what POV-Ray 3.7 prints
+//! for every kind, inside and outside the range.
 
 use super::stream::Stream;
 use super::value::{Value, Vector};

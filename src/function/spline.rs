@@ -65,8 +65,13 @@ impl Spline {
         self.points.is_empty()
     }
 
-    /// Adds a point, replacing the one at the same parameter.
+    /// Adds a point, replacing the one at the same parameter, except that a point repeating
+    /// the last parameter of a spline of two or more points is dropped (POV-Ray 3.7's rule,
+    /// measured: `0, A 1, B 1, C` keeps B; `0, A 1, B 2, C 1, D` and `0, A 0, B` replace).
     pub fn insert(&mut self, t: f64, point: [f64; 5], components: u8) {
+        if self.points.len() >= 2 && self.points.last().is_some_and(|last| last.0 == t) {
+            return;
+        }
         self.curvatures = OnceLock::new();
         self.components = self.components.max(components);
         let at = self.points.partition_point(|(p, _)| *p < t);
@@ -207,4 +212,57 @@ fn natural_curvatures(points: &[(f64, [f64; 5])]) -> Vec<[f64; 5]> {
         }
     }
     curvature
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spline(points: &[(f64, f64)]) -> Spline {
+        let mut spline = Spline::new(SplineKind::Linear);
+        for &(t, value) in points {
+            spline.insert(t, [value, value, 0.0, 0.0, 0.0], 2);
+        }
+        spline
+    }
+
+    /// Values POV-Ray 3.7 prints for splines with a repeated parameter.
+    #[test]
+    fn repeated_parameters_follow_povray() {
+        let at = |s: &Spline, t: f64| s.evaluate(t, SplineKind::Linear)[0];
+        // Repeating the last parameter keeps the older point.
+        let kept = spline(&[(0.0, 0.0), (1.0, 1.0), (1.0, 5.0), (2.0, 2.0)]);
+        assert_eq!(
+            (at(&kept, 0.5), at(&kept, 1.0), at(&kept, 1.5)),
+            (0.5, 1.0, 1.5)
+        );
+        // Repeating an inner or the first parameter replaces the point.
+        let inner = spline(&[(0.0, 0.0), (1.0, 1.0), (2.0, 2.0), (1.0, 5.0)]);
+        assert_eq!(
+            (at(&inner, 0.5), at(&inner, 1.0), at(&inner, 1.5)),
+            (2.5, 5.0, 3.5)
+        );
+        let first = spline(&[(0.0, 0.0), (1.0, 1.0), (2.0, 2.0), (0.0, 9.0)]);
+        assert_eq!(at(&first, 0.0), 9.0);
+        // A single point is always replaced.
+        let single = spline(&[(0.0, 0.0), (0.0, 9.0), (0.0, 8.0)]);
+        assert_eq!(at(&single, 0.0), 8.0);
+    }
+
+    #[test]
+    fn natural_spline_curvatures_are_computed_once_and_reset_by_insert() {
+        let mut natural = Spline::new(SplineKind::Natural);
+        for (t, value) in [(0.0, 0.0), (1.0, 2.0), (2.0, 4.0), (3.0, 1.0)] {
+            natural.insert(t, [value; 5], 3);
+        }
+        let before = natural.evaluate(1.5, SplineKind::Natural);
+        natural.insert(4.0, [0.0; 5], 3);
+        let after = natural.evaluate(1.5, SplineKind::Natural);
+        assert_ne!(before, after);
+        let mut fresh = Spline::new(SplineKind::Natural);
+        for (t, value) in [(0.0, 0.0), (1.0, 2.0), (2.0, 4.0), (3.0, 1.0), (4.0, 0.0)] {
+            fresh.insert(t, [value; 5], 3);
+        }
+        assert_eq!(after, fresh.evaluate(1.5, SplineKind::Natural));
+    }
 }
