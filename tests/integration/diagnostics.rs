@@ -478,3 +478,16 @@ fn spline_called_inside_a_function_is_refused() {
         ],
     );
 }
+
+#[test]
+fn pattern_written_after_a_modifier_is_refused() {
+    check(
+        "pattern_after_modifier",
+        2,
+        21,
+        &[
+            "the pattern `checker` must come first in its block",
+            "this comes before it",
+        ],
+    );
+}
