@@ -38,20 +38,20 @@ pub struct Function {
 impl Function {
     /// A float function of `arity` parameters computing `root`.
     pub fn new(root: Node, arity: usize) -> Function {
+        let body = Body::Expression(root);
         Function {
-            call_depth: root.call_depth(),
-            body: Body::Expression(root),
+            call_depth: body.call_depth(),
+            body,
             arity,
         }
     }
 
     /// A pattern, pigment, transformation or spline function; its arity is the body's.
     pub fn with_body(body: Body) -> Function {
-        let arity = body.arity();
         Function {
+            arity: body.arity(),
+            call_depth: body.call_depth(),
             body,
-            arity,
-            call_depth: 0,
         }
     }
 
@@ -272,7 +272,7 @@ pub enum Node {
 
 impl Node {
     /// Longest chain of calls of other functions below this node.
-    fn call_depth(&self) -> usize {
+    pub(crate) fn call_depth(&self) -> usize {
         match self {
             Node::Constant(_) | Node::Parameter(_) => 0,
             Node::Unary(_, a) => a.call_depth(),
@@ -281,7 +281,7 @@ impl Node {
             Node::Select(parts) => max_depth(&parts[..]),
             Node::Series { parts, .. } => max_depth(&parts[..]),
             Node::Call(function, arguments) | Node::Member(function, _, arguments) => {
-                (function.call_depth + 1).max(max_depth(arguments))
+                (function.call_depth() + 1).max(max_depth(arguments))
             }
             Node::Internal(_, arguments) => max_depth(arguments),
         }

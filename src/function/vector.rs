@@ -20,7 +20,8 @@
 
 use super::spline::Spline;
 use super::Node;
-use crate::scene::{Pattern, Pigment, Transform};
+use crate::pattern::PatternKind;
+use crate::scene::{Pattern, Pigment, PigmentMap, Transform};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -67,6 +68,17 @@ impl Body {
         }
     }
 
+    /// Longest chain of nested function evaluations below the body: function patterns
+    /// inside a pattern or pigment count, with the calls they make.
+    pub fn call_depth(&self) -> usize {
+        match self {
+            Body::Expression(root) => root.call_depth(),
+            Body::Pattern { pattern, .. } => pattern_depth(pattern),
+            Body::Pigment(pigment) => pigment_depth(pigment),
+            Body::Transform(_) | Body::Spline(_) => 0,
+        }
+    }
+
     /// What a call returns.
     pub fn output(&self) -> Output {
         match self {
@@ -104,6 +116,34 @@ impl Body {
             }
             Body::Spline(spline) => spline.evaluate(parameter(0), spline.kind),
         }
+    }
+}
+
+/// Longest chain of function evaluations a pattern makes (a function pattern: one more than
+/// its function's).
+fn pattern_depth(pattern: &Pattern) -> usize {
+    match &pattern.kind {
+        PatternKind::Function(function) => function.call_depth() + 1,
+        _ => 0,
+    }
+}
+
+/// Longest chain of function evaluations a pigment makes, through its maps and entries.
+fn pigment_depth(pigment: &Pigment) -> usize {
+    let deepest = |pigments: &mut dyn Iterator<Item = &Pigment>| {
+        pigments.map(pigment_depth).max().unwrap_or(0)
+    };
+    match pigment {
+        Pigment::Pattern { pattern, map, .. } => {
+            let in_map = match map {
+                PigmentMap::Blocks(blocks) => deepest(&mut blocks.iter()),
+                PigmentMap::Pigments(entries) => deepest(&mut entries.iter().map(|entry| &entry.1)),
+                PigmentMap::Colours(_) => 0,
+            };
+            pattern_depth(pattern).max(in_map)
+        }
+        Pigment::Average(entries) => deepest(&mut entries.iter().map(|entry| &entry.1)),
+        _ => 0,
     }
 }
 

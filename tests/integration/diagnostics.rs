@@ -491,3 +491,16 @@ fn pattern_written_after_a_modifier_is_refused() {
         ],
     );
 }
+
+#[test]
+fn pigment_functions_nested_too_deeply_are_refused() {
+    check(
+        "functions_nested_too_deeply",
+        3,
+        48,
+        &[
+            "functions call each other too deeply",
+            "more than 64 nested calls",
+        ],
+    );
+}
