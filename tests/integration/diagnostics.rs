@@ -504,3 +504,16 @@ fn pigment_functions_nested_too_deeply_are_refused() {
         ],
     );
 }
+
+#[test]
+fn spline_identifier_as_a_function_body_is_refused() {
+    check(
+        "spline_identifier_as_function",
+        2,
+        25,
+        &[
+            "a function cannot be the spline `S` itself",
+            "write `function { spline { S } }`",
+        ],
+    );
+}

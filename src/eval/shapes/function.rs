@@ -111,6 +111,18 @@ impl Evaluator {
                 )
                 .into());
         }
+        if let Expr::Ident(name, span) = body {
+            if let Some(Value::Spline(_)) = self.lookup(name) {
+                return Err(self
+                    .error(
+                        *span,
+                        format!("a function cannot be the spline `{name}` itself"),
+                    )
+                    .with_label("POV-Ray refuses a spline identifier here")
+                    .with_help(format!("write `function {{ spline {{ {name} }} }}`"))
+                    .into());
+            }
+        }
         let arity = parameters.len();
         let mut names = parameters;
         let root = self.compile_expr(body, &mut names)?;
