@@ -50,3 +50,18 @@ Check((D(3, 1, 0) = 20), "a function passed to a macro")
 #declare KF = function { x + K }
 #declare K = 2;
 Check((KF(1, 0, 0) = 2), "a constant bound where the function is declared")
+
+// A transform function made inside a macro from a transform parameter (transforms.inc's
+// vtransform and vinv_transform work this way).
+#macro Moved(Point, Trans)
+  #local Fn = function { transform { Trans } }
+  (Fn(Point.x, Point.y, Point.z))
+#end
+#macro MovedBack(Point, Trans)
+  #local Fn = function { transform { Trans inverse } }
+  (Fn(Point.x, Point.y, Point.z))
+#end
+#declare Placement = transform { rotate <10,20,30> scale <1,2,3> translate 1 }
+#declare V = Moved(<1,2,3>, Placement);
+Check((vlength(V - <2.067425379,5.578118965,9.281744243>) < 1e-8), "a transform function made in a macro")
+Check((vlength(MovedBack(V, Placement) - <1,2,3>) < 1e-12), "its inverse")
