@@ -1,12 +1,14 @@
-//! Compiling user functions (`function { .. }`, `function(a, b) { .. }`) into the render-time
-//! form of [`crate::function`].
+//! Compiling user functions (`function { .. }`, `function(a, b) { .. }`, and the pattern,
+//! pigment, transform and spline functions) into the render-time form of [`crate::function`],
+//! and calling them from scene code.
 //!
 //! In: a function literal and the evaluator's current declarations. Out: an
 //! `Arc<Function>`, or a spanned diagnostic for what a function body may not contain.
-//! Holds: sub-expressions that do not read the parameters are evaluated once here by the
+//! Holds: a literal is compiled when it is evaluated, so its identifiers are bound there (as
+//! in POV-Ray); sub-expressions that do not read the parameters are evaluated once by the
 //! scene evaluator (so `#declare`d constants, vector members and every SDL built-in work
-//! there); the rest becomes VM nodes. Calls of other user functions are compiled once per
-//! compilation and shared.
+//! there); the rest becomes VM nodes. Calls of other user functions share their compiled
+//! form; chains of calls are bounded ([`CALL_DEPTH_LIMIT`]).
 
 use crate::eval::stream::Stream;
 use crate::eval::value::{UserFunction, Value, Vector};
