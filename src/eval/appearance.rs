@@ -291,7 +291,14 @@ impl Evaluator {
         let mut pigment = self.default_texture.pigment.clone();
         let mut colour_map: Option<Vec<(f64, Colour)>> = None;
         let mut average = false;
+        let mut earlier_item = None;
         while let Some(item) = self.next_item(stream)? {
+            // `uv_mapping` may precede the pattern; nothing else may (POV-Ray).
+            let earlier = match &item {
+                Item::Comma(_) => earlier_item,
+                Item::Keyword(word, _) if &**word == "uv_mapping" => earlier_item,
+                _ => earlier_item.replace(item.span()),
+            };
             if let Item::Keyword(word, _) = &item {
                 if &**word == "average" {
                     average = true;
@@ -329,6 +336,9 @@ impl Evaluator {
             }
             if let Item::Keyword(word, span) = &item {
                 if let Some(spec) = self.pattern_keyword(word, *span, stream)? {
+                    if let Some(earlier) = earlier {
+                        return Err(self.pattern_not_first(word, *span, earlier));
+                    }
                     let map = match spec.block_count() {
                         Some(count) => PigmentMap::Blocks(self.block_list(stream, count)?),
                         None => PigmentMap::Colours(grey_ramp()),

@@ -6,7 +6,7 @@ use super::value::{Value, Vector};
 use super::{EvalResult, Evaluator, STRING_SIZE_LIMIT};
 use crate::diag::Span;
 use crate::scene::Colour;
-use crate::syntax::ast::{BinaryOp, Call, Expr, FunctionBody, FunctionLiteral, Item, UnaryOp};
+use crate::syntax::ast::{BinaryOp, Call, Expr, Item, UnaryOp};
 use glam::DVec3;
 use std::rc::Rc;
 
@@ -140,7 +140,7 @@ impl Evaluator {
             }
             Expr::Colour(literal) => self.eval_colour_literal(literal),
             Expr::Array(literal) => self.eval_array(literal),
-            Expr::Function(function) => Ok(Value::Function(function.clone())),
+            Expr::Function(function) => self.function_value(function),
             Expr::Directive(directive) => self.directive_value(directive),
         }
     }
@@ -423,7 +423,7 @@ impl Evaluator {
             Some(Value::Macro(_)) => return self.call_macro_value(call),
             Some(Value::Function(function)) => {
                 let function = function.clone();
-                return self.call_function(&function, call);
+                return self.call_user_function(&function, call);
             }
             Some(Value::Spline(spline)) => {
                 let spline = spline.clone();
@@ -432,61 +432,6 @@ impl Evaluator {
             _ => {}
         }
         super::builtins::call_builtin(self, call)
-    }
-
-    /// Calls a user-defined function: float arguments bound to its parameters (`x, y, z`
-    /// when it declares none), the body evaluated as a float expression.
-    fn call_function(&mut self, function: &Rc<FunctionLiteral>, call: &Call) -> EvalResult<Value> {
-        const DEFAULT_PARAMETERS: [&str; 3] = ["x", "y", "z"];
-        let names: Vec<Rc<str>> = if function.parameters.is_empty() {
-            DEFAULT_PARAMETERS.iter().map(|n| Rc::from(*n)).collect()
-        } else {
-            function.parameters.clone()
-        };
-        if let FunctionBody::Expr(Expr::Call(inner)) = &function.body {
-            if &*inner.name == "internal" {
-                return self.call_internal_function(function, call);
-            }
-        }
-        if call.arguments.len() != names.len() {
-            return Err(self
-                .error(
-                    call.span,
-                    format!(
-                        "function `{}` takes {} arguments, found {}",
-                        call.name,
-                        names.len(),
-                        call.arguments.len()
-                    ),
-                )
-                .with_secondary(function.span, "the function is declared here")
-                .into());
-        }
-        let FunctionBody::Expr(body) = &function.body else {
-            return Err(self
-                .error(
-                    call.span,
-                    format!("function `{}` is a pattern or pigment function", call.name),
-                )
-                .with_label("calling these is not supported yet")
-                .into());
-        };
-        let mut scope = super::Scope::with_capacity_and_hasher(names.len(), Default::default());
-        for (index, name) in names.into_iter().enumerate() {
-            let value = self.argument_float(call, index)?;
-            scope.insert(name, Value::Float(value));
-        }
-        self.enter_nesting(call.span)?;
-        self.trace.push(crate::diag::TraceEntry {
-            what: format!("function `{}`", call.name),
-            span: call.span,
-        });
-        self.scopes.push(scope);
-        let result = self.eval_float(body);
-        self.scopes.pop();
-        self.trace.pop();
-        self.nesting -= 1;
-        Ok(Value::Float(result?))
     }
 
     /// Evaluates the argument at `index` as a float.

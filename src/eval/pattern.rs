@@ -109,6 +109,24 @@ impl Evaluator {
         Ok(Some(pattern))
     }
 
+    /// POV-Ray reads a pigment's pattern only as its first item: a pattern keyword after
+    /// anything else (a modifier, a colour, a map) is an error there.
+    pub(crate) fn pattern_not_first(
+        &self,
+        word: &str,
+        span: Span,
+        earlier: Span,
+    ) -> Box<crate::diag::Diagnostic> {
+        self.error(
+            span,
+            format!("the pattern `{word}` must come first in its block"),
+        )
+        .with_label("a pattern after other items")
+        .with_secondary(earlier, "this comes before it")
+        .with_help("write the pattern keyword first, then its modifiers and maps")
+        .into()
+    }
+
     /// When `word` is a pattern modifier (`turbulence`, `octaves`, `frequency`, wave types,
     /// pattern-specific settings such as `brick_size`...), parses its operands into `pattern`
     /// and returns true; false when `word` is not a pattern modifier.

@@ -2,7 +2,8 @@
 //!
 //! In: a spline block's items (or a call's arguments). Out: a [`Spline`] value, or the point
 //! at a parameter. Holds: points are sorted by parameter, a repeated parameter replaces its
-//! point; values match what POV-Ray 3.7 prints for every kind, inside and outside the range.
+//! point (POV-Ray's exception: see [`Spline::insert`]); values match what POV-Ray 3.7 prints
+//! for every kind, inside and outside the range.
 
 use super::stream::Stream;
 use super::value::{Value, Vector};
@@ -11,189 +12,12 @@ use crate::diag::Span;
 use crate::syntax::ast::{Argument, Call, Expr, Item};
 use std::rc::Rc;
 
-/// How a spline interpolates between its points.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SplineKind {
-    /// Straight segments.
-    Linear,
-    /// Each segment follows the parabola through the point before it and its two ends.
-    Quadratic,
-    /// Catmull-Rom: Hermite segments whose tangents average the neighbouring slopes; only
-    /// the second to the next-to-last point are reached.
-    Cubic,
-    /// The natural cubic spline (zero curvature at both ends) through every point.
-    Natural,
-}
-
-impl SplineKind {
-    /// The kind named by a keyword.
-    pub fn from_keyword(word: &str) -> Option<SplineKind> {
-        Some(match word {
-            "linear_spline" => SplineKind::Linear,
-            "quadratic_spline" => SplineKind::Quadratic,
-            "cubic_spline" => SplineKind::Cubic,
-            "natural_spline" => SplineKind::Natural,
-            _ => return None,
-        })
-    }
-}
-
-/// A spline value: its kind and points sorted by parameter.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Spline {
-    /// Interpolation used when a call does not name one.
-    pub kind: SplineKind,
-    /// (parameter, point) pairs, ascending by parameter; unused components are zero.
-    pub points: Vec<(f64, [f64; 5])>,
-    /// Components of the widest point (2 to 5): the size of the vectors the spline returns.
-    pub components: u8,
-}
-
-impl Spline {
-    /// Adds a point, replacing the one at the same parameter.
-    fn insert(&mut self, t: f64, point: [f64; 5], components: u8) {
-        self.components = self.components.max(components);
-        let at = self.points.partition_point(|(p, _)| *p < t);
-        match self.points.get_mut(at) {
-            Some(existing) if existing.0 == t => existing.1 = point,
-            _ => self.points.insert(at, (t, point)),
-        }
-    }
-
-    /// The point at parameter `t`, interpolated as `kind`.
-    pub fn evaluate(&self, t: f64, kind: SplineKind) -> [f64; 5] {
-        let points = &self.points;
-        let n = points.len();
-        let (first, last) = match points.first().zip(points.last()) {
-            Some(ends) => ends,
-            None => return [0.0; 5],
-        };
-        // A single point, or a parameter that is not a number, has nothing to interpolate.
-        if n == 1 || t.is_nan() {
-            return first.1;
-        }
-        // Too few points for the kind: fall back to straight segments, as POV-Ray does.
-        let kind = match kind {
-            SplineKind::Quadratic if n < 3 => SplineKind::Linear,
-            SplineKind::Cubic if n < 3 => SplineKind::Linear,
-            SplineKind::Natural if n < 3 => SplineKind::Linear,
-            other => other,
-        };
-        if kind == SplineKind::Cubic {
-            // Only the second to the next-to-last point are on the curve.
-            let (low, high) = (points[1], points[n - 2]);
-            if t <= low.0 {
-                return low.1;
-            }
-            if t >= high.0 {
-                return high.1;
-            }
-        } else {
-            if t <= first.0 {
-                return first.1;
-            }
-            if t >= last.0 {
-                return last.1;
-            }
-        }
-        // Segment i runs from point i to point i + 1.
-        let i = points
-            .partition_point(|(p, _)| *p <= t)
-            .saturating_sub(1)
-            .min(n - 2);
-        match kind {
-            SplineKind::Linear => {
-                let (t0, p0) = points[i];
-                let (t1, p1) = points[i + 1];
-                let s = (t - t0) / (t1 - t0);
-                std::array::from_fn(|c| p0[c] + (p1[c] - p0[c]) * s)
-            }
-            SplineKind::Quadratic => {
-                let start = i.saturating_sub(1);
-                quadratic_through(&points[start..start + 3], t)
-            }
-            SplineKind::Cubic => {
-                let start = i.clamp(1, n - 3);
-                catmull_rom(&points[start - 1..start + 3], t)
-            }
-            SplineKind::Natural => natural(points, i, t),
-        }
-    }
-}
-
-/// The parabola through three points, at `t` (Lagrange form).
-fn quadratic_through(points: &[(f64, [f64; 5])], t: f64) -> [f64; 5] {
-    let [(t0, p0), (t1, p1), (t2, p2)] = [points[0], points[1], points[2]];
-    let w0 = (t - t1) * (t - t2) / ((t0 - t1) * (t0 - t2));
-    let w1 = (t - t0) * (t - t2) / ((t1 - t0) * (t1 - t2));
-    let w2 = (t - t0) * (t - t1) / ((t2 - t0) * (t2 - t1));
-    std::array::from_fn(|c| w0 * p0[c] + w1 * p1[c] + w2 * p2[c])
-}
-
-/// The Hermite segment between the middle two of four points, with each tangent the average
-/// of the slopes on either side of its point.
-fn catmull_rom(points: &[(f64, [f64; 5])], t: f64) -> [f64; 5] {
-    let [(t0, p0), (t1, p1), (t2, p2), (t3, p3)] = [points[0], points[1], points[2], points[3]];
-    let h = t2 - t1;
-    let s = (t - t1) / h;
-    let (s2, s3) = (s * s, s * s * s);
-    let h00 = 2.0 * s3 - 3.0 * s2 + 1.0;
-    let h01 = -2.0 * s3 + 3.0 * s2;
-    let h10 = s3 - 2.0 * s2 + s;
-    let h11 = s3 - s2;
-    std::array::from_fn(|c| {
-        let slope = (p2[c] - p1[c]) / h;
-        let tangent1 = 0.5 * ((p1[c] - p0[c]) / (t1 - t0) + slope) * h;
-        let tangent2 = 0.5 * (slope + (p3[c] - p2[c]) / (t3 - t2)) * h;
-        h00 * p1[c] + h01 * p2[c] + h10 * tangent1 + h11 * tangent2
-    })
-}
-
-/// The natural cubic spline through all points, on segment `i`, at `t`.
-fn natural(points: &[(f64, [f64; 5])], i: usize, t: f64) -> [f64; 5] {
-    let (t0, p0) = points[i];
-    let (t1, p1) = points[i + 1];
-    let h = t1 - t0;
-    let a = (t1 - t) / h;
-    let b = (t - t0) / h;
-    std::array::from_fn(|c| {
-        let curvature = natural_curvatures(points, c);
-        let bend = (a * a * a - a) * curvature[i] + (b * b * b - b) * curvature[i + 1];
-        a * p0[c] + b * p1[c] + bend * h * h / 6.0
-    })
-}
-
-/// Second derivatives of component `c` at each point of the natural spline (zero at both
-/// ends), from the tridiagonal system solved by elimination.
-fn natural_curvatures(points: &[(f64, [f64; 5])], c: usize) -> Vec<f64> {
-    let n = points.len();
-    let mut curvature = vec![0.0; n];
-    let mut upper = vec![0.0; n];
-    for k in 1..n - 1 {
-        let (tp, pp) = points[k - 1];
-        let (tk, pk) = points[k];
-        let (tn, pn) = points[k + 1];
-        let sigma = (tk - tp) / (tn - tp);
-        let pivot = sigma * upper[k - 1] + 2.0;
-        upper[k] = (sigma - 1.0) / pivot;
-        let rhs = (pn[c] - pk[c]) / (tn - tk) - (pk[c] - pp[c]) / (tk - tp);
-        curvature[k] = (6.0 * rhs / (tn - tp) - sigma * curvature[k - 1]) / pivot;
-    }
-    curvature[n - 1] = 0.0;
-    for k in (0..n - 1).rev() {
-        curvature[k] += upper[k] * curvature[k + 1];
-    }
-    curvature
-}
+pub use crate::function::spline::{Spline, SplineKind};
 
 impl Evaluator {
     /// Evaluates the body of a `spline { ... }` block.
     pub(crate) fn eval_spline(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Value> {
-        let mut spline = Spline {
-            kind: SplineKind::Linear,
-            points: Vec::new(),
-            components: 2,
-        };
+        let mut spline = Spline::new(SplineKind::Linear);
         while let Some(item) = self.next_item(stream)? {
             match item {
                 Item::Comma(_) => {}
@@ -224,7 +48,7 @@ impl Evaluator {
                 }
             }
         }
-        if spline.points.is_empty() {
+        if spline.is_empty() {
             return Err(self
                 .error(span, "a spline needs at least one point")
                 .with_label("this spline has none")

@@ -396,6 +396,22 @@ impl Evaluator {
                     }
                 }
             }
+            // `normal { function { .. } [amount] }`: a function pattern.
+            if let Item::Expr(crate::syntax::ast::Expr::Function(literal)) = &item {
+                let function = self.compile_function(literal)?;
+                let mut fresh = Normal::new(NormalSource::Pattern {
+                    pattern: crate::pattern::PatternSpec::new(
+                        crate::pattern::PatternKind::Function(function),
+                    ),
+                    slope_map: None,
+                });
+                if let Some(amount) = self.optional_amount(stream)? {
+                    fresh.amount = amount;
+                }
+                normal = Some(fresh);
+                pattern_started = true;
+                continue;
+            }
             match &item {
                 Item::Keyword(word, span) => match &**word {
                     "translate" | "rotate" | "scale" | "matrix" | "transform" => {

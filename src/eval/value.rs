@@ -47,7 +47,7 @@ pub enum Value {
     /// A macro.
     Macro(Rc<MacroDefinition>),
     /// A user-defined function.
-    Function(Rc<FunctionLiteral>),
+    Function(Rc<UserFunction>),
     /// A spline, called like a function.
     Spline(Rc<super::splines::Spline>),
     /// An open data file (index into the evaluator's file table).
@@ -56,6 +56,17 @@ pub enum Value {
     Nothing,
     /// A parameter passed by reference: the caller's variable `name` in scope `scope`.
     Reference { scope: usize, name: Rc<str> },
+}
+
+/// A user-defined function: its source and the form compiled where it was written.
+#[derive(Debug)]
+pub struct UserFunction {
+    /// The literal (its span, and a height field's resolution).
+    pub literal: Rc<FunctionLiteral>,
+    /// Compiled when the literal was evaluated, so its identifiers mean what they meant there
+    /// (as in POV-Ray); the diagnostic when it could not be compiled, reported where the
+    /// function is used.
+    pub compiled: Result<Arc<crate::function::Function>, Box<crate::diag::Diagnostic>>,
 }
 
 /// A vector with 2 to 5 components.

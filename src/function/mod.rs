@@ -1,15 +1,20 @@
-//! Compiled user functions: the float functions of POV-Ray's `function { .. }` in a form render
-//! threads evaluate fast.
+//! Compiled user functions: POV-Ray's `function { .. }` in a form render threads evaluate
+//! fast.
 //!
 //! In: a tree of [`Node`]s built by the evaluator from a function's body (constants already
-//! folded, parameters numbered, calls of other user functions resolved). Out: [`Function`], a
-//! `Send + Sync` value whose [`Function::eval`] maps parameter values to a float.
+//! folded, parameters numbered, calls of other user functions resolved), or the pattern,
+//! pigment, transformation or spline of a vector-valued function ([`Body`]). Out:
+//! [`Function`], a `Send + Sync` value whose [`Function::eval`] maps parameter values to a
+//! float and [`Function::eval_vector`] to up to five components.
 //! Holds: evaluation never allocates and never panics (arguments beyond those passed read as
 //! 0); the tree's depth is bounded by the source expression's nesting.
 
 pub mod internal;
+pub mod spline;
+mod vector;
 
 pub use internal::Internal;
+pub use vector::{Body, Component, Output};
 
 use std::sync::Arc;
 
@@ -19,19 +24,35 @@ pub const MAX_PARAMETERS: usize = 32;
 /// Tolerance of `=` and `!=`, the same as the scene language's.
 const EQUALITY_EPSILON: f64 = 1e-10;
 
-/// A compiled float function of its parameters.
+/// A compiled function of its parameters.
 #[derive(Clone, Debug)]
 pub struct Function {
-    /// The body.
-    root: Node,
+    /// What it computes.
+    body: Body,
     /// Number of parameters (`x, y, z` when the source declares none).
     arity: usize,
+    /// Longest chain of calls of other functions inside the body (0 without calls).
+    call_depth: usize,
 }
 
 impl Function {
-    /// A function of `arity` parameters computing `root`.
+    /// A float function of `arity` parameters computing `root`.
     pub fn new(root: Node, arity: usize) -> Function {
-        Function { root, arity }
+        let body = Body::Expression(root);
+        Function {
+            call_depth: body.call_depth(),
+            body,
+            arity,
+        }
+    }
+
+    /// A pattern, pigment, transformation or spline function; its arity is the body's.
+    pub fn with_body(body: Body) -> Function {
+        Function {
+            arity: body.arity(),
+            call_depth: body.call_depth(),
+            body,
+        }
     }
 
     /// Number of parameters.
@@ -39,16 +60,40 @@ impl Function {
         self.arity
     }
 
-    /// The value for the given parameters (missing ones read as 0).
+    /// Longest chain of nested calls of other functions its evaluation makes.
+    pub fn call_depth(&self) -> usize {
+        self.call_depth
+    }
+
+    /// What a call returns: a float, a colour or a vector.
+    pub fn output(&self) -> Output {
+        self.body.output()
+    }
+
+    /// The value for the given parameters (missing ones read as 0); the first component of
+    /// a colour or vector.
     #[inline]
     pub fn eval(&self, parameters: &[f64]) -> f64 {
-        self.root.eval(parameters)
+        match &self.body {
+            Body::Expression(root) => root.eval(parameters),
+            other => other.eval_vector(parameters)[0],
+        }
+    }
+
+    /// All components for the given parameters: a float function's value comes first,
+    /// unused components are 0.
+    #[inline]
+    pub fn eval_vector(&self, parameters: &[f64]) -> [f64; 5] {
+        match &self.body {
+            Body::Expression(root) => [root.eval(parameters), 0.0, 0.0, 0.0, 0.0],
+            other => other.eval_vector(parameters),
+        }
     }
 
     /// The value at a point, for functions of `x, y, z`.
     #[inline]
     pub fn eval_point(&self, point: glam::DVec3) -> f64 {
-        self.root.eval(&[point.x, point.y, point.z])
+        self.eval(&[point.x, point.y, point.z])
     }
 }
 
@@ -217,13 +262,31 @@ pub enum Node {
         /// From, to and body.
         parts: Box<[Node; 3]>,
     },
-    /// A call of another compiled function.
+    /// A call of another compiled float function.
     Call(Arc<Function>, Box<[Node]>),
+    /// One component of a call of a colour or vector function (`P(x, y, z).red`).
+    Member(Arc<Function>, Component, Box<[Node]>),
     /// A call of one of POV-Ray's internal functions.
     Internal(Internal, Box<[Node]>),
 }
 
 impl Node {
+    /// Longest chain of calls of other functions below this node.
+    pub(crate) fn call_depth(&self) -> usize {
+        match self {
+            Node::Constant(_) | Node::Parameter(_) => 0,
+            Node::Unary(_, a) => a.call_depth(),
+            Node::Binary(_, parts) => max_depth(&parts[..]),
+            Node::Conditional(parts) => max_depth(&parts[..]),
+            Node::Select(parts) => max_depth(&parts[..]),
+            Node::Series { parts, .. } => max_depth(&parts[..]),
+            Node::Call(function, arguments) | Node::Member(function, _, arguments) => {
+                (function.call_depth() + 1).max(max_depth(arguments))
+            }
+            Node::Internal(_, arguments) => max_depth(arguments),
+        }
+    }
+
     /// The node's value for the given parameters.
     pub fn eval(&self, parameters: &[f64]) -> f64 {
         match self {
@@ -257,12 +320,22 @@ impl Node {
                 let values = argument_values(arguments, parameters);
                 function.eval(&values[..arguments.len().min(MAX_PARAMETERS)])
             }
+            Node::Member(function, component, arguments) => {
+                let values = argument_values(arguments, parameters);
+                let vector = function.eval_vector(&values[..arguments.len().min(MAX_PARAMETERS)]);
+                component.pick(vector)
+            }
             Node::Internal(which, arguments) => {
                 let values = argument_values(arguments, parameters);
                 which.eval(&values)
             }
         }
     }
+}
+
+/// The longest call chain below any of `nodes`.
+fn max_depth(nodes: &[Node]) -> usize {
+    nodes.iter().map(Node::call_depth).max().unwrap_or(0)
 }
 
 /// Evaluates call arguments into a fixed buffer (extra arguments are dropped).

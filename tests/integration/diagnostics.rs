@@ -442,3 +442,104 @@ fn binary_write_of_a_string_names_the_type() {
         "{text}"
     );
 }
+
+#[test]
+fn pigment_function_member_must_exist() {
+    check(
+        "pigment_function_wrong_member",
+        2,
+        25,
+        &[
+            "`P` returns a colour, which has no member `.w`",
+            ".gray .hf",
+        ],
+    );
+}
+
+#[test]
+fn pigment_function_inside_a_function_needs_a_member() {
+    check(
+        "pigment_function_without_member",
+        2,
+        29,
+        &[
+            "`P` returns a colour; pick one of its components",
+            "add a member, e.g. `P(..).red`",
+        ],
+    );
+}
+
+#[test]
+fn pattern_function_has_no_members() {
+    check(
+        "pattern_function_member",
+        2,
+        25,
+        &["`Q` returns a float, which has no member `.red`"],
+    );
+}
+
+#[test]
+fn transform_function_called_with_wrong_arity() {
+    check(
+        "transform_function_arity",
+        2,
+        25,
+        &[
+            "function `T` takes 3 arguments, found 2",
+            "the function is declared here",
+        ],
+    );
+}
+
+#[test]
+fn spline_called_inside_a_function_is_refused() {
+    check(
+        "spline_called_in_function",
+        2,
+        25,
+        &[
+            "the spline `S` cannot be called inside a function",
+            "function { spline { S } }",
+        ],
+    );
+}
+
+#[test]
+fn pattern_written_after_a_modifier_is_refused() {
+    check(
+        "pattern_after_modifier",
+        2,
+        21,
+        &[
+            "the pattern `checker` must come first in its block",
+            "this comes before it",
+        ],
+    );
+}
+
+#[test]
+fn pigment_functions_nested_too_deeply_are_refused() {
+    check(
+        "functions_nested_too_deeply",
+        3,
+        48,
+        &[
+            "functions call each other too deeply",
+            "more than 64 nested calls",
+        ],
+    );
+}
+
+#[test]
+fn spline_identifier_as_a_function_body_is_refused() {
+    check(
+        "spline_identifier_as_function",
+        2,
+        25,
+        &[
+            "a function cannot be the spline `S` itself",
+            "write `function { spline { S } }`",
+        ],
+    );
+}

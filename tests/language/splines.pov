@@ -38,6 +38,11 @@ Check((Value.x = 2 & Value.y = 3 & Value.z = 2.5 & Value.t = 3), "points padded 
 // A point at a parameter already used replaces it; points may come in any order.
 #declare Replaced = spline { 1, <1,1,1> 0, <0,0,0> 2, <3,3,3> 1, <7,7,7> }
 Check(Near(Replaced(0.5), <3.5,3.5,3.5>), "a repeated parameter replaces its point")
+// ... except a repeat of the last parameter (of two or more points), which is dropped.
+#declare Kept = spline { 0, <0,0> 1, <1,1> 1, <5,5> 2, <2,2> }
+Check((Near(Kept(0.5), <0.5,0.5>) & Near(Kept(1.5), <1.5,1.5>)), "a repeat of the last parameter is dropped")
+#declare Single = spline { 0, <0,0> 0, <9,9> 0, <8,8> }
+Check(Near(Single(0), <8,8>), "a single point is replaced")
 // Too few points for a kind: straight segments.
 #declare Two = spline { natural_spline 0, <1,2,3> 1, <2,2,2> }
 Check(Near(Two(0.5), <1.5,2,2.5>), "two points interpolate linearly")

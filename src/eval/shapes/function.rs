@@ -1,68 +1,103 @@
-//! Compiling user functions (`function { .. }`, `function(a, b) { .. }`) into the render-time
-//! form of [`crate::function`].
+//! Compiling user functions (`function { .. }`, `function(a, b) { .. }`, and the pattern,
+//! pigment, transform and spline functions) into the render-time form of [`crate::function`],
+//! and calling them from scene code.
 //!
 //! In: a function literal and the evaluator's current declarations. Out: an
 //! `Arc<Function>`, or a spanned diagnostic for what a function body may not contain.
-//! Holds: sub-expressions that do not read the parameters are evaluated once here by the
+//! Holds: a literal is compiled when it is evaluated, so its identifiers are bound there (as
+//! in POV-Ray); sub-expressions that do not read the parameters are evaluated once by the
 //! scene evaluator (so `#declare`d constants, vector members and every SDL built-in work
-//! there); the rest becomes VM nodes. Calls of other user functions are compiled once per
-//! compilation and shared.
+//! there); the rest becomes VM nodes. Calls of other user functions share their compiled
+//! form; chains of calls are bounded ([`CALL_DEPTH_LIMIT`]).
 
-use crate::eval::value::Value;
+use crate::eval::stream::Stream;
+use crate::eval::value::{UserFunction, Value, Vector};
 use crate::eval::{EvalResult, Evaluator};
-use crate::function::{Binary, Function, Internal, Node, Unary, MAX_PARAMETERS};
-use crate::syntax::ast::{Argument, BinaryOp, Call, Expr, FunctionBody, FunctionLiteral, UnaryOp};
-use std::collections::HashMap;
+use crate::function::{
+    Binary, Body, Component, Function, Internal, Node, Output, Unary, MAX_PARAMETERS,
+};
+use crate::scene::Pigment;
+use crate::syntax::ast::{
+    Argument, BinaryOp, BlockHead, Call, Expr, FunctionBody, FunctionLiteral, Item, UnaryOp,
+};
 use std::rc::Rc;
 use std::sync::Arc;
 
-/// Deepest chain of user functions calling each other (a function redeclared in terms of
-/// itself would otherwise never end).
+/// Deepest chain of user functions calling each other (each call is a level of recursion
+/// when the function is evaluated).
 const CALL_DEPTH_LIMIT: usize = 64;
 
-/// State of one compilation: functions compiled so far and the call depth.
-#[derive(Default)]
-struct Compilation {
-    compiled: HashMap<*const FunctionLiteral, Arc<Function>>,
-    depth: usize,
+/// Something that gives a compiled function: a literal written in place (compiled now, in the
+/// current scope) or a declared function value (compiled when it was declared).
+pub(crate) trait FunctionSource {
+    /// The compiled function, or the diagnostic that prevents it.
+    fn compiled(&self, evaluator: &mut Evaluator) -> EvalResult<Arc<Function>>;
+}
+
+impl FunctionSource for Rc<FunctionLiteral> {
+    fn compiled(&self, evaluator: &mut Evaluator) -> EvalResult<Arc<Function>> {
+        evaluator.compile_literal(self)
+    }
+}
+
+impl FunctionSource for Rc<UserFunction> {
+    fn compiled(&self, _: &mut Evaluator) -> EvalResult<Arc<Function>> {
+        self.compiled.clone()
+    }
 }
 
 impl Evaluator {
-    /// Compiles a user function for fast evaluation (isosurfaces, height fields).
+    /// Compiles a user function for fast evaluation (isosurfaces, patterns, height fields).
     pub(crate) fn compile_function(
         &mut self,
-        function: &Rc<FunctionLiteral>,
+        function: &impl FunctionSource,
     ) -> EvalResult<Arc<Function>> {
-        self.compile_literal(function, &mut Compilation::default())
+        function.compiled(self)
     }
 
-    fn compile_literal(
+    /// The value of a function literal: compiled here, where its identifiers are bound (as
+    /// POV-Ray does), with its mistakes reported here. Only an `internal(N)` function durer
+    /// lacks is kept, to be refused where it is called (functions.inc declares them all).
+    pub(crate) fn function_value(&mut self, literal: &Rc<FunctionLiteral>) -> EvalResult<Value> {
+        let compiled = self.compile_literal(literal);
+        let is_internal = matches!(&literal.body, FunctionBody::Expr(Expr::Call(call)) if &*call.name == "internal");
+        Ok(Value::Function(Rc::new(UserFunction {
+            literal: literal.clone(),
+            compiled: if is_internal { compiled } else { Ok(compiled?) },
+        })))
+    }
+
+    /// A user function's compiled form for a call; a function that could not be compiled is
+    /// reported at the call.
+    fn compiled_for_call(
         &mut self,
-        function: &Rc<FunctionLiteral>,
-        state: &mut Compilation,
+        function: &Rc<UserFunction>,
+        call: &Call,
     ) -> EvalResult<Arc<Function>> {
-        if let Some(done) = state.compiled.get(&Rc::as_ptr(function)) {
-            return Ok(done.clone());
-        }
-        let FunctionBody::Expr(body) = &function.body else {
-            return Err(self
-                .error(
-                    function.span,
-                    "pattern and pigment functions cannot be compiled yet",
-                )
-                .with_label("durer compiles float functions only")
-                .into());
+        function.compiled.clone().map_err(|error| {
+            let mut diagnostic = self
+                .error(call.span, format!("`{}`: {}", call.name, error.message))
+                .with_label("called here")
+                .with_secondary(error.span, "defined here");
+            diagnostic.help = error.help.clone();
+            Box::new(diagnostic)
+        })
+    }
+
+    fn compile_literal(&mut self, function: &Rc<FunctionLiteral>) -> EvalResult<Arc<Function>> {
+        let body = match &function.body {
+            FunctionBody::Items(items) => return self.compile_vector_function(function, items),
+            FunctionBody::Expr(body) => body,
         };
         if let Expr::Call(call) = body {
             if &*call.name == "internal" {
                 let internal = self.internal_function(call)?;
                 let arity = internal.arity();
                 let arguments = (0..arity).map(Node::Parameter).collect();
-                let compiled = Arc::new(Function::new(Node::Internal(internal, arguments), arity));
-                state
-                    .compiled
-                    .insert(Rc::as_ptr(function), compiled.clone());
-                return Ok(compiled);
+                return Ok(Arc::new(Function::new(
+                    Node::Internal(internal, arguments),
+                    arity,
+                )));
             }
         }
         let parameters: Vec<Rc<str>> = if function.parameters.is_empty() {
@@ -78,14 +113,84 @@ impl Evaluator {
                 )
                 .into());
         }
+        if let Expr::Ident(name, span) = body {
+            if let Some(Value::Spline(_)) = self.lookup(name) {
+                return Err(self
+                    .error(
+                        *span,
+                        format!("a function cannot be the spline `{name}` itself"),
+                    )
+                    .with_label("POV-Ray refuses a spline identifier here")
+                    .with_help(format!("write `function {{ spline {{ {name} }} }}`"))
+                    .into());
+            }
+        }
         let arity = parameters.len();
         let mut names = parameters;
-        let root = self.compile_expr(body, &mut names, state)?;
-        let compiled = Arc::new(Function::new(root, arity));
-        state
-            .compiled
-            .insert(Rc::as_ptr(function), compiled.clone());
-        Ok(compiled)
+        let root = self.compile_expr(body, &mut names)?;
+        Ok(Arc::new(Function::new(root, arity)))
+    }
+
+    /// `function { pattern { .. } }`, `function { pigment { .. } }`,
+    /// `function { transform { .. } }` or `function { spline { .. } }`.
+    fn compile_vector_function(
+        &mut self,
+        function: &FunctionLiteral,
+        items: &Rc<[Item]>,
+    ) -> EvalResult<Arc<Function>> {
+        let mut stream = Stream::new(items.clone());
+        let mut body = None;
+        while let Some(item) = self.next_item(&mut stream)? {
+            let block = match &item {
+                Item::Comma(_) => continue,
+                Item::Block(block) if body.is_none() => block,
+                _ => return Err(self.unexpected_in(&item, "function")),
+            };
+            let BlockHead::Word(word) = &block.head else {
+                return Err(self.unexpected_in(&item, "function"));
+            };
+            body = Some(match &**word {
+                "pattern" => {
+                    let pigment = self.eval_pigment(&mut Stream::new(block.body.clone()))?;
+                    let Pigment::Pattern {
+                        pattern, transform, ..
+                    } = pigment
+                    else {
+                        return Err(self
+                            .error(block.span, "a pattern function needs a pattern")
+                            .with_label("no pattern keyword in this block")
+                            .with_help("e.g. `function { pattern { bozo scale 0.5 } }`")
+                            .into());
+                    };
+                    Body::Pattern { pattern, transform }
+                }
+                "pigment" => {
+                    let pigment = self.eval_pigment(&mut Stream::new(block.body.clone()))?;
+                    Body::Pigment(Box::new(pigment))
+                }
+                "transform" => match self.eval_block(block)? {
+                    Value::Transform(transform) => Body::Transform(Rc::unwrap_or_clone(transform)),
+                    _ => return Err(self.unexpected_in(&item, "function")),
+                },
+                "spline" => match self.eval_block(block)? {
+                    Value::Spline(spline) => Body::Spline(Arc::new((*spline).clone())),
+                    _ => return Err(self.unexpected_in(&item, "function")),
+                },
+                _ => {
+                    return Err(self
+                        .error(block.head_span, format!("`{word}` cannot make a function"))
+                        .with_label("expected `pattern`, `pigment`, `transform` or `spline`")
+                        .into())
+                }
+            });
+        }
+        match body {
+            Some(body) => Ok(Arc::new(Function::with_body(body))),
+            None => Err(self
+                .error(function.span, "this function is empty")
+                .with_label("expected an expression or a pattern, pigment, transform or spline")
+                .into()),
+        }
     }
 
     /// Which internal function `internal(N)` names, or a diagnostic when durer lacks it.
@@ -109,12 +214,7 @@ impl Evaluator {
     }
 
     /// Compiles one expression; `names` are the parameters (and `sum`/`prod` counters).
-    fn compile_expr(
-        &mut self,
-        expr: &Expr,
-        names: &mut Vec<Rc<str>>,
-        state: &mut Compilation,
-    ) -> EvalResult<Node> {
+    fn compile_expr(&mut self, expr: &Expr, names: &mut Vec<Rc<str>>) -> EvalResult<Node> {
         if !self.reads_parameters(expr, names) {
             let value = self.eval_expr(expr)?;
             return Ok(Node::Constant(self.to_float(value, expr.span())?));
@@ -125,7 +225,7 @@ impl Evaluator {
                 Node::Parameter(index)
             }
             Expr::Unary(op, operand, _) => {
-                let operand = self.compile_expr(operand, names, state)?;
+                let operand = self.compile_expr(operand, names)?;
                 match op {
                     UnaryOp::Plus => operand,
                     UnaryOp::Negate => Node::Unary(Unary::Negate, Box::new(operand)),
@@ -133,8 +233,8 @@ impl Evaluator {
                 }
             }
             Expr::Binary(op, lhs, rhs, _) => {
-                let a = self.compile_expr(lhs, names, state)?;
-                let b = self.compile_expr(rhs, names, state)?;
+                let a = self.compile_expr(lhs, names)?;
+                let b = self.compile_expr(rhs, names)?;
                 let op = match op {
                     BinaryOp::Add => Binary::Add,
                     BinaryOp::Subtract => Binary::Subtract,
@@ -154,12 +254,13 @@ impl Evaluator {
             Expr::Conditional(parts, _) => {
                 let (condition, a, b) = &**parts;
                 Node::Conditional(Box::new([
-                    self.compile_expr(condition, names, state)?,
-                    self.compile_expr(a, names, state)?,
-                    self.compile_expr(b, names, state)?,
+                    self.compile_expr(condition, names)?,
+                    self.compile_expr(a, names)?,
+                    self.compile_expr(b, names)?,
                 ]))
             }
-            Expr::Call(call) => self.compile_call(call, names, state)?,
+            Expr::Call(call) => self.compile_call(call, names)?,
+            Expr::Member(base, member, span) => self.compile_member(base, member, *span, names)?,
             other => {
                 return Err(self
                     .error(
@@ -173,45 +274,36 @@ impl Evaluator {
     }
 
     /// Compiles a call inside a function body.
-    fn compile_call(
-        &mut self,
-        call: &Call,
-        names: &mut Vec<Rc<str>>,
-        state: &mut Compilation,
-    ) -> EvalResult<Node> {
+    fn compile_call(&mut self, call: &Call, names: &mut Vec<Rc<str>>) -> EvalResult<Node> {
         let name = &*call.name;
-        if let Some(Value::Function(callee)) = self.lookup(name) {
-            let callee = callee.clone();
-            if state.depth >= CALL_DEPTH_LIMIT {
-                return Err(self
-                    .error(call.span, "functions call each other too deeply")
-                    .with_label(format!("more than {CALL_DEPTH_LIMIT} nested calls"))
-                    .into());
-            }
-            state.depth += 1;
-            let compiled = self.compile_literal(&callee, state);
-            state.depth -= 1;
-            let compiled = compiled?;
-            if call.arguments.len() != compiled.arity() {
+        if let Some(callee) = self.called_function(call)? {
+            if callee.output() != Output::Float {
+                let example = match callee.output() {
+                    Output::Colour => ".red",
+                    _ => ".x",
+                };
                 return Err(self
                     .error(
                         call.span,
                         format!(
-                            "function `{name}` takes {} arguments, found {}",
-                            compiled.arity(),
-                            call.arguments.len()
+                            "`{name}` returns {}; pick one of its components",
+                            output_name(callee.output())
                         ),
                     )
-                    .with_secondary(callee.span, "the function is declared here")
+                    .with_label("a function computes floats")
+                    .with_help(format!("add a member, e.g. `{name}(..){example}`"))
                     .into());
             }
-            let arguments = self.compile_arguments(call, names, state)?;
-            return Ok(Node::Call(compiled, arguments.into_boxed_slice()));
+            let arguments = self.compile_arguments(call, names)?;
+            return Ok(Node::Call(callee, arguments.into_boxed_slice()));
+        }
+        if let Some(Value::Spline(_)) = self.lookup(name) {
+            return Err(self.spline_call_error(call));
         }
         if matches!(name, "sum" | "prod") {
-            return self.compile_series(call, names, state);
+            return self.compile_series(call, names);
         }
-        let arguments = self.compile_arguments(call, names, state)?;
+        let arguments = self.compile_arguments(call, names)?;
         let found = arguments.len();
         let wrong_count = |evaluator: &Evaluator, wanted: &str| -> Box<crate::diag::Diagnostic> {
             Box::new(evaluator.error(
@@ -267,13 +359,110 @@ impl Evaluator {
         }
     }
 
-    /// `sum(i, from, to, body)` / `prod(..)`.
-    fn compile_series(
+    /// The compiled user function `call` names, checked against the call's argument count;
+    /// `None` when the name is not a function.
+    fn called_function(&mut self, call: &Call) -> EvalResult<Option<Arc<Function>>> {
+        let Some(Value::Function(callee)) = self.lookup(&call.name) else {
+            return Ok(None);
+        };
+        let callee = callee.clone();
+        let compiled = self.compiled_for_call(&callee, call)?;
+        if call.arguments.len() != compiled.arity() {
+            return Err(self
+                .error(
+                    call.span,
+                    format!(
+                        "function `{}` takes {} arguments, found {}",
+                        call.name,
+                        compiled.arity(),
+                        call.arguments.len()
+                    ),
+                )
+                .with_secondary(callee.literal.span, "the function is declared here")
+                .into());
+        }
+        if compiled.call_depth() >= CALL_DEPTH_LIMIT {
+            return Err(self
+                .error(call.span, "functions call each other too deeply")
+                .with_label(format!("more than {CALL_DEPTH_LIMIT} nested calls"))
+                .into());
+        }
+        Ok(Some(compiled))
+    }
+
+    /// `F(..).member` inside a function: one component of a pigment, transformation or spline
+    /// function's result.
+    fn compile_member(
         &mut self,
-        call: &Call,
+        base: &Expr,
+        member: &str,
+        span: crate::diag::Span,
         names: &mut Vec<Rc<str>>,
-        state: &mut Compilation,
     ) -> EvalResult<Node> {
+        let Expr::Call(call) = base else {
+            return Err(self
+                .error(base.span(), "this cannot depend on a function's parameters")
+                .with_label(
+                    "only a call of a pigment, transform or spline function has members here",
+                )
+                .into());
+        };
+        let Some(callee) = self.called_function(call)? else {
+            if let Some(Value::Spline(_)) = self.lookup(&call.name) {
+                return Err(self.spline_call_error(call));
+            }
+            return Err(self
+                .error(
+                    call.name_span,
+                    format!("`{}` has no members inside a function", call.name),
+                )
+                .with_label("not a pigment, transform or spline function")
+                .into());
+        };
+        let Some(component) = Component::from_member(member, callee.output()) else {
+            let message = match callee.output() {
+                Output::Float => format!(
+                    "`{}` returns a float, which has no member `.{member}`",
+                    call.name
+                ),
+                output => format!(
+                    "`{}` returns {}, which has no member `.{member}`",
+                    call.name,
+                    output_name(output)
+                ),
+            };
+            return Err(self
+                .error(span, message)
+                .with_help(
+                    "members are .x .y .z .t .u .v .red .green .blue .filter .transmit .gray .hf",
+                )
+                .into());
+        };
+        let arguments = self.compile_arguments(call, names)?;
+        Ok(Node::Member(
+            callee,
+            component,
+            arguments.into_boxed_slice(),
+        ))
+    }
+
+    /// POV-Ray does not call splines inside functions; a spline function does it.
+    fn spline_call_error(&self, call: &Call) -> Box<crate::diag::Diagnostic> {
+        let name = &call.name;
+        self.error(
+            call.name_span,
+            format!("the spline `{name}` cannot be called inside a function"),
+        )
+        .with_label("POV-Ray refuses splines here")
+        .with_help(format!(
+            "make it a function: `#declare F = function {{ spline {{ {name} }} }}`, then call \
+             `F(t).x`"
+        ))
+        .into()
+    }
+
+    /// `sum(i, from, to, body)` / `prod(..)`.
+    fn compile_series(&mut self, call: &Call, names: &mut Vec<Rc<str>>) -> EvalResult<Node> {
         let [Argument::Expr(Expr::Ident(counter, _)), Argument::Expr(from), Argument::Expr(to), Argument::Expr(body)] =
             call.arguments.as_slice()
         else {
@@ -289,11 +478,11 @@ impl Evaluator {
                 .error(call.span, "too many nested sums and products")
                 .into());
         }
-        let from = self.compile_expr(from, names, state)?;
-        let to = self.compile_expr(to, names, state)?;
+        let from = self.compile_expr(from, names)?;
+        let to = self.compile_expr(to, names)?;
         let index = names.len();
         names.push(counter.clone());
-        let body = self.compile_expr(body, names, state);
+        let body = self.compile_expr(body, names);
         names.pop();
         Ok(Node::Series {
             product: &*call.name == "prod",
@@ -306,7 +495,6 @@ impl Evaluator {
         &mut self,
         call: &Call,
         names: &mut Vec<Rc<str>>,
-        state: &mut Compilation,
     ) -> EvalResult<Vec<Node>> {
         if call.arguments.len() > MAX_PARAMETERS {
             return Err(self
@@ -316,7 +504,7 @@ impl Evaluator {
         call.arguments
             .iter()
             .map(|argument| match argument {
-                Argument::Expr(expr) => self.compile_expr(expr, names, state),
+                Argument::Expr(expr) => self.compile_expr(expr, names),
                 Argument::Block(block) => Err(self
                     .error(block.span, "a function argument must be a float")
                     .into()),
@@ -362,22 +550,24 @@ impl Evaluator {
     }
 }
 
+/// How messages name what a function returns.
+fn output_name(output: Output) -> &'static str {
+    match output {
+        Output::Float => "a float",
+        Output::Colour => "a colour",
+        Output::Vector(_) => "a vector",
+    }
+}
+
 impl Evaluator {
-    /// Calls one of POV-Ray's internal functions (`f_sphere(..)` of functions.inc) from scene
-    /// code: the arguments as floats, the value from the compiled function.
-    pub(crate) fn call_internal_function(
+    /// Calls a user function from scene code: float arguments, and the compiled function's
+    /// float, colour or vector. A function that could not be compiled is reported here.
+    pub(crate) fn call_user_function(
         &mut self,
-        function: &Rc<FunctionLiteral>,
+        function: &Rc<UserFunction>,
         call: &Call,
     ) -> EvalResult<Value> {
-        let compiled = self.compile_function(function).map_err(|error| {
-            let mut diagnostic = self
-                .error(call.span, format!("`{}`: {}", call.name, error.message))
-                .with_label("called here")
-                .with_secondary(error.span, "defined here");
-            diagnostic.help = error.help.clone();
-            Box::new(diagnostic)
-        })?;
+        let compiled = self.compiled_for_call(function, call)?;
         if call.arguments.len() != compiled.arity() {
             return Err(self
                 .error(
@@ -389,13 +579,26 @@ impl Evaluator {
                         call.arguments.len()
                     ),
                 )
+                .with_secondary(function.literal.span, "the function is declared here")
                 .into());
         }
         let mut arguments = [0.0; MAX_PARAMETERS];
         for (index, slot) in arguments.iter_mut().enumerate().take(compiled.arity()) {
             *slot = self.argument_float(call, index)?;
         }
-        Ok(Value::Float(compiled.eval(&arguments[..compiled.arity()])))
+        let arguments = &arguments[..compiled.arity()];
+        Ok(match compiled.output() {
+            Output::Float => Value::Float(compiled.eval(arguments)),
+            Output::Colour => Value::Colour(crate::scene::Colour::from_array(
+                compiled.eval_vector(arguments),
+            )),
+            Output::Vector(len) => {
+                let components = compiled.eval_vector(arguments);
+                Value::Vector(Vector::from_slice(
+                    &components[..usize::from(len).clamp(1, 5)],
+                ))
+            }
+        })
     }
 }
 
@@ -404,13 +607,9 @@ mod tests {
     use crate::eval::value::Value;
     use crate::eval::{EvalOptions, Evaluator};
 
-    /// Every operator and built-in a compiled function knows, evaluated by the scene language
-    /// at a few points (stored in `Values`) and by the compiled function.
-    const SCENE: &str = r#"
-#declare C = 0.25;
-#declare V = <0.5, 2, 3>;
-#declare G = function(a, b) { a * b - C * V.y }
-#declare F = function {
+    /// Every operator and built-in a compiled function knows, as a function body and as a
+    /// macro body the scene language evaluates with `x, y, z` bound to macro arguments.
+    const FORMULA: &str = "
   G(x, y) + sin(3 * z) * (x < y ? 2 : -1) + select(x - 0.1, 1, 2, 3) + select(y, 4, 5)
   + mod(z * 7, 2) + atan2(y, x) + pow(abs(x), 1.5) + max(x, y, z) + min(x, 2 * y)
   + ln(2 + x) + log(3 + y) + floor(x * 3) + ceil(y * 3) + int(z * 2.5) + degrees(x)
@@ -418,21 +617,34 @@ mod tests {
   + (x != y) + (x <= 0.3) + (y >= -0.2) + sqrt(abs(z)) + cos(x) * tan(y / 2) + -x / 3
   + asin(x / 2) + acos(y / 2) + atan(z) + sinh(x) + cosh(y) + tanh(z) + asinh(x)
   + acosh(2 + y) + atanh(z / 2)
-}
-#declare Points = array[5] { <0.3, -0.2, 0.7>, <-0.5, 0.5, -0.1>, <0, 0, 0>,
-  <0.9, 0.4, -0.8>, <0.1, 0.1, 0.3> }
+";
+
+    /// The compiled function `F` and the macro `Formula` over the same formula; `Values` holds
+    /// the scene language's values at `Points`.
+    fn scene() -> String {
+        format!(
+            r#"
+#declare C = 0.25;
+#declare V = <0.5, 2, 3>;
+#declare G = function(a, b) {{ a * b - C * V.y }}
+#declare F = function {{ {FORMULA} }}
+#macro Formula(x, y, z) ({FORMULA}) #end
+#declare Points = array[5] {{ <0.3, -0.2, 0.7>, <-0.5, 0.5, -0.1>, <0, 0, 0>,
+  <0.9, 0.4, -0.8>, <0.1, 0.1, 0.3> }}
 #declare Values = array[5];
 #for (I, 0, 4)
-  #declare Values[I] = F(Points[I].x, Points[I].y, Points[I].z);
+  #declare Values[I] = Formula(Points[I].x, Points[I].y, Points[I].z);
 #end
-"#;
+"#
+        )
+    }
 
     #[test]
     fn compiled_functions_equal_the_scene_languages_values() {
         let folder = std::env::temp_dir().join(format!("durer-function-vm-{}", std::process::id()));
         std::fs::create_dir_all(&folder).unwrap();
         let path = folder.join("functions.pov");
-        std::fs::write(&path, SCENE).unwrap();
+        std::fs::write(&path, scene()).unwrap();
         let mut evaluator = Evaluator::new(EvalOptions::default());
         let result = evaluator.run_main(&path);
         std::fs::remove_dir_all(&folder).ok();

@@ -1,0 +1,2 @@
+#declare Q = function { pattern { bozo } }
+#declare F = function { Q(x, y, z).red }
