@@ -11,7 +11,7 @@ use super::leaf::Leaf;
 use super::{Material, Ray, SurfaceHit};
 use crate::accel::{Aabb, Bvh};
 use crate::scene::{Object, Scene};
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 /// Everything a ray can hit, ready for queries from many threads.
 #[derive(Debug, Default)]
@@ -229,7 +229,7 @@ impl World {
                 self.primitives[at].nearest(ray, inverse_direction, min_distance, limit, skip)
             },
         );
-        finish(ray, from_bvh.or(best))
+        finish(ray, from_bvh.or(best), &self.materials)
     }
 
     /// The same world with the child indexes of wide CSG nodes removed, so every CSG node
@@ -266,7 +266,7 @@ impl World {
                 best = Some(found);
             }
         }
-        finish(ray, best)
+        finish(ray, best, &self.materials)
     }
 }
 
@@ -278,19 +278,44 @@ fn usable(ray: &Ray, min_distance: f64, max_distance: f64) -> bool {
         && min_distance < max_distance
 }
 
-/// The world-space hit for the nearest pending hit, computing its normal.
-fn finish(ray: &Ray, nearest: Option<(f64, PendingHit)>) -> Option<SurfaceHit> {
+/// The world-space hit for the nearest pending hit, computing its normal (and, where the
+/// material or mesh needs them, uv coordinates and blended corner textures).
+fn finish(
+    ray: &Ray,
+    nearest: Option<(f64, PendingHit)>,
+    materials: &[Material],
+) -> Option<SurfaceHit> {
     let (distance, pending) = nearest?;
     let point = ray.at(distance);
+    let (normal, material, uv, corner_blend) = match pending.instance {
+        Some(instance) => {
+            let surface = instance.surface(pending.leaf, point);
+            (
+                instance.normal(pending.leaf, point, pending.part),
+                surface.material,
+                surface.uv,
+                surface.corner_blend,
+            )
+        }
+        None => {
+            let material = pending.leaf.material();
+            let uses_uv = materials
+                .get(material as usize)
+                .is_some_and(|material| material.uses_uv);
+            let uv = if uses_uv {
+                pending.leaf.uv(point, pending.part)
+            } else {
+                DVec2::ZERO
+            };
+            (pending.leaf.normal(point, pending.part), material, uv, None)
+        }
+    };
     Some(SurfaceHit {
         distance,
         point,
-        normal: match pending.instance {
-            Some(instance) => instance.normal(pending.leaf, point, pending.part),
-            None => pending.leaf.normal(point, pending.part),
-        },
-        material: pending
-            .instance
-            .map_or(pending.leaf.material(), MeshInstance::material),
+        normal,
+        material,
+        uv,
+        corner_blend,
     })
 }

@@ -110,10 +110,7 @@ impl Evaluator {
             v_steps = (v_steps + 1).min(FLAT_STEPS.max(v_steps));
         }
         let triangles = triangulate(&controls, 1 << u_steps, 1 << v_steps);
-        Ok(Shape::Mesh(Arc::new(Mesh {
-            triangles,
-            inside_vector: None,
-        })))
+        Ok(Shape::Mesh(Arc::new(Mesh::from_triangles(&triangles))))
     }
 }
 

@@ -1,0 +1,134 @@
+//! Surface (uv) coordinates of hit points, as `uv_mapping` reads them, and the barycentric
+//! weights of points on triangles.
+//!
+//! In: a shape in its local space and a local point on its surface (with the part tag the
+//! intersection gave). Out: the point's `<u, v>` in POV-Ray 3.7's parametrisation of that
+//! shape, measured by rendering uv-mapped gradients with `povray`. Holds: pure functions, no
+//! allocation; shapes without a uv parametrisation in POV-Ray give `<0, 0>`.
+
+use super::leaf::LocalShape;
+use crate::scene::{BlendMap, CompoundTexture, Pigment, PigmentMap, Texture};
+use glam::{DVec2, DVec3};
+use std::f64::consts::{PI, TAU};
+
+/// Barycentric weights of `point` (on or near the triangle's plane) for the corners `a`, `b`,
+/// `c`; they sum to 1. A degenerate triangle gives all weight to `a`.
+pub fn barycentric(corners: [DVec3; 3], point: DVec3) -> [f64; 3] {
+    let [a, b, c] = corners;
+    let (edge_one, edge_two, offset) = (b - a, c - a, point - a);
+    let (d00, d01, d11) = (
+        edge_one.dot(edge_one),
+        edge_one.dot(edge_two),
+        edge_two.dot(edge_two),
+    );
+    let (d20, d21) = (offset.dot(edge_one), offset.dot(edge_two));
+    let denominator = d00 * d11 - d01 * d01;
+    if denominator == 0.0 || !denominator.is_finite() {
+        return [1.0, 0.0, 0.0];
+    }
+    let second = (d11 * d20 - d01 * d21) / denominator;
+    let third = (d00 * d21 - d01 * d20) / denominator;
+    [1.0 - second - third, second, third]
+}
+
+/// The uv coordinates at the local surface `point` of `shape` (surface part `part`).
+pub fn shape_uv(shape: &LocalShape, point: DVec3, _part: u8) -> DVec2 {
+    match shape {
+        LocalShape::Sphere(sphere) => sphere_uv(point - sphere.centre()),
+        LocalShape::Triangle(triangle) => {
+            let weights = barycentric(triangle.corners(), point);
+            corner_weighted(crate::scene::DEFAULT_TRIANGLE_UVS, weights)
+        }
+        LocalShape::SmoothTriangle(triangle) => {
+            let weights = barycentric(triangle.corners(), point);
+            corner_weighted(crate::scene::DEFAULT_TRIANGLE_UVS, weights)
+        }
+        _ => DVec2::ZERO,
+    }
+}
+
+/// The uv point blended from the corners' uv coordinates by barycentric `weights`.
+pub fn corner_weighted(corner_uvs: [DVec2; 3], weights: [f64; 3]) -> DVec2 {
+    corner_uvs[0] * weights[0] + corner_uvs[1] * weights[1] + corner_uvs[2] * weights[2]
+}
+
+/// A sphere's uv at `offset` from its centre: u the longitude from the +x axis turning
+/// towards +z (0 to 1), v the latitude from the south pole (0) to the north pole (1).
+pub fn sphere_uv(offset: DVec3) -> DVec2 {
+    let length = offset.length();
+    if length == 0.0 || !length.is_finite() {
+        return DVec2::ZERO;
+    }
+    let longitude = offset.z.atan2(offset.x);
+    let u = if longitude < 0.0 {
+        longitude / TAU + 1.0
+    } else {
+        longitude / TAU
+    };
+    let v = 1.0 - (offset.y / length).clamp(-1.0, 1.0).acos() / PI;
+    DVec2::new(u, v)
+}
+
+/// True when `texture` or a texture it is made of has a uv-mapped pigment (possibly nested
+/// in pigment maps), so its hits need uv coordinates.
+pub fn texture_uses_uv(texture: &Texture) -> bool {
+    if pigment_uses_uv(&texture.pigment) {
+        return true;
+    }
+    let Some(compound) = &texture.compound else {
+        return false;
+    };
+    match &**compound {
+        CompoundTexture::Layered(layers) => layers.iter().any(texture_uses_uv),
+        CompoundTexture::Pattern { map, .. } => match map {
+            BlendMap::Entries(entries) => entries.iter().any(|(_, t)| texture_uses_uv(t)),
+            BlendMap::Blocks(blocks) => blocks.iter().any(texture_uses_uv),
+        },
+        CompoundTexture::Average(entries) => entries.iter().any(|(_, t)| texture_uses_uv(t)),
+        CompoundTexture::MaterialMap { textures, .. } => textures.iter().any(texture_uses_uv),
+    }
+}
+
+/// True when `pigment` is uv-mapped or holds a uv-mapped pigment.
+fn pigment_uses_uv(pigment: &Pigment) -> bool {
+    match pigment {
+        Pigment::UvMapped(_) => true,
+        Pigment::Solid(_) | Pigment::Image { .. } => false,
+        Pigment::Average(entries) => entries.iter().any(|(_, p)| pigment_uses_uv(p)),
+        Pigment::Pattern { map, .. } => match map {
+            PigmentMap::Colours(_) => false,
+            PigmentMap::Blocks(blocks) => blocks.iter().any(pigment_uses_uv),
+            PigmentMap::Pigments(entries) => entries.iter().any(|(_, p)| pigment_uses_uv(p)),
+        },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn barycentric_weights_reproduce_the_point() {
+        let corners = [
+            DVec3::ZERO,
+            DVec3::new(2.0, 0.0, 0.0),
+            DVec3::new(0.0, 3.0, 0.0),
+        ];
+        let point = DVec3::new(0.5, 0.75, 0.0);
+        let weights = barycentric(corners, point);
+        let back = corners[0] * weights[0] + corners[1] * weights[1] + corners[2] * weights[2];
+        assert!((back - point).length() < 1e-12);
+        assert!((weights.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+        assert_eq!(barycentric([DVec3::ZERO; 3], point), [1.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn sphere_uv_follows_pov_ray() {
+        // Measured: the point towards -z has u = 0.75; the equator has v = 0.5.
+        let uv = sphere_uv(-DVec3::Z);
+        assert!((uv - DVec2::new(0.75, 0.5)).length() < 1e-12);
+        assert!((sphere_uv(DVec3::Y).y - 1.0).abs() < 1e-12);
+        assert!(sphere_uv(-DVec3::Y * 2.0).y.abs() < 1e-12);
+        assert_eq!(sphere_uv(DVec3::ZERO), DVec2::ZERO);
+    }
+}
