@@ -37,8 +37,8 @@ pub struct MeshGeometry {
 /// What a hit on a mesh adds to the bare hit: uv coordinates and blended corner textures.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MeshSurface {
-    /// The uv coordinates at the point.
-    pub uv: DVec2,
+    /// The uv coordinates at the point (`None` when no material uses them).
+    pub uv: Option<DVec2>,
     /// The material at the point (the first corner's when the corners differ).
     pub material: u32,
     /// The corners' materials and weights, when they differ.
@@ -154,7 +154,7 @@ impl MeshInstance {
     pub fn surface(&self, leaf: &Leaf, point: DVec3) -> MeshSurface {
         let geometry = &*self.geometry;
         let plain = MeshSurface {
-            uv: DVec2::ZERO,
+            uv: None,
             material: self.materials[0],
             corner_blend: None,
         };
@@ -170,11 +170,12 @@ impl MeshInstance {
             / std::mem::size_of::<Leaf>();
         let weights = barycentric(corners, self.local_from_world.transform_point3(point));
         let uv = if !self.needs_uv {
-            DVec2::ZERO
+            None
         } else if let Some(uvs) = geometry.corner_uvs.get(index) {
-            corner_weighted(uvs.map(|[u, v]| DVec2::new(u as f64, v as f64)), weights)
+            let corner_uvs = uvs.map(|[u, v]| DVec2::new(f64::from(u), f64::from(v)));
+            Some(corner_weighted(corner_uvs, weights))
         } else {
-            corner_weighted(DEFAULT_TRIANGLE_UVS, weights)
+            Some(corner_weighted(DEFAULT_TRIANGLE_UVS, weights))
         };
         let slots = geometry.corner_slots.get(index).copied().unwrap_or([0; 3]);
         let slot_material = |slot: u32| -> u32 {

@@ -568,8 +568,9 @@ impl Leaf {
         }
     }
 
-    /// The uv coordinates at the world surface `point` (surface part `part`).
-    pub fn uv(&self, point: DVec3, part: u8) -> DVec2 {
+    /// The uv coordinates at the world surface `point` (surface part `part`); `None` for
+    /// shapes without uv coordinates.
+    pub fn uv(&self, point: DVec3, part: u8) -> Option<DVec2> {
         let local = match &self.local_from_world {
             None => point,
             Some(map) => map.transform_point3(point),

@@ -82,9 +82,9 @@ pub struct SurfaceHit {
     pub normal: DVec3,
     /// Index into [`World::materials`].
     pub material: u32,
-    /// The surface's uv coordinates at the point: computed for meshes with `uv_vectors` and
-    /// for materials that use `uv_mapping`, zero otherwise.
-    pub uv: DVec2,
+    /// The surface's uv coordinates at the point, for materials that use `uv_mapping`;
+    /// `None` otherwise and for shapes without uv coordinates.
+    pub uv: Option<DVec2>,
     /// For a mesh triangle whose corners have different textures: how they blend here.
     pub corner_blend: Option<CornerBlend>,
 }

@@ -7,6 +7,7 @@
 //! allocation; shapes without a uv parametrisation in POV-Ray give `<0, 0>`.
 
 use super::leaf::LocalShape;
+use crate::accel::Aabb;
 use crate::scene::{BlendMap, CompoundTexture, Pigment, PigmentMap, Texture};
 use glam::{DVec2, DVec3};
 use std::f64::consts::{PI, TAU};
@@ -31,19 +32,14 @@ pub fn barycentric(corners: [DVec3; 3], point: DVec3) -> [f64; 3] {
     [1.0 - second - third, second, third]
 }
 
-/// The uv coordinates at the local surface `point` of `shape` (surface part `part`).
-pub fn shape_uv(shape: &LocalShape, point: DVec3, _part: u8) -> DVec2 {
+/// The uv coordinates at the local surface `point` of `shape` (surface part `part`); `None`
+/// for shapes POV-Ray gives no uv coordinates (their uv-mapped pigments see the point).
+pub fn shape_uv(shape: &LocalShape, point: DVec3, part: u8) -> Option<DVec2> {
     match shape {
-        LocalShape::Sphere(sphere) => sphere_uv(point - sphere.centre()),
-        LocalShape::Triangle(triangle) => {
-            let weights = barycentric(triangle.corners(), point);
-            corner_weighted(crate::scene::DEFAULT_TRIANGLE_UVS, weights)
-        }
-        LocalShape::SmoothTriangle(triangle) => {
-            let weights = barycentric(triangle.corners(), point);
-            corner_weighted(crate::scene::DEFAULT_TRIANGLE_UVS, weights)
-        }
-        _ => DVec2::ZERO,
+        LocalShape::Sphere(sphere) => Some(sphere_uv(point - sphere.centre())),
+        LocalShape::Cuboid(cuboid) => Some(box_uv(cuboid.bounds(), point, part)),
+        LocalShape::Torus(torus) => Some(torus_uv(torus.major(), point)),
+        _ => None,
     }
 }
 
@@ -59,12 +55,7 @@ pub fn sphere_uv(offset: DVec3) -> DVec2 {
     if length == 0.0 || !length.is_finite() {
         return DVec2::ZERO;
     }
-    let longitude = offset.z.atan2(offset.x);
-    let u = if longitude < 0.0 {
-        longitude / TAU + 1.0
-    } else {
-        longitude / TAU
-    };
+    let u = turns(offset.z.atan2(offset.x));
     let v = 1.0 - (offset.y / length).clamp(-1.0, 1.0).acos() / PI;
     DVec2::new(u, v)
 }
@@ -103,6 +94,49 @@ fn pigment_uses_uv(pigment: &Pigment) -> bool {
     }
 }
 
+/// A box's uv: the faces unfolded into a cross over the unit square, each face a quarter
+/// wide and a third high (measured): the four sides -x, +z, +x, -z run along u at v from
+/// 1/3 to 2/3; the bottom (-y) and top (+y) sit above and below the +z face.
+pub fn box_uv(bounds: Aabb, point: DVec3, part: u8) -> DVec2 {
+    let size = bounds.max - bounds.min;
+    let unit = |axis: usize| -> f64 {
+        if size[axis] > 0.0 {
+            ((point[axis] - bounds.min[axis]) / size[axis]).clamp(0.0, 1.0)
+        } else {
+            0.0
+        }
+    };
+    let (x, y, z) = (unit(0), unit(1), unit(2));
+    let (column, row, across, up) = match part {
+        0 => (0.0, 1.0, z, y),
+        1 => (2.0, 1.0, 1.0 - z, y),
+        2 => (1.0, 0.0, x, z),
+        3 => (1.0, 2.0, x, 1.0 - z),
+        4 => (3.0, 1.0, 1.0 - x, y),
+        _ => (1.0, 1.0, x, y),
+    };
+    DVec2::new((column + across) / 4.0, (row + up) / 3.0)
+}
+
+/// A torus's uv: u the angle around the Y axis from the -x axis turning towards +z, v the
+/// angle around the tube from its inner rim over the top (both 0 to 1; measured).
+pub fn torus_uv(major: f64, point: DVec3) -> DVec2 {
+    let u = turns(point.z.atan2(-point.x));
+    let from_tube_centre = DVec2::new(point.x, point.z).length() - major;
+    let v = point.y.atan2(from_tube_centre) / TAU + 0.5;
+    DVec2::new(u, v)
+}
+
+/// An angle in radians as a fraction of a turn in [0, 1).
+fn turns(angle: f64) -> f64 {
+    let fraction = angle / TAU;
+    if fraction < 0.0 {
+        fraction + 1.0
+    } else {
+        fraction
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -130,5 +164,19 @@ mod tests {
         assert!((sphere_uv(DVec3::Y).y - 1.0).abs() < 1e-12);
         assert!(sphere_uv(-DVec3::Y * 2.0).y.abs() < 1e-12);
         assert_eq!(sphere_uv(DVec3::ZERO), DVec2::ZERO);
+    }
+
+    #[test]
+    fn box_and_torus_uv_follow_pov_ray() {
+        // Measured on box { -1, 1 }: the -z face at x = -0.78, y = 0.78 has u = 0.973,
+        // v = 0.631; the top face at x = 0.78, z = -0.78 has u = 0.471, v = 0.965.
+        let bounds = Aabb::from_corners(-DVec3::ONE, DVec3::ONE);
+        let front = box_uv(bounds, DVec3::new(-0.78, 0.78, -1.0), 4);
+        assert!((front - DVec2::new(0.9725, 0.63)).abs().max_element() < 2e-3);
+        let top = box_uv(bounds, DVec3::new(0.78, 1.0, -0.78), 3);
+        assert!((top - DVec2::new(0.4725, 0.963)).abs().max_element() < 3e-3);
+        // Measured on torus { 1, 0.5 }: +z has u = 0.25, the top of the tube v = 0.75.
+        let uv = torus_uv(1.0, DVec3::new(0.0, 0.5, 1.0));
+        assert!((uv - DVec2::new(0.25, 0.75)).abs().max_element() < 1e-12);
     }
 }

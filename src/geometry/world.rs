@@ -11,7 +11,7 @@ use super::leaf::Leaf;
 use super::{Material, Ray, SurfaceHit};
 use crate::accel::{Aabb, Bvh};
 use crate::scene::{Object, Scene};
-use glam::{DVec2, DVec3};
+use glam::DVec3;
 
 /// Everything a ray can hit, ready for queries from many threads.
 #[derive(Debug, Default)]
@@ -305,7 +305,7 @@ fn finish(
             let uv = if uses_uv {
                 pending.leaf.uv(point, pending.part)
             } else {
-                DVec2::ZERO
+                None
             };
             (pending.leaf.normal(point, pending.part), material, uv, None)
         }

@@ -54,11 +54,13 @@ pub fn surface_pigment(texture: &Texture, world_point: DVec3) -> Colour {
 }
 
 /// The colour of a texture's own pigment at `hit`: a uv-mapped pigment is evaluated at the
-/// hit's `<u, v, 0>`, any other at the hit point.
+/// hit's `<u, v, 0>` (at the point on shapes without uv coordinates, as in POV-Ray), any
+/// other at the hit point.
 pub fn pigment_at_hit(pigment: &Pigment, hit: &SurfaceHit) -> Colour {
-    match pigment.uv_mapped() {
-        Some(inner) => pigment_colour(inner, hit.uv.extend(0.0)),
-        None => pigment_colour(pigment, hit.point),
+    match (pigment.uv_mapped(), hit.uv) {
+        (Some(inner), Some(uv)) => pigment_colour(inner, uv.extend(0.0)),
+        (Some(inner), None) => pigment_colour(inner, hit.point),
+        (None, _) => pigment_colour(pigment, hit.point),
     }
 }
 

@@ -12,8 +12,9 @@ use std::sync::Arc;
 /// In `face_normals`, the index that marks a flat face (no normals to interpolate).
 pub const FLAT_FACE: u32 = u32::MAX;
 
-/// The uv coordinates POV-Ray gives the corners of a triangle without `uv_vectors`.
-pub const DEFAULT_TRIANGLE_UVS: [DVec2; 3] = [DVec2::ZERO, DVec2::X, DVec2::Y];
+/// The uv coordinates POV-Ray gives the corners of a mesh triangle without `uv_vectors`
+/// (measured: a uv-mapped pattern shows its value at the origin all over such a triangle).
+pub const DEFAULT_TRIANGLE_UVS: [DVec2; 3] = [DVec2::ZERO; 3];
 
 /// The triangles of a `mesh` or `mesh2`, or of a triangulated `bicubic_patch`.
 #[derive(Clone, Debug, Default)]
