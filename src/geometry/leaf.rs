@@ -578,15 +578,6 @@ impl Leaf {
         shape_uv(&self.shape, local, part)
     }
 
-    /// The corners of a triangle leaf in the leaf's space; `None` for other shapes.
-    pub fn triangle_corners(&self) -> Option<[DVec3; 3]> {
-        match &self.shape {
-            LocalShape::Triangle(triangle) => Some(triangle.corners()),
-            LocalShape::SmoothTriangle(triangle) => Some(triangle.corners()),
-            _ => None,
-        }
-    }
-
     /// True for a leaf that nothing can hit.
     pub fn is_empty(&self) -> bool {
         matches!(self.shape, LocalShape::Empty)
