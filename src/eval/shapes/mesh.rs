@@ -190,6 +190,16 @@ impl Evaluator {
             )?;
         }
         if !mesh.uvs.is_empty() {
+            if uv_faces.is_empty() && mesh.uvs.len() != mesh.vertices.len() && !faces.is_empty() {
+                return Err(self
+                    .error(span, "missing `uv_indices` in mesh2")
+                    .with_label(format!(
+                        "{} uv vectors for {} vertices: the face indices cannot pick them",
+                        mesh.uvs.len(),
+                        mesh.vertices.len()
+                    ))
+                    .into());
+            }
             mesh.face_uvs = self.corner_indices(
                 &faces,
                 &uv_faces,
