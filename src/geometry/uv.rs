@@ -170,6 +170,32 @@ mod tests {
     }
 
     #[test]
+    fn lathe_and_sor_uv_follow_pov_ray() {
+        use crate::geometry::lathe::Lathe;
+        use crate::geometry::sor::Sor;
+        // One straight segment from (r, y) = (1, 0) to (1, 1): v is the height's share.
+        let third = |t: f64| DVec2::new(1.0, t);
+        let lathe =
+            Lathe::new(&[[third(0.0), third(1.0 / 3.0), third(2.0 / 3.0), third(1.0)]]).unwrap();
+        let uv = lathe.uv(DVec3::new(0.0, 0.5, -1.0), 0);
+        assert!((uv - DVec2::new(0.75, 0.5)).abs().max_element() < 1e-9);
+        // A sor of radius 1 from y = 0 to 1: the side by height, the top cap by radius.
+        let points = [
+            DVec2::new(1.0, -1.0),
+            DVec2::new(1.0, 0.0),
+            DVec2::new(1.0, 1.0),
+            DVec2::new(1.0, 2.0),
+        ];
+        let sor = Sor::new(&points, false).unwrap();
+        let side = sor.uv(DVec3::new(1.0, 0.25, 0.0), 2);
+        assert!((side - DVec2::new(0.0, 0.25)).abs().max_element() < 1e-9);
+        let top = sor.uv(DVec3::new(0.0, 1.0, 0.5), 1);
+        assert!((top - DVec2::new(0.25, 0.5)).abs().max_element() < 1e-9);
+        let bottom = sor.uv(DVec3::new(-0.5, 0.0, 0.0), 0);
+        assert!((bottom - DVec2::new(0.5, 0.5)).abs().max_element() < 1e-9);
+    }
+
+    #[test]
     fn box_and_torus_uv_follow_pov_ray() {
         // Measured on box { -1, 1 }: the -z face at x = -0.78, y = 0.78 has u = 0.973,
         // v = 0.631; the top face at x = 0.78, z = -0.78 has u = 0.471, v = 0.965.
