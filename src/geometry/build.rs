@@ -537,10 +537,27 @@ impl Builder {
             }
             shape => {
                 let material = self.material(&appearance);
-                let place = self.leaf_placement(material);
-                let mut nodes: Vec<CsgNode> = LocalShape::pieces(shape)
+                // A mesh's textured triangles keep their own (first corner's) texture here.
+                let pieces: Vec<(LocalShape, u32)> = match shape {
+                    Shape::Mesh(mesh) if !mesh.face_textures.is_empty() => {
+                        let materials = self.mesh_materials(mesh, &appearance, &world_from_local);
+                        LocalShape::mesh_pieces(mesh)
+                            .into_iter()
+                            .map(|(piece, slot)| {
+                                let own = materials.get(slot as usize).copied();
+                                (piece, own.unwrap_or(material))
+                            })
+                            .collect()
+                    }
+                    _ => LocalShape::pieces(shape)
+                        .into_iter()
+                        .map(|piece| (piece, material))
+                        .collect(),
+                };
+                let mut nodes: Vec<CsgNode> = pieces
                     .into_iter()
-                    .map(|piece| {
+                    .map(|(piece, material)| {
+                        let place = self.leaf_placement(material);
                         let (leaf, bounds) =
                             place(piece, &world_from_local, material, inversion.odd);
                         let index = leaves.len() as u32;

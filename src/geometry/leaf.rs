@@ -26,7 +26,7 @@ use super::torus::{Torus, TorusShape};
 use super::uv::shape_uv;
 use super::Ray;
 use crate::accel::Aabb;
-use crate::scene::{MeshTriangle, Shape, Transform};
+use crate::scene::{Mesh, MeshTriangle, Shape, Transform};
 use glam::{DAffine3, DVec2, DVec3};
 
 /// A shape in its own local space.
@@ -167,13 +167,24 @@ impl LocalShape {
         shape.unwrap_or(LocalShape::Empty)
     }
 
+    /// The triangles of a mesh that are not degenerate, each with its texture slot (that of
+    /// its first corner; 0 is the mesh object's own texture).
+    pub fn mesh_pieces(mesh: &Mesh) -> Vec<(LocalShape, u32)> {
+        (0..mesh.len())
+            .map(|face| {
+                let piece = Self::from_mesh_triangle(&mesh.triangle(face));
+                (piece, mesh.corner_textures(face)[0])
+            })
+            .filter(|(piece, _)| !matches!(piece, LocalShape::Empty))
+            .collect()
+    }
+
     /// The leaf shapes a scene shape becomes: one per mesh triangle, else one.
     pub fn pieces(shape: &Shape) -> Vec<LocalShape> {
         match shape {
-            Shape::Mesh(mesh) => mesh
-                .triangles()
-                .map(|triangle| Self::from_mesh_triangle(&triangle))
-                .filter(|piece| !matches!(piece, LocalShape::Empty))
+            Shape::Mesh(mesh) => Self::mesh_pieces(mesh)
+                .into_iter()
+                .map(|(piece, _)| piece)
                 .collect(),
             Shape::Text(glyphs) => glyphs
                 .iter()
