@@ -7,7 +7,7 @@
 use super::value::{Value, Vector};
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::syntax::ast::{Expr, Target};
+use crate::syntax::ast::{Expr, Target, WriteValue};
 use std::io::Write;
 use std::path::{Component, Path, PathBuf};
 use std::rc::Rc;
@@ -54,7 +54,10 @@ impl Evaluator {
                     .truncate(mode == "write")
                     .open(&resolved);
                 match opened {
-                    Ok(f) => DataFile::Writing(std::io::BufWriter::new(f)),
+                    Ok(f) => {
+                        self.forget_parsed(&resolved);
+                        DataFile::Writing(std::io::BufWriter::new(f))
+                    }
                     Err(e) => {
                         return Err(self
                             .error(
@@ -137,30 +140,54 @@ impl Evaluator {
         Ok(())
     }
 
-    /// `#write (Handle, values..)`: strings as they are, floats and vectors as POV-Ray writes them.
+    /// `#write (Handle, values..)`: strings as they are, floats and vectors as POV-Ray writes them;
+    /// a value after `uint8`, `sint16be` and the like as binary integers, one per component.
     pub(crate) fn file_write(
         &mut self,
         handle: &Rc<str>,
-        values: &[Expr],
+        values: &[WriteValue],
         span: Span,
     ) -> EvalResult<()> {
         let index = self.file_index(handle, span)?;
-        let mut text = String::new();
-        for value in values {
-            match self.eval_expr(value)? {
-                Value::String(s) => text.push_str(&s),
-                Value::Float(f) => text.push_str(&format_number(f)),
+        let mut bytes = Vec::new();
+        for WriteValue { binary, value } in values {
+            let evaluated = self.eval_expr(value)?;
+            if let Some(integer) = binary {
+                let components = match &evaluated {
+                    Value::Float(f) => std::slice::from_ref(f),
+                    Value::Vector(v) => &v.components[..v.len as usize],
+                    other => {
+                        return Err(self
+                            .error(
+                                value.span(),
+                                format!(
+                                    "binary `#write` needs a float or a vector, found {}",
+                                    other.type_name()
+                                ),
+                            )
+                            .into())
+                    }
+                };
+                for component in components {
+                    integer.encode(*component, &mut bytes);
+                }
+                continue;
+            }
+            match evaluated {
+                Value::String(s) => bytes.extend_from_slice(s.as_bytes()),
+                Value::Float(f) => bytes.extend_from_slice(format_number(f).as_bytes()),
                 Value::Vector(v) => {
                     let parts: Vec<String> = v.components[..v.len as usize]
                         .iter()
                         .map(|c| format_number(*c))
                         .collect();
-                    text.push_str(&format!("<{}>", parts.join(",")));
+                    // POV-Ray follows a written vector with a space.
+                    bytes.extend_from_slice(format!("<{}> ", parts.join(",")).as_bytes());
                 }
                 Value::Colour(c) => {
                     let parts: Vec<String> =
                         c.to_array().iter().map(|c| format_number(*c)).collect();
-                    text.push_str(&format!("rgbft <{}>", parts.join(",")));
+                    bytes.extend_from_slice(format!("rgbft <{}>", parts.join(",")).as_bytes());
                 }
                 other => {
                     return Err(self
@@ -174,7 +201,7 @@ impl Evaluator {
         }
         match &mut self.files[index] {
             Some(DataFile::Writing(writer)) => writer
-                .write_all(text.as_bytes())
+                .write_all(&bytes)
                 .map_err(|e| self.error(span, format!("cannot write: {e}")).into()),
             _ => Err(self
                 .error(span, format!("`{handle}` was opened for reading"))
@@ -287,14 +314,37 @@ fn next_datum(text: &str, position: &mut usize) -> Result<Option<Value>, String>
     Ok(Some(Value::Float(value)))
 }
 
-/// Floats as POV-Ray writes them: up to six significant decimals, no trailing zeros.
+/// Floats as POV-Ray writes them: C's `%g`, six significant digits without trailing zeros,
+/// switching to an exponent below 1e-4 and from 1e6 on (`1e-05`, `1.23457e+06`).
 fn format_number(value: f64) -> String {
-    let text = format!("{value:.6}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".to_string()
+    const DIGITS: i32 = 6;
+    if !value.is_finite() {
+        return match (value.is_nan(), value < 0.0) {
+            (true, _) => "nan".into(),
+            (false, true) => "-inf".into(),
+            (false, false) => "inf".into(),
+        };
+    }
+    if value == 0.0 {
+        return if value.is_sign_negative() { "-0" } else { "0" }.into();
+    }
+    // The exponent after rounding to six digits decides the form, as in C.
+    let scientific = format!("{:.*e}", (DIGITS - 1) as usize, value);
+    let (mantissa, exponent) = scientific.split_once('e').unwrap_or((&scientific, "0"));
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    let trim = |text: &str| -> String {
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            text.to_string()
+        }
+    };
+    if (-4..DIGITS).contains(&exponent) {
+        let decimals = (DIGITS - 1 - exponent) as usize;
+        trim(&format!("{value:.decimals$}"))
     } else {
-        text.to_string()
+        let sign = if exponent < 0 { '-' } else { '+' };
+        format!("{}e{sign}{:02}", trim(mantissa), exponent.abs())
     }
 }
 
@@ -321,4 +371,33 @@ fn normalise(path: &Path) -> PathBuf {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::format_number;
+
+    /// What povray 3.7 writes for these floats with `#write`.
+    #[test]
+    fn numbers_are_written_like_povray() {
+        let cases = [
+            (0.000123456789, "0.000123457"),
+            (123456.789, "123457"),
+            (1e10, "1e+10"),
+            (1.5, "1.5"),
+            (0.0, "0"),
+            (-0.0, "-0"),
+            (-2.25e-7, "-2.25e-07"),
+            (1.0 / 3.0, "0.333333"),
+            (1e-5, "1e-05"),
+            (999999.5, "1e+06"),
+            (1234567.0, "1.23457e+06"),
+            (0.1 + 0.2, "0.3"),
+            (-1e300, "-1e+300"),
+            (100.0, "100"),
+        ];
+        for (value, written) in cases {
+            assert_eq!(format_number(value), written, "{value}");
+        }
+    }
 }

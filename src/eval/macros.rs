@@ -72,10 +72,9 @@ impl Evaluator {
                     // Point straight at the variable the name resolves to (following a
                     // reference the caller itself holds), so recursive macros passing a
                     // parameter on do not build chains of references.
-                    let holder = self.scopes.innermost_holder(name);
-                    let value = if let Some(index) = holder {
-                        match self.scopes.get(index, name) {
-                            Some(Value::Reference { scope, name }) => Value::Reference {
+                    let value = if let Some((index, value)) = self.scopes.innermost_binding(name) {
+                        match value {
+                            Value::Reference { scope, name } => Value::Reference {
                                 scope: *scope,
                                 name: name.clone(),
                             },

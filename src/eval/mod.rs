@@ -123,6 +123,22 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("golds.inc", include_str!("stdlib/golds.inc")),
     ("metals.inc", include_str!("stdlib/metals.inc")),
     ("skies.inc", include_str!("stdlib/skies.inc")),
+    ("textures.inc", include_str!("stdlib/textures.inc")),
+    ("woodmaps.inc", include_str!("stdlib/woodmaps.inc")),
+    ("woods.inc", include_str!("stdlib/woods.inc")),
+    ("stones.inc", include_str!("stdlib/stones.inc")),
+    ("stones1.inc", include_str!("stdlib/stones1.inc")),
+    ("stones2.inc", include_str!("stdlib/stones2.inc")),
+    ("functions.inc", include_str!("stdlib/functions.inc")),
+    ("math.inc", include_str!("stdlib/math.inc")),
+    ("transforms.inc", include_str!("stdlib/transforms.inc")),
+    ("strings.inc", include_str!("stdlib/strings.inc")),
+    ("rand.inc", include_str!("stdlib/rand.inc")),
+    ("arrays.inc", include_str!("stdlib/arrays.inc")),
+    ("shapes.inc", include_str!("stdlib/shapes.inc")),
+    ("shapes_old.inc", include_str!("stdlib/shapes_old.inc")),
+    ("shapes2.inc", include_str!("stdlib/shapes2.inc")),
+    ("shapesq.inc", include_str!("stdlib/shapesq.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
@@ -219,6 +235,13 @@ impl Evaluator {
             self.scene_item(item)?;
         }
         Ok(())
+    }
+
+    /// Drops the cached parse of a file the scene is rewriting, so that a later `#include` of
+    /// it (strings.inc's `Parse_String`) reads the new text.
+    pub(crate) fn forget_parsed(&mut self, path: &Path) {
+        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        self.parsed.remove(&key);
     }
 
     /// Reads and parses a file once; later loads reuse the AST.
@@ -352,8 +375,7 @@ impl Evaluator {
 
     /// Looks an identifier up, innermost scope first, following references.
     pub(crate) fn lookup(&self, name: &str) -> Option<&Value> {
-        let index = self.scopes.innermost_holder(name)?;
-        match self.scopes.get(index, name)? {
+        match self.scopes.innermost_binding(name)?.1 {
             Value::Reference { scope, name } => self.lookup_from(*scope, name),
             other => Some(other),
         }
@@ -363,8 +385,8 @@ impl Evaluator {
     pub(crate) fn lookup_from(&self, top: usize, name: &str) -> Option<&Value> {
         let (mut top, mut name) = (top, name);
         loop {
-            let index = self.scopes.holder_at_or_below(name, top)?;
-            match self.scopes.get(index, name)? {
+            let (index, value) = self.scopes.binding_at_or_below(name, top)?;
+            match value {
                 Value::Reference {
                     scope,
                     name: target,
@@ -403,12 +425,12 @@ impl Evaluator {
         let mut top = top;
         let mut name = name.clone();
         loop {
-            match self.scopes.holder_at_or_below(&name, top) {
-                Some(i) => match self.scopes.get(i, &name) {
-                    Some(Value::Reference {
+            match self.scopes.binding_at_or_below(&name, top) {
+                Some((i, value)) => match value {
+                    Value::Reference {
                         scope,
                         name: target,
-                    }) if *scope < i => {
+                    } if *scope < i => {
                         top = *scope;
                         name = target.clone();
                     }

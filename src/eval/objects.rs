@@ -205,14 +205,16 @@ impl Evaluator {
                 let c = self.expect_vector(stream, "<G, H, I>")?;
                 let j = self.expect_float(stream, "J")?;
                 Shape::Quadric {
-                    coefficients: [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, j],
+                    coefficients: Box::new([a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, j]),
                 }
             }
             _ => {
                 let a = self.expect_vector(stream, "the first corner")?;
                 let b = self.expect_vector(stream, "the second corner")?;
                 let c = self.expect_vector(stream, "the third corner")?;
-                Shape::Triangle { corners: [a, b, c] }
+                Shape::Triangle {
+                    corners: Box::new([a, b, c]),
+                }
             }
         })
     }
@@ -331,14 +333,14 @@ impl Evaluator {
             Value::Normal(normal) => {
                 let mut texture = self.object_texture(object);
                 let mut normal = Rc::unwrap_or_clone(normal);
-                normal.transform(&object.transform.inverse());
+                normal.transform(&object.transform().inverse());
                 change_top_layer(&mut texture, |top| top.normal = Some(Box::new(normal)));
                 object.texture = Some(Arc::new(texture));
             }
             Value::Pigment(pigment) => {
                 let mut texture = self.object_texture(object);
                 let mut pigment = Rc::unwrap_or_clone(pigment);
-                pigment.transform_with_object(&object.transform.inverse());
+                pigment.transform_with_object(&object.transform().inverse());
                 change_top_layer(&mut texture, |top| top.pigment = pigment);
                 object.texture = Some(Arc::new(texture));
             }
@@ -388,7 +390,7 @@ impl Evaluator {
                 Item::Block(_) | Item::Expr(_) => match self.item_value(&item)? {
                     Value::Object(child) => {
                         let mut child = Arc::unwrap_or_clone(child);
-                        apply_transform(&mut child, &object.transform.inverse());
+                        apply_transform(&mut child, &object.transform().inverse());
                         found.push(child);
                     }
                     Value::Nothing => {}
@@ -417,7 +419,7 @@ impl Evaluator {
     /// the object's local space so later transformations carry it along; layered on top of
     /// a texture the object already has.
     fn attach_texture(&mut self, object: &mut Object, mut texture: Texture) {
-        texture.transform_with_object(&object.transform.inverse());
+        texture.transform_with_object(&object.transform().inverse());
         // POV-Ray lays a texture given to an object that has one on top of it.
         let texture = match object.texture.take() {
             Some(below) => layered(vec![Texture::clone(&below), texture]),
@@ -544,7 +546,7 @@ impl Evaluator {
 
 /// Applies a transformation to an object (its textures ride along in local space).
 pub(crate) fn apply_transform(object: &mut Object, t: &Transform) {
-    object.transform = object.transform.then(t);
+    object.transform_by(t);
 }
 
 /// A POV-Ray `matrix < .. 12 values .. >` as a transform.

@@ -43,7 +43,10 @@ impl Evaluator {
             corners[index] = self.expect_vector(stream, "a corner")?;
             normals[index] = self.expect_vector(stream, "the corner's normal")?;
         }
-        Ok(Shape::SmoothTriangle { corners, normals })
+        Ok(Shape::SmoothTriangle {
+            corners: Box::new(corners),
+            normals: Box::new(normals),
+        })
     }
 
     /// `polygon { n, p1, .. pn }`: a sub-polygon closes when a point repeats its first point.

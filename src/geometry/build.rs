@@ -168,7 +168,7 @@ fn pov_bounding_box(object: &Object) -> Option<Aabb> {
     } else {
         // `bounded_by` objects give the object their box instead of its own; as in POV-Ray
         // 3.7, only that box matters (rays missing it miss the object), not their shape.
-        let parent_from_local = &object.transform.outer_from_inner;
+        let parent_from_local = &object.transform().outer_from_inner;
         object
             .bounded_by
             .iter()
@@ -177,7 +177,7 @@ fn pov_bounding_box(object: &Object) -> Option<Aabb> {
             })
             .map(|local| local.transformed(parent_from_local))
     };
-    let parent_from_local = &object.transform.outer_from_inner;
+    let parent_from_local = &object.transform().outer_from_inner;
     // A clipped object's box is cut to the boxes of its (not inverted) clipping objects.
     object
         .clipped_by
@@ -198,7 +198,7 @@ fn pov_bounding_box(object: &Object) -> Option<Aabb> {
 
 /// [`pov_bounding_box`] ignoring `clipped_by`.
 fn unclipped_pov_bounding_box(object: &Object) -> Option<Aabb> {
-    let parent_from_local = &object.transform.outer_from_inner;
+    let parent_from_local = &object.transform().outer_from_inner;
     let local = match &object.shape {
         Shape::Csg {
             operation: CsgOperation::Union | CsgOperation::Merge,
@@ -360,7 +360,7 @@ impl Builder {
         enclosing_unions: &mut Vec<DAffine3>,
         out: &mut Vec<(Primitive, Option<Aabb>)>,
     ) {
-        let world_from_local = object.transform.then(world_from_parent);
+        let world_from_local = object.transform().then(world_from_parent);
         match &object.shape {
             Shape::Csg {
                 operation: CsgOperation::Union,
@@ -370,7 +370,7 @@ impl Builder {
                 && object.bounded_by.is_empty() =>
             {
                 let appearance = self.appearance(object, &world_from_local, inherited);
-                enclosing_unions.push(object.transform.outer_from_inner);
+                enclosing_unions.push(object.transform().outer_from_inner);
                 for child in children {
                     self.add_top_level(
                         child,
@@ -461,7 +461,7 @@ impl Builder {
         inherited_inversion: Inversion,
         leaves: &mut Vec<Leaf>,
     ) -> CsgNode {
-        let world_from_local = object.transform.then(world_from_parent);
+        let world_from_local = object.transform().then(world_from_parent);
         let appearance = self.appearance(object, &world_from_local, inherited);
         let inversion = Inversion {
             odd: inherited_inversion.odd != object.inverse,

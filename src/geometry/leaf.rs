@@ -117,12 +117,15 @@ impl LocalShape {
                 radius,
                 hole_radius,
             } => Disc::new(centre, normal, radius, hole_radius).map(Self::Disc),
-            Shape::Quadric { coefficients } => {
-                Quadric::new(coefficients).map(|quadric| Self::Quadric(Box::new(quadric)))
+            Shape::Quadric { ref coefficients } => {
+                Quadric::new(**coefficients).map(|quadric| Self::Quadric(Box::new(quadric)))
             }
-            Shape::Triangle { corners } => Triangle::new(corners).map(Self::Triangle),
-            Shape::SmoothTriangle { corners, normals } => {
-                SmoothTriangle::new(corners, normals).map(|t| Self::SmoothTriangle(Box::new(t)))
+            Shape::Triangle { ref corners } => Triangle::new(**corners).map(Self::Triangle),
+            Shape::SmoothTriangle {
+                ref corners,
+                ref normals,
+            } => {
+                SmoothTriangle::new(**corners, **normals).map(|t| Self::SmoothTriangle(Box::new(t)))
             }
             Shape::Polygon(ref polygon) => {
                 Polygon::new(&polygon.outlines).map(|p| Self::Polygon(Box::new(p)))

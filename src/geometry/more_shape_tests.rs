@@ -131,13 +131,17 @@ fn mesh_instances_share_geometry_and_keep_their_transforms() {
         normals: None,
     }]));
     let mut near = Object::new(Shape::Mesh(Arc::clone(&mesh)));
-    near.transform = crate::scene::Transform::translation(DVec3::new(0.0, 0.0, 1.0));
+    near.set_transform(crate::scene::Transform::translation(DVec3::new(
+        0.0, 0.0, 1.0,
+    )));
     let mut far = Object::new(Shape::Mesh(Arc::clone(&mesh)));
-    far.transform = crate::scene::Transform::scaling(DVec3::new(2.0, 2.0, 2.0))
-        .unwrap()
-        .then(&crate::scene::Transform::translation(DVec3::new(
-            0.0, 0.0, 3.0,
-        )));
+    far.set_transform(
+        crate::scene::Transform::scaling(DVec3::new(2.0, 2.0, 2.0))
+            .unwrap()
+            .then(&crate::scene::Transform::translation(DVec3::new(
+                0.0, 0.0, 3.0,
+            ))),
+    );
     let world = World::build(&scene_of(vec![near, far]));
     assert_eq!(world.object_count(), 2);
     let along_z = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);

@@ -75,13 +75,13 @@ fn solid_shapes() -> Vec<(&'static str, Shape)> {
         (
             "ellipsoid quadric",
             Shape::Quadric {
-                coefficients: [1.0, 2.0, 0.5, 0.2, 0.0, -0.3, 0.1, 0.0, 0.2, -1.0],
+                coefficients: Box::new([1.0, 2.0, 0.5, 0.2, 0.0, -0.3, 0.1, 0.0, 0.2, -1.0]),
             },
         ),
         (
             "hyperboloid quadric",
             Shape::Quadric {
-                coefficients: [1.0, -1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -0.5],
+                coefficients: Box::new([1.0, -1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -0.5]),
             },
         ),
     ]
@@ -159,11 +159,11 @@ fn disc_and_triangle_hits() {
         hole_radius: 0.3,
     };
     let triangle = Shape::Triangle {
-        corners: [
+        corners: Box::new([
             DVec3::new(-1.0, -0.5, 0.2),
             DVec3::new(1.0, -0.4, 0.0),
             DVec3::new(0.1, 1.0, -0.3),
-        ],
+        ]),
     };
     for (leaf, _) in placements(&disc, &mut random) {
         for _ in 0..2000 {
@@ -261,11 +261,11 @@ fn known_answers() {
         ),
         (
             Shape::Triangle {
-                corners: [
+                corners: Box::new([
                     DVec3::new(-1.0, -1.0, 0.5),
                     DVec3::new(1.0, -1.0, 0.5),
                     DVec3::Y,
-                ],
+                ]),
             },
             5.25,
             DVec3::new(0.0, 1.0, 4.0).normalize(),
@@ -500,16 +500,16 @@ fn degenerate_shapes_are_empty_and_never_panic() {
             hole_radius: 2.0,
         },
         Shape::Quadric {
-            coefficients: [0.0; 10],
+            coefficients: Box::new([0.0; 10]),
         },
         Shape::Quadric {
-            coefficients: [nan; 10],
+            coefficients: Box::new([nan; 10]),
         },
         Shape::Triangle {
-            corners: [DVec3::ZERO, DVec3::X, DVec3::X * 2.0],
+            corners: Box::new([DVec3::ZERO, DVec3::X, DVec3::X * 2.0]),
         },
         Shape::Triangle {
-            corners: [DVec3::ZERO; 3],
+            corners: Box::new([DVec3::ZERO; 3]),
         },
     ];
     let mut random = Random::new(0x5eed_0005);

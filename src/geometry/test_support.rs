@@ -167,14 +167,14 @@ pub fn random_shape(random: &mut Random) -> Shape {
             hole_radius: random.range(0.0, 0.2),
         },
         6 => Shape::Triangle {
-            corners: [random.vector(1.0), random.vector(1.0), random.vector(1.0)],
+            corners: Box::new([random.vector(1.0), random.vector(1.0), random.vector(1.0)]),
         },
         7 => Shape::Plane {
             normal: random.unit_vector(),
             distance: random.range(-0.5, 0.5),
         },
         8 => Shape::Quadric {
-            coefficients: [
+            coefficients: Box::new([
                 random.range(0.5, 2.0),
                 random.range(-1.0, 2.0),
                 random.range(0.5, 2.0),
@@ -185,7 +185,7 @@ pub fn random_shape(random: &mut Random) -> Shape {
                 random.range(-0.3, 0.3),
                 random.range(-0.3, 0.3),
                 -random.range(0.3, 1.0),
-            ],
+            ]),
         },
         _ => Shape::Sphere {
             centre: random.vector(1.0),
@@ -204,7 +204,7 @@ pub fn random_csg(random: &mut Random, depth: usize) -> Object {
             } else {
                 marked(random_shape(random), random.next())
             };
-            child.transform = random.transform();
+            child.set_transform(random.transform());
             child.inverse = random.next() < 0.15;
             child
         })

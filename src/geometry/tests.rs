@@ -176,11 +176,11 @@ fn inversion_flips_normals_and_changes_unions() {
     // Triangles cannot be inverted: subtracting one removes everything of the first child.
     let triangle = marked(
         Shape::Triangle {
-            corners: [
+            corners: Box::new([
                 DVec3::new(0.0, -5.0, -5.0),
                 DVec3::new(0.0, 5.0, -5.0),
                 DVec3::new(0.0, 0.0, 5.0),
-            ],
+            ]),
         },
         0.5,
     );
@@ -196,11 +196,13 @@ fn transformed_csg_children_compose() {
     // A union scaled by 2 and moved to x = 10 holding A moved by +1: A's centre ends at
     // (10 + 2 * 0.5, 0, 0) = (11, 0, 0) with radius 2.
     let mut child = sphere_a();
-    child.transform = Transform::translation(DVec3::X);
+    child.set_transform(Transform::translation(DVec3::X));
     let mut group = csg(CsgOperation::Intersection, vec![child]);
-    group.transform = Transform::scaling(DVec3::splat(2.0))
-        .unwrap()
-        .then(&Transform::translation(DVec3::new(10.0, 0.0, 0.0)));
+    group.set_transform(
+        Transform::scaling(DVec3::splat(2.0))
+            .unwrap()
+            .then(&Transform::translation(DVec3::new(10.0, 0.0, 0.0))),
+    );
     let world = World::build(&scene_of(vec![group]));
     let hits = all_hits(&world, &along_x());
     let distances: Vec<f64> = hits.iter().map(|hit| hit.distance).collect();
@@ -281,7 +283,7 @@ fn materials_inherit_and_share_textures() {
         ..Interior::default()
     }));
     let world_from_group = Transform::translation(DVec3::new(0.0, 0.0, 10.0));
-    group.transform = world_from_group;
+    group.set_transform(world_from_group);
     let plain = Object::new(Shape::Sphere {
         centre: DVec3::Y * 5.0,
         radius: 1.0,
@@ -383,15 +385,21 @@ fn wide_csg_nodes_index_their_children_exactly() {
                 };
             }
             let scale = Transform::scaling(DVec3::splat(0.3)).unwrap();
-            child.transform = random
-                .transform()
-                .then(&scale)
-                .then(&Transform::translation(random.vector(2.5)));
+            child.set_transform(
+                random
+                    .transform()
+                    .then(&scale)
+                    .then(&Transform::translation(random.vector(2.5))),
+            );
             child.inverse = random.next() < 0.1;
             children.push(child);
         }
         let mut object = csg(operation, children);
-        object.transform = Transform::translation(DVec3::new(place as f64 * 8.0, 0.0, 0.0));
+        object.set_transform(Transform::translation(DVec3::new(
+            place as f64 * 8.0,
+            0.0,
+            0.0,
+        )));
         object.inverse = place == 4;
         objects.push(object);
     }
@@ -433,13 +441,13 @@ fn bvh_matches_brute_force() {
         }
         let mut transform = random.transform();
         transform = transform.then(&Transform::translation(random.vector(30.0)));
-        object.transform = transform;
+        object.set_transform(transform);
         object.inverse = random.next() < 0.05;
         objects.push(object);
     }
     for _ in 0..60 {
         let mut object = random_csg(&mut random, 2);
-        object.transform = Transform::translation(random.vector(30.0));
+        object.set_transform(Transform::translation(random.vector(30.0)));
         object.inverse = random.next() < 0.1;
         objects.push(object);
     }
@@ -504,7 +512,7 @@ fn degenerate_scenes_never_panic() {
         csg(
             CsgOperation::Merge,
             vec![Object::new(Shape::Quadric {
-                coefficients: [nan; 10],
+                coefficients: Box::new([nan; 10]),
             })],
         ),
         csg(CsgOperation::Union, vec![csg(CsgOperation::Union, vec![])]),
@@ -520,10 +528,10 @@ fn degenerate_scenes_never_panic() {
         centre: DVec3::ZERO,
         radius: 1.0,
     });
-    singular.transform = broken;
+    singular.set_transform(broken);
     objects.push(singular.clone());
     let mut singular_group = csg(CsgOperation::Intersection, vec![singular, sphere_a()]);
-    singular_group.transform = broken;
+    singular_group.set_transform(broken);
     objects.push(singular_group);
     let mut textured = Object::new(Shape::Box {
         corner1: DVec3::splat(nan),

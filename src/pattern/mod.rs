@@ -305,12 +305,11 @@ impl PatternSpec {
 
     /// True for the patterns that use the classic turbulence inside their formula instead
     /// of moving the point with it. (The spirals do both, measured: the point is moved, then
-    /// the scalar turbulence at the moved point is added.)
+    /// the scalar turbulence at the moved point is added. Agate too, measured: `agate
+    /// turbulence t` equals `agate warp { turbulence t }`; its own `agate_turb` stirring takes
+    /// only octaves, omega and lambda from the classic turbulence.)
     fn handles_own_turbulence(&self) -> bool {
-        matches!(
-            self.kind,
-            PatternKind::Marble | PatternKind::Wood | PatternKind::Agate { .. }
-        )
+        matches!(self.kind, PatternKind::Marble | PatternKind::Wood)
     }
 
     /// The point the raw pattern is evaluated at: through the warps and the

@@ -104,7 +104,7 @@ impl Lowerer {
                     Rule::pos => UnaryOp::Plus,
                     _ => UnaryOp::Not,
                 };
-                Expr::Unary(op, Box::new(operand), span)
+                Expr::Unary(op, Rc::new(operand), span)
             })
             .map_infix(|lhs, op, rhs| {
                 let span = lhs.span().join(rhs.span());
@@ -114,7 +114,7 @@ impl Lowerer {
                     Rule::mul => BinaryOp::Multiply,
                     _ => BinaryOp::Divide,
                 };
-                Expr::Binary(op, Box::new(lhs), Box::new(rhs), span)
+                Expr::Binary(op, Rc::new(lhs), Rc::new(rhs), span)
             })
             .parse(pair.into_inner())
     }
@@ -125,7 +125,7 @@ impl Lowerer {
         let logical = self.logical(inner.next().expect("full_expr has a condition"));
         match (inner.next(), inner.next()) {
             (Some(a), Some(b)) => Expr::Conditional(
-                Box::new((logical, self.full_expr(a), self.full_expr(b))),
+                Rc::new((logical, self.full_expr(a), self.full_expr(b))),
                 span,
             ),
             _ => logical,
@@ -157,7 +157,7 @@ impl Lowerer {
                 _ => BinaryOp::Greater,
             };
             let span = lhs.span().join(rhs.span());
-            lhs = Expr::Binary(op, Box::new(lhs), Box::new(rhs), span);
+            lhs = Expr::Binary(op, Rc::new(lhs), Rc::new(rhs), span);
         }
         lhs
     }
@@ -170,11 +170,11 @@ impl Lowerer {
             value = match post.as_rule() {
                 Rule::member => {
                     let name = post.into_inner().next().map(|w| w.as_str()).unwrap_or("");
-                    Expr::Member(Box::new(value), Rc::from(name), span)
+                    Expr::Member(Rc::new(value), Rc::from(name), span)
                 }
                 _ => {
                     let index = self.full_expr(post.into_inner().next().expect("index"));
-                    Expr::Index(Box::new(value), Box::new(index), span)
+                    Expr::Index(Rc::new(value), Rc::new(index), span)
                 }
             };
         }
@@ -578,10 +578,18 @@ impl Lowerer {
             }
             Rule::write => {
                 let handle = Rc::from(inner.next().expect("handle").as_str());
-                let values = inner
-                    .filter(|p| p.as_rule() == Rule::full_expr)
-                    .map(|p| self.full_expr(p))
-                    .collect();
+                let mut values = Vec::new();
+                let mut binary = None;
+                for p in inner {
+                    match p.as_rule() {
+                        Rule::write_type => binary = BinaryInteger::from_keyword(p.as_str()),
+                        Rule::full_expr => values.push(WriteValue {
+                            binary: binary.take(),
+                            value: self.full_expr(p),
+                        }),
+                        _ => {}
+                    }
+                }
                 DirectiveKind::FileWrite { handle, values }
             }
             other => unreachable!("grammar rule {other:?} is not a directive"),

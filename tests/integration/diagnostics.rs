@@ -418,6 +418,32 @@ fn material_map_without_textures_is_an_error() {
 }
 
 #[test]
+fn binary_write_of_a_string_names_the_type() {
+    let dir = crate::scratch("binary-write-string");
+    let scene = dir.join("binary_write.pov");
+    std::fs::write(
+        &scene,
+        "#fopen Out \"out.bin\" write\n#write (Out, uint8 65, uint16be \"text\")\n",
+    )
+    .expect("write scene");
+    let evaluated = evaluate(&scene);
+    let error = evaluated
+        .diagnostics
+        .iter()
+        .find(|d| d.severity == Severity::Error)
+        .expect("an error");
+    let (line, column) = evaluated
+        .sources
+        .line_column(error.span.file, error.span.start);
+    let text = durer::report::render_plain(error, &evaluated.sources);
+    assert_eq!((line, column), (2, 33), "{text}");
+    assert!(
+        text.contains("binary `#write` needs a float or a vector, found a string"),
+        "{text}"
+    );
+}
+
+#[test]
 fn mesh2_texture_index_out_of_range_names_the_list_size() {
     check(
         "mesh2_texture_index",

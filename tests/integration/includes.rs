@@ -162,6 +162,23 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         include_str!("../../src/eval/stdlib/metals.inc"),
     ),
     ("skies.inc", include_str!("../../src/eval/stdlib/skies.inc")),
+    (
+        "textures.inc",
+        include_str!("../../src/eval/stdlib/textures.inc"),
+    ),
+    (
+        "woodmaps.inc",
+        include_str!("../../src/eval/stdlib/woodmaps.inc"),
+    ),
+    ("woods.inc", include_str!("../../src/eval/stdlib/woods.inc")),
+    (
+        "stones1.inc",
+        include_str!("../../src/eval/stdlib/stones1.inc"),
+    ),
+    (
+        "stones2.inc",
+        include_str!("../../src/eval/stdlib/stones2.inc"),
+    ),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
@@ -175,6 +192,7 @@ const APPEARANCE_KINDS: &[&str] = &[
     "sky_sphere",
     "sphere",
     "union",
+    "color_map",
 ];
 
 /// (name, kind) for each identifier an embedded file declares; the kind is one of
@@ -290,6 +308,9 @@ fn showcase(name: &str, kind: &str) -> String {
         ),
         "material" => format!("{ball} material {{ {name} }} }}"),
         "sky_sphere" => format!("sky_sphere {{ {name} }} {ball} pigment {{ rgb 0.5 }} }}"),
+        "color_map" => {
+            format!("{ball} pigment {{ gradient y color_map {{ {name} }} scale 0.5 }} }}")
+        }
         _ => format!("object {{ {name} }}"),
     };
     format!(
@@ -363,4 +384,710 @@ fn embedded_appearances_render_like_povray() {
             assert!(a == b, "{file}: {name} renders differently from POV-Ray's");
         }
     }
+}
+
+/// Calls of the pattern macros of textures.inc, each with the turn that brings the
+/// macro's plane to face the camera.
+const TEXTURE_MACRO_CALLS: &[(&str, &str)] = &[
+    ("Tiles_Ptrn()", ""),
+    ("Tiles_Ptrn()", "scale <0.7, 0.4, 1> rotate 30*z"),
+    ("Hex_Tiles_Ptrn()", "rotate -90*x"),
+    ("Hex_Tiles_Ptrn()", "rotate -90*x scale 0.6"),
+    ("Star_Ptrn(1, 5, 2)", ""),
+    ("Star_Ptrn(1.4, 7, 3)", ""),
+    ("Star_Ptrn(1.5, 6, 1)", "rotate 10*z"),
+    ("Irregular_Bricks_Ptrn(0.1, 1, 0.5, 0.5)", "scale 0.5"),
+    ("Irregular_Bricks_Ptrn(0.05, 2, 0.8, 0.2)", "scale 0.4"),
+];
+
+/// What durer makes of a flat, self-lit panel coloured by the pattern `call`: its image,
+/// or the messages of its errors when durer cannot evaluate it.
+fn render_texture_macro(
+    call: &str,
+    turn: &str,
+    dir: &std::path::Path,
+    installed: bool,
+) -> Result<durer::render::Image, Vec<String>> {
+    let path = dir.join("macro.pov");
+    let scene = format!(
+        "#version 3.7;\n#include \"textures.inc\"\n\
+         camera {{ orthographic location <0, 0, -10> look_at 0 right 6*x up 4.5*y }}\n\
+         box {{ <-4, -3, 0>, <4, 3, 1>\n\
+           pigment {{ {call} color_map {{ [0 rgb <0.2, 0.1, 0>] [0.5 rgb <0.9, 0.5, 0.2>] [1 rgb 1] }} {turn} }}\n\
+           finish {{ ambient 1 diffuse 0 }}\n\
+         }}\n"
+    );
+    std::fs::write(&path, scene).expect("write scene");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: installed,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(&path, options);
+    let errors: Vec<String> = evaluated
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Error)
+        .map(|d| d.message.clone())
+        .collect();
+    match evaluated.scene {
+        Some(mut scene) if errors.is_empty() => {
+            let world =
+                durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+            let options = durer::render::RenderOptions {
+                width: 40,
+                height: 30,
+                antialias: None,
+            };
+            Ok(durer::render::render(&scene, &world, &options, &|_| {}))
+        }
+        _ => Err(errors),
+    }
+}
+
+/// The pattern macros of durer's textures.inc give what POV-Ray's give: the same image, or
+/// (where durer lacks a feature a macro needs) the same errors.
+#[test]
+fn embedded_texture_macros_match_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    let ours_dir = scratch("texture-macros-ours");
+    let theirs_dir = scratch("texture-macros-theirs");
+    for (call, turn) in TEXTURE_MACRO_CALLS {
+        let ours = render_texture_macro(call, turn, &ours_dir, false);
+        let theirs = render_texture_macro(call, turn, &theirs_dir, true);
+        match (&ours, &theirs) {
+            (Ok(a), Ok(b)) => assert!(a == b, "{call} renders differently from POV-Ray's"),
+            (Err(a), Err(b)) => assert_eq!(a, b, "{call} fails differently from POV-Ray's"),
+            _ => panic!(
+                "{call}: embedded gives {:?}, POV-Ray's {:?}",
+                ours.as_ref().err(),
+                theirs.as_ref().err()
+            ),
+        }
+    }
+}
+
+/// Like POV-Ray's, durer's include files read their declarations as version 3.5 and then set the including file's version again, which
+/// counts as the scene declaring one (gamma handling depends on that): a scene without
+/// `#version` renders the same with either file.
+#[test]
+fn embedded_files_set_the_version_like_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    let files = EMBEDDED_FILES.iter().chain(EMBEDDED_LIBRARIES);
+    for file in files.map(|(file, _)| *file).chain(["colors.inc"]) {
+        let render = |installed: bool| {
+            let dir = scratch(&format!("version-{file}-{installed}"));
+            let path = dir.join("scene.pov");
+            let scene = format!(
+                "#include \"{file}\"\n\
+                 camera {{ location <0, 0, -3> look_at 0 }}\n\
+                 light_source {{ <2, 4, -5>, rgb 1 }}\n\
+                 sphere {{ 0, 1 pigment {{ rgb <0.5, 0.3, 0.2> }} }}\n"
+            );
+            std::fs::write(&path, scene).expect("write scene");
+            let options = durer::eval::EvalOptions {
+                search_installed_povray: installed,
+                ..Default::default()
+            };
+            let mut scene = evaluate_with(&path, options).scene?;
+            let world =
+                durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+            let options = durer::render::RenderOptions {
+                width: 16,
+                height: 12,
+                antialias: None,
+            };
+            Some(durer::render::render(&scene, &world, &options, &|_| {}))
+        };
+        // Some of POV-Ray's files (skies.inc, stones1.inc) do not load on their own: they
+        // need colors.inc first. durer's do.
+        let ours = render(false).unwrap_or_else(|| panic!("{file}: the scene does not evaluate"));
+        if let Some(theirs) = render(true) {
+            assert!(
+                ours == theirs,
+                "{file}: a scene without #version renders differently"
+            );
+        }
+    }
+}
+
+/// durer's stones.inc only includes its two halves: without POV-Ray's files, the textures of
+/// both (first and last of each family) are declared after including it.
+#[test]
+fn embedded_stones_inc_loads_both_halves() {
+    let dir = scratch("embedded-stones");
+    let names = [
+        "T_Grnt0",
+        "T_Grnt29",
+        "T_Grnt0a",
+        "T_Grnt24a",
+        "T_Crack1",
+        "T_Crack4",
+        "T_Stone1",
+        "T_Stone24",
+        "T_Stone25",
+        "T_Stone44",
+        "g4",
+    ];
+    let mut scene = String::from("#include \"stones.inc\"\n#fopen Out \"found.txt\" write\n");
+    for name in names {
+        scene.push_str(&format!(
+            "#ifdef ({name}) #write (Out, \"{name}\\n\") #end\n"
+        ));
+    }
+    scene.push_str("#fclose Out\n");
+    let path = dir.join("stones.pov");
+    std::fs::write(&path, scene).expect("write scene");
+    evaluate_cleanly(&path, false, "stones.inc");
+    let found = std::fs::read_to_string(dir.join("found.txt")).expect("names written");
+    assert_eq!(found.lines().collect::<Vec<_>>(), names);
+}
+
+/// durer's embedded libraries of functions and macros. Each has a probe scene
+/// `tests/stdlib/NAME.pov` that calls what the file declares and writes the results to
+/// `probe.txt`, and POV-Ray's answers in `tests/stdlib/NAME.txt` (scripts/probe-stdlib.sh).
+const EMBEDDED_LIBRARIES: &[(&str, &str)] = &[
+    (
+        "functions.inc",
+        include_str!("../../src/eval/stdlib/functions.inc"),
+    ),
+    ("math.inc", include_str!("../../src/eval/stdlib/math.inc")),
+    (
+        "transforms.inc",
+        include_str!("../../src/eval/stdlib/transforms.inc"),
+    ),
+    (
+        "strings.inc",
+        include_str!("../../src/eval/stdlib/strings.inc"),
+    ),
+    ("rand.inc", include_str!("../../src/eval/stdlib/rand.inc")),
+    (
+        "arrays.inc",
+        include_str!("../../src/eval/stdlib/arrays.inc"),
+    ),
+];
+
+/// Whether two lines of probe output agree: the same words, numbers equal to a millionth of
+/// their size (POV-Ray keeps colours and 5D vectors in single precision).
+fn probe_lines_agree(ours: &str, theirs: &str) -> bool {
+    let (a, b): (Vec<&str>, Vec<&str>) = (
+        ours.split_whitespace().collect(),
+        theirs.split_whitespace().collect(),
+    );
+    a.len() == b.len()
+        && a.iter()
+            .zip(&b)
+            .all(|(p, q)| match (p.parse::<f64>(), q.parse::<f64>()) {
+                (Ok(x), Ok(y)) => (x - y).abs() <= 1e-6 * y.abs().max(1.0),
+                _ => p == q,
+            })
+}
+
+/// Runs the probe scene of `file` with durer's embedded include files only and returns what
+/// it wrote.
+fn run_library_probe(file: &str) -> String {
+    let name = file.trim_end_matches(".inc");
+    let probe = crate::tests_folder()
+        .join("stdlib")
+        .join(format!("{name}.pov"));
+    let dir = scratch(&format!("library-{name}"));
+    let scene = dir.join(format!("{name}.pov"));
+    std::fs::copy(&probe, &scene).expect("copy probe scene");
+    evaluate_cleanly(&scene, false, file);
+    std::fs::read_to_string(dir.join("probe.txt")).expect("probe written")
+}
+
+/// Every function and macro of the embedded libraries gives POV-Ray's results: the probe
+/// scenes' output with durer's files equals POV-Ray's output with its own, line by line.
+#[test]
+fn embedded_libraries_give_povray_results() {
+    for (file, _) in EMBEDDED_LIBRARIES {
+        let ours = run_library_probe(file);
+        let expected = crate::tests_folder()
+            .join("stdlib")
+            .join(format!("{}.txt", file.trim_end_matches(".inc")));
+        let theirs = std::fs::read_to_string(&expected).expect("POV-Ray's probe output");
+        for (a, b) in ours.lines().zip(theirs.lines()) {
+            assert!(
+                probe_lines_agree(a, b),
+                "{file}: durer wrote `{a}`, POV-Ray `{b}`"
+            );
+        }
+        assert_eq!(ours.lines().count(), theirs.lines().count(), "{file}");
+    }
+}
+
+/// The names a standard include file's text declares with `#declare` or `#macro`, besides
+/// its include guard.
+fn library_names(text: &str) -> std::collections::BTreeSet<String> {
+    text.lines()
+        .map(str::trim_start)
+        .filter_map(|l| {
+            l.strip_prefix("#declare")
+                .or_else(|| l.strip_prefix("#macro"))
+        })
+        .filter_map(|rest| {
+            let name: String = rest
+                .trim_start()
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            (!name.is_empty() && !name.to_ascii_uppercase().ends_with("_INC_TEMP")).then_some(name)
+        })
+        .collect()
+}
+
+/// The embedded libraries declare exactly the functions, macros and variables of POV-Ray's
+/// files of the same names.
+#[test]
+fn embedded_libraries_declare_povray_names() {
+    let Some(folder) = povray_include_folder() else {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    };
+    for (file, text) in EMBEDDED_LIBRARIES {
+        let bytes = std::fs::read(folder.join(file)).expect("POV-Ray's file");
+        let theirs = library_names(&String::from_utf8_lossy(&bytes));
+        let ours = library_names(text);
+        let missing: Vec<_> = theirs.difference(&ours).collect();
+        let extra: Vec<_> = ours.difference(&theirs).collect();
+        assert!(
+            missing.is_empty() && extra.is_empty(),
+            "{file}: missing {missing:?}, not in POV-Ray's {extra:?}"
+        );
+    }
+}
+
+/// arrays.inc's ARRAYS_WriteDF3 writes the density files POV-Ray writes: the three sizes as
+/// big-endian 16-bit numbers, then each value scaled to 8 or 16 bits, rounded, x fastest.
+#[test]
+fn embedded_arrays_write_povray_density_files() {
+    let dir = scratch("library-df3");
+    let scene = dir.join("df3.pov");
+    std::fs::write(
+        &scene,
+        "#include \"arrays.inc\"\n\
+         #declare Grid = array[2][3] {{0, 0.5, 1}, {0.25, 0.75, 0.1}}\n\
+         ARRAYS_WriteDF3(Grid, \"grid8.df3\", 8)\n\
+         ARRAYS_WriteDF3(Grid, \"grid16.df3\", 16)\n",
+    )
+    .expect("write scene");
+    evaluate_cleanly(&scene, false, "arrays.inc");
+    // The bytes povray 3.7 writes for the same scene.
+    let eight = [0, 2, 0, 3, 0, 1, 0x00, 0x40, 0x80, 0xbf, 0xff, 0x1a];
+    let sixteen = [
+        0, 2, 0, 3, 0, 1, 0x00, 0x00, 0x40, 0x00, 0x80, 0x00, 0xbf, 0xff, 0xff, 0xff, 0x19, 0x9a,
+    ];
+    assert_eq!(
+        std::fs::read(dir.join("grid8.df3")).expect("8-bit file"),
+        eight
+    );
+    assert_eq!(
+        std::fs::read(dir.join("grid16.df3")).expect("16-bit file"),
+        sixteen
+    );
+}
+
+/// durer's embedded shape files, with their text. They have their own tests: POV-Ray's
+/// shapes2.inc and shapesq.inc use shapes of shapes_old.inc without including it, and
+/// shapes.inc is mostly macros.
+const SHAPE_FILES: &[(&str, &str)] = &[
+    (
+        "shapes_old.inc",
+        include_str!("../../src/eval/stdlib/shapes_old.inc"),
+    ),
+    (
+        "shapes.inc",
+        include_str!("../../src/eval/stdlib/shapes.inc"),
+    ),
+    (
+        "shapes2.inc",
+        include_str!("../../src/eval/stdlib/shapes2.inc"),
+    ),
+    (
+        "shapesq.inc",
+        include_str!("../../src/eval/stdlib/shapesq.inc"),
+    ),
+];
+
+/// The identifiers a shape file declares (`#declare Name = ...` at the start of a line),
+/// without its include guard, each with whether it holds a number.
+fn declared_shapes(text: &str) -> Vec<(String, bool)> {
+    text.lines()
+        .filter_map(|l| l.strip_prefix("#declare "))
+        .filter_map(|l| l.split_once('='))
+        .map(|(name, value)| {
+            let value = value.trim_start();
+            let number = value.starts_with(|c: char| c.is_ascii_digit() || c == '-');
+            (name.trim().to_string(), number)
+        })
+        .filter(|(name, _)| !name.ends_with("_Temp"))
+        .collect()
+}
+
+/// The lines opening a scene that uses `file`: `#version`, then durer's embedded file alone,
+/// or POV-Ray's after its shapes.inc (which its shapes2.inc and shapesq.inc need, as scenes know).
+fn shape_includes(file: &str, installed: bool) -> String {
+    if installed {
+        format!("#version 3.7;\n#include \"shapes.inc\"\n#include \"{file}\"\n")
+    } else {
+        format!("#version 3.7;\n#include \"{file}\"\n")
+    }
+}
+
+/// Evaluates and renders a small lit scene: `includes` (with `#version` if any), then `body`. Embedded include files
+/// only unless `installed`.
+fn render_shape_scene(
+    dir: &std::path::Path,
+    name: &str,
+    includes: &str,
+    body: &str,
+    installed: bool,
+) -> durer::render::Image {
+    let path = dir.join(format!("{name}.pov"));
+    let scene = format!(
+        "{includes}\
+         camera {{ location <3, 4, -9> look_at <0, 0.3, 0> angle 40 }}\n\
+         light_source {{ <-5, 8, -6>, rgb 1 }}\n\
+         light_source {{ <6, 3, -3>, rgb 0.5 }}\n\
+         background {{ rgb <0.2, 0.3, 0.5> }}\n\
+         {body}\n"
+    );
+    std::fs::write(&path, scene).expect("write scene");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: installed,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(&path, options);
+    let errors: Vec<String> = evaluated
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Error)
+        .map(|d| durer::report::render_plain(d, &evaluated.sources))
+        .collect();
+    let Some(mut scene) = evaluated.scene.filter(|_| errors.is_empty()) else {
+        panic!("{name} does not evaluate:\n{}", errors.join("\n"));
+    };
+    let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+    let options = durer::render::RenderOptions {
+        width: 40,
+        height: 30,
+        antialias: None,
+    };
+    durer::render::render(&scene, &world, &options, &|_| {})
+}
+
+/// The statement showing a declared shape, tinted so that its shading shows.
+fn shape_showcase(name: &str) -> String {
+    format!("object {{ {name} pigment {{ rgb <1, 0.6, 0.3> }} }}")
+}
+
+#[test]
+fn embedded_shape_files_load_without_povray() {
+    for (file, text) in SHAPE_FILES {
+        let dir = scratch(&format!("embedded-shapes-{file}"));
+        for (name, number) in declared_shapes(text) {
+            let body = if number {
+                format!("#if ({name} < 1) #error \"{name}\" #end")
+            } else {
+                shape_showcase(&name)
+            };
+            render_shape_scene(&dir, &name, &shape_includes(file, false), &body, false);
+        }
+    }
+}
+
+/// Every shape the files declare renders the same with durer's file and with POV-Ray's.
+#[test]
+fn embedded_shapes_render_like_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    for (file, text) in SHAPE_FILES {
+        let ours = scratch(&format!("shapes-ours-{file}"));
+        let theirs = scratch(&format!("shapes-theirs-{file}"));
+        for (name, number) in declared_shapes(text) {
+            let body = if number {
+                format!("sphere {{ <{name}, 0, 0>, 0.5 pigment {{ rgb 1 }} }}")
+            } else {
+                shape_showcase(&name)
+            };
+            let a = render_shape_scene(&ours, &name, &shape_includes(file, false), &body, false);
+            let b = render_shape_scene(&theirs, &name, &shape_includes(file, true), &body, true);
+            assert!(a == b, "{file}: {name} renders differently from POV-Ray's");
+        }
+    }
+}
+
+/// Calls of shapes.inc's object macros, each with a few argument sets (the Round_, Wire_
+/// and Circle_ ones also with arguments that make them warn); `FONT` stands for a font
+/// file.
+const SHAPE_MACRO_CALLS: &[&str] = &[
+    "Center_Object(box { 0, <1, 2, 0.5> }, x + z)",
+    "Align_Object(sphere { 0, 0.5 }, -y, <1, 0, 0>)",
+    "Wedge(60)",
+    "Wedge(180)",
+    "Wedge(250)",
+    "Wedge(-20)",
+    "Spheroid(<0.5, 0.5, 0>, <1, 0.5, 0.7>)",
+    "Spheroid(<0, 1, 0>, 0.8)",
+    "Supertorus(1, 0.3, 0.5, 1.5, 0.001, 10)",
+    "Supertorus(1.2, 0.4, 1, 1, 0.001, 0.5)",
+    "Supercone(<0, -1.5, 0>, 1, 2, <0, 1.5, 0>, 1, 0.5)",
+    "Supercone(<0, 0, 1>, 0.5, 1, <0, 0, -1>, 1, 0.5)",
+    "Supercone(<1, 0, 0>, 0.5, 1, <-1, 1, 0.5>, 0.2, 0.7)",
+    "Connect_Spheres(<-1, 0, 0>, 1, <1, 1, 0>, 0.5)",
+    "Wire_Box_Union(<-1, 0, -1>, <1, 1, 1>, 0.1)",
+    "Wire_Box_Merge(<1, 1, 1>, <-1, 0.1, -1>, 0.1)",
+    "Wire_Box(<-1, 0, 0>, <1, 1, 0>, 0.1, false)",
+    "Round_Box_Union(<-1, 0, -1>, <1, 1, 1>, 0.2)",
+    "Round_Box_Merge(<-1, 0, -1>, <1, 0.2, 1>, 0.2)",
+    "Round_Cylinder_Union(<-1, 0, 0>, <1, 1, 0.5>, 0.6, 0.1)",
+    "Round_Cylinder_Merge(<-1, 0, 0>, <1, 1, 0.5>, 0.1, 0.3)",
+    "Round_Cone_Union(<-1, 0, 0>, 0.8, <1, 1, 0.5>, 0.3, 0.1)",
+    "Round_Cone_Merge(<-1, 0, 0>, 0.3, <1, 1, 0.5>, 0.8, 0.1)",
+    "Round_Cone(<-1, 0, 0>, 0.3, <1, 1, 0.5>, 0.8, 0.5, true)",
+    "Round_Cone2_Union(<-1, 0, 0>, 0.8, <1, 1, 0.5>, 0.3)",
+    "Round_Cone2_Merge(<-1, 0, 0>, 0.3, <1, 1, 0.5>, 0.6)",
+    "Round_Cone3_Union(<-1, 0, 0>, 0.8, <1, 1, 0.5>, 0.3)",
+    "Round_Cone3_Merge(<-1, 0, 0>, 0.3, <1, 1, 0.5>, 0.6)",
+    "union { Quad(<-1, 0, 0>, <1, 0, 0>, <1, 1, 0.5>, <-1, 1, 0>) }",
+    "union { Smooth_Quad(<-1, 0, 0>, <0, 0, -1>, <1, 0, 0>, <0.3, 0, -1>, <1, 1, 0.5>, <0, 0.5, -1>, <-1, 1, 0>, <-0.3, 0, -1>) }",
+    "Bevelled_Text(FONT, \"Hi!\", 5, 35, 0.1, 0.4, 0, false)",
+    "Bevelled_Text(FONT, \"Ab\", 8, 20, 0.05, 0.3, 0.02, true)",
+    "Circle_Text(FONT, \"Hello world\", 0.4, 0, 0.1, 1.5, false, Align_Center, 90)",
+    "Circle_Text(FONT, \"Hello\", 0.4, 0.05, 0.1, 1.2, true, Align_Left, 45)",
+    "Circle_Text(FONT, \"Hello\", 0.4, 0.05, 0.1, 1.2, false, Align_Right, 0)",
+    "Circle_Text_Valigned(FONT, \"Ring text\", 0.4, 0, 0.1, 1.5, true, Align_Right, 200, -90)",
+    "Circle_Text_Valigned(FONT, \"Ring\", 0.4, 0, 0.1, 1.5, false, Align_Center, 90, 90)",
+];
+
+/// Each object macro of shapes.inc makes an object rendering the same with durer's file
+/// and with POV-Ray's.
+#[test]
+fn embedded_shape_macros_render_like_povray() {
+    let Some(folder) = povray_include_folder() else {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    };
+    let font = format!("\"{}\"", folder.join("timrom.ttf").display());
+    let ours = scratch("shape-macros-ours");
+    let theirs = scratch("shape-macros-theirs");
+    for (index, call) in SHAPE_MACRO_CALLS.iter().enumerate() {
+        let body = format!(
+            "object {{ {} pigment {{ rgb <1, 0.6, 0.3> }} }}",
+            call.replace("FONT", &font)
+        );
+        let name = format!("call{index}");
+        let includes = "#version 3.7;\n#include \"shapes.inc\"\n";
+        let a = render_shape_scene(&ours, &name, includes, &body, false);
+        let b = render_shape_scene(&theirs, &name, includes, &body, true);
+        assert!(
+            a == b,
+            "{call} renders differently from POV-Ray's shapes.inc"
+        );
+    }
+}
+
+/// shapes.inc's query macros (Isect, IsectN, Extents, Text_Space, Text_Width) give the same
+/// values with durer's file as with POV-Ray's, hits and misses alike.
+#[test]
+fn embedded_shape_queries_match_povray() {
+    let Some(folder) = povray_include_folder() else {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    };
+    let font = folder.join("timrom.ttf");
+    let scene = format!(
+        "#include \"shapes.inc\"\n\
+         #fopen Out \"queries.txt\" write\n\
+         #declare Ball = sphere {{ 0, 1 }}\n\
+         #declare Tilted = box {{ -1, 1 rotate 30 * y }}\n\
+         #declare P = <9, 9, 9>;\n\
+         #declare N = <9, 9, 9>;\n\
+         #write (Out, Isect(<0, 0, -5>, z, Ball, P), \" \", P, \"\\n\")\n\
+         #write (Out, Isect(<0, 3, -5>, z, Ball, P), \" \", P, \"\\n\")\n\
+         #write (Out, IsectN(<0.3, 0.2, -5>, z, Tilted, P, N), \" \", P, \" \", N, \"\\n\")\n\
+         #write (Out, IsectN(<0.3, 5, -5>, z, Tilted, P, N), \" \", P, \" \", N, \"\\n\")\n\
+         #declare Low = 0;\n\
+         #declare High = 0;\n\
+         Extents(cone {{ 0, 1, y, 0.5 rotate 20 * z }}, Low, High)\n\
+         #write (Out, vstr(3, Low, \" \", 0, 9), \" \", vstr(3, High, \" \", 0, 9), \"\\n\")\n\
+         #declare Font = \"{}\";\n\
+         #write (Out, str(Text_Space(Font, \"Hello there\", 1.5, 0.1), 0, 12), \"\\n\")\n\
+         #write (Out, str(Text_Space(Font, \" \", 1, 0), 0, 12), \"\\n\")\n\
+         #write (Out, str(Text_Width(Font, \"Hello there\", 1.5, 0.1), 0, 12), \"\\n\")\n\
+         #write (Out, str(Text_Width(Font, \"W\", 2, 0), 0, 12), \"\\n\")\n\
+         #fclose Out\n",
+        font.display()
+    );
+    let run = |installed: bool| {
+        let dir = scratch(&format!("shape-queries-{installed}"));
+        let path = dir.join("queries.pov");
+        std::fs::write(&path, &scene).expect("write scene");
+        evaluate_cleanly(&path, installed, "shapes.inc queries");
+        std::fs::read_to_string(dir.join("queries.txt")).expect("queries written")
+    };
+    let ours = run(false);
+    assert_eq!(ours.lines().count(), 9, "{ours}");
+    assert_eq!(ours, run(true));
+}
+
+/// The HF_ macros, which durer cannot run from POV-Ray's shapes.inc (they interleave
+/// `#write` with braces), render tests/stdlib/shapes_hf.pov like POV-Ray did, and the
+/// meshes they write to files render like the ones they make directly.
+#[test]
+fn embedded_height_field_macros_render_like_povray() {
+    let path = crate::tests_folder().join("stdlib/shapes_hf.pov");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: false,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(&path, options);
+    let Some(mut scene) = evaluated.scene else {
+        panic!("shapes_hf.pov does not evaluate");
+    };
+    let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+    let reference = image::open(path.with_extension("png"))
+        .expect("shapes_hf.png")
+        .to_rgb8();
+    let options = durer::render::RenderOptions {
+        width: reference.width(),
+        height: reference.height(),
+        antialias: None,
+    };
+    let ours = durer::render::render(&scene, &world, &options, &|_| {});
+    let over = reference
+        .enumerate_pixels()
+        .filter(|(column, row, pixel)| {
+            let mine = ours.pixel(*column, *row).expect("same size");
+            (0..3).any(|c| mine[c].abs_diff(pixel[c]) > 24)
+        })
+        .count();
+    let total = (reference.width() * reference.height()) as usize;
+    assert!(
+        over * 50 <= total,
+        "{over} of {total} pixels differ from POV-Ray's render"
+    );
+
+    let dir = scratch("hf-files");
+    let ripple = "#declare Ripple = function (x, y, z) { sin(x * 5) * 0.1 + z * z * 0.2 }\n";
+    let calls = [
+        "HF_Square(Ripple, 0, 0, <8, 6>, 1, FILE, <-2, 0, -1>, <0, 0.5, 1>)",
+        "HF_Sphere(Ripple, 1, 0, 10, 1, FILE, <0.8, 1, 0>, 0.7, 0.3)",
+        "HF_Cylinder(Ripple, 0, 0, <8, 5>, 0, FILE, <1, -1, 0>, <1.4, 0, 0.3>, 0.5, 0.5)",
+        "HF_Torus(Ripple, 1, 0, 12, 1, FILE, 0.8, 0.2, 0.5)",
+    ];
+    for (index, call) in calls.iter().enumerate() {
+        let includes = format!("#version 3.7;\n#include \"shapes.inc\"\n{ripple}");
+        let direct = format!(
+            "object {{ {} pigment {{ rgb <1, 0.6, 0.3> }} }}",
+            call.replace("FILE", "\"\"")
+        );
+        let file = format!("mesh{index}.inc");
+        let written = format!(
+            "{}\nobject {{ #include \"{file}\" pigment {{ rgb <1, 0.6, 0.3> }} }}",
+            call.replace("FILE", &format!("\"{file}\""))
+        );
+        let a = render_shape_scene(&dir, &format!("direct{index}"), &includes, &direct, false);
+        let b = render_shape_scene(&dir, &format!("written{index}"), &includes, &written, false);
+        let differing = a
+            .pixels
+            .iter()
+            .zip(&b.pixels)
+            .filter(|(p, q)| (0..3).any(|c| p[c].abs_diff(q[c]) > 24))
+            .count();
+        assert!(
+            differing * 50 <= a.pixels.len(),
+            "{call}: the written mesh renders unlike the direct one"
+        );
+    }
+}
+
+/// Bad arguments to shapes.inc's macros stop with an error that says what is wrong, and
+/// the error's trace leads back to the call in the scene.
+#[test]
+fn embedded_shape_macros_report_bad_arguments() {
+    let cases = [
+        (
+            "Circle_Text(\"timrom.ttf\", \"\", 0.4, 0, 0.1, 1.5, false, Align_Center, 90)",
+            "Circle_Text: the text is empty",
+        ),
+        (
+            "Round_Cone2_Union(<0, 0, 0>, 1, <0.1, 0, 0>, 0.3)",
+            "Round_Cone2: one sphere lies inside the other",
+        ),
+        (
+            "Connect_Spheres(<0, 0, 0>, 1, <0.1, 0, 0>, 0.3)",
+            "Connect_Spheres: one sphere lies inside the other",
+        ),
+        (
+            "HF_Square(function { x }, 0, 0, <5, 1>, 0, \"\", <-1, 0, -1>, <1, 1, 1>)",
+            "Res must be at least 2",
+        ),
+    ];
+    let dir = scratch("shape-macro-errors");
+    for (index, (call, message)) in cases.iter().enumerate() {
+        let path = dir.join(format!("bad{index}.pov"));
+        std::fs::write(
+            &path,
+            format!("#include \"shapes.inc\"\n\nobject {{ {call} }}\n"),
+        )
+        .expect("write scene");
+        let options = durer::eval::EvalOptions {
+            search_installed_povray: false,
+            ..Default::default()
+        };
+        let evaluated = evaluate_with(&path, options);
+        let error = evaluated
+            .diagnostics
+            .iter()
+            .find(|d| d.severity == Severity::Error)
+            .unwrap_or_else(|| panic!("{call}: expected an error"));
+        let text = durer::report::render_plain(error, &evaluated.sources);
+        assert!(error.message.contains(message), "{call}:\n{text}");
+        let call_site = error.trace.last().expect("a macro trace").span;
+        let (line, column) = evaluated
+            .sources
+            .line_column(call_site.file, call_site.start);
+        assert_eq!((line, column), (3, 10), "{call}:\n{text}");
+    }
+}
+
+/// Like POV-Ray's files, durer's read their declarations as version 3.5 and then restore the
+/// including file's version, which counts as the scene's `#version`: a scene without one
+/// renders the same with either file.
+#[test]
+fn embedded_shape_files_set_the_version_like_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    let includes = "#include \"shapes.inc\"\n#include \"shapes2.inc\"\n#include \"shapesq.inc\"\n";
+    let body =
+        "object { Round_Box_Union(<-1, 0, -1>, <1, 1, 1>, 0.2) pigment { rgb <1, 0.6, 0.3> } }";
+    let ours = render_shape_scene(
+        &scratch("unversioned-ours"),
+        "unversioned",
+        includes,
+        body,
+        false,
+    );
+    let theirs = render_shape_scene(
+        &scratch("unversioned-theirs"),
+        "unversioned",
+        includes,
+        body,
+        true,
+    );
+    assert!(
+        ours == theirs,
+        "a scene without #version renders differently"
+    );
 }
