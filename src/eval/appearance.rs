@@ -34,6 +34,7 @@ impl Evaluator {
         let mut pattern: Option<(Pattern, Option<BlendMap<Texture>>, Span)> = None;
         let mut pattern_transform = Transform::IDENTITY;
         let mut average = false;
+        let mut uv_mapping = false;
         while let Some(item) = self.next_item(stream)? {
             if let Some(spec) = self.image_pattern(&item)? {
                 pattern = Some((spec, None, item.span()));
@@ -91,9 +92,7 @@ impl Evaluator {
                         }
                         texture.transform(&t);
                     }
-                    "uv_mapping" => {
-                        self.warn(*span, "`uv_mapping` is not supported yet; it is ignored");
-                    }
+                    "uv_mapping" => uv_mapping = true,
                     _ => return Err(self.unexpected_in(&item, "texture")),
                 },
                 Item::Block(block) => {
@@ -178,6 +177,9 @@ impl Evaluator {
                 map,
                 transform: pattern_transform,
             }));
+        }
+        if uv_mapping {
+            map_texture_by_uv(&mut texture);
         }
         Ok(texture)
     }
@@ -292,6 +294,7 @@ impl Evaluator {
         let mut colour_map: Option<Vec<(f64, Colour)>> = None;
         let mut average = false;
         let mut earlier_item = None;
+        let mut uv_mapping = false;
         while let Some(item) = self.next_item(stream)? {
             // `uv_mapping` may precede the pattern; nothing else may (POV-Ray).
             let earlier = match &item {
@@ -299,6 +302,11 @@ impl Evaluator {
                 Item::Keyword(word, _) if &**word == "uv_mapping" => earlier_item,
                 _ => earlier_item.replace(item.span()),
             };
+            // A uv-mapped pigment named here is modified unwrapped and wrapped again at the end.
+            if let Pigment::UvMapped(inner) = &mut pigment {
+                pigment = std::mem::replace(&mut **inner, Pigment::Solid(Colour::BLACK));
+                uv_mapping = true;
+            }
             if let Item::Keyword(word, _) = &item {
                 if &**word == "average" {
                     average = true;
@@ -398,9 +406,7 @@ impl Evaluator {
                     "quick_color" | "quick_colour" => {
                         let _ = self.expect_value(stream, "a colour")?;
                     }
-                    "uv_mapping" => {
-                        self.warn(*span, "`uv_mapping` is not supported yet; it is ignored");
-                    }
+                    "uv_mapping" => uv_mapping = true,
                     "poly_wave" => {
                         self.warn(
                             *span,
@@ -471,6 +477,9 @@ impl Evaluator {
             if let Some(map) = colour_map {
                 *entries = map;
             }
+        }
+        if uv_mapping && pigment.uv_mapped().is_none() {
+            pigment = Pigment::UvMapped(Box::new(pigment));
         }
         Ok(pigment)
     }
@@ -663,4 +672,25 @@ fn set_colour_component(colour: &mut Colour, keyword: &str, amount: f64) {
 /// POV-Ray's map for a pattern without one: black to white.
 fn grey_ramp() -> Vec<(f64, Colour)> {
     vec![(0.0, Colour::BLACK), (1.0, Colour::WHITE)]
+}
+
+/// Applies a texture's `uv_mapping` to the pigments of the texture and of the textures it is
+/// made of (normals keep following the 3D point).
+fn map_texture_by_uv(texture: &mut Texture) {
+    if !matches!(texture.pigment, Pigment::Solid(_) | Pigment::UvMapped(_)) {
+        let pigment = std::mem::replace(&mut texture.pigment, Pigment::Solid(Colour::BLACK));
+        texture.pigment = Pigment::UvMapped(Box::new(pigment));
+    }
+    if let Some(compound) = &mut texture.compound {
+        match Arc::make_mut(compound) {
+            CompoundTexture::Layered(layers) => layers.iter_mut().for_each(map_texture_by_uv),
+            CompoundTexture::Pattern { map, .. } => map.for_each_mut(map_texture_by_uv),
+            CompoundTexture::Average(entries) => entries
+                .iter_mut()
+                .for_each(|(_, entry)| map_texture_by_uv(entry)),
+            CompoundTexture::MaterialMap { textures, .. } => {
+                textures.iter_mut().for_each(map_texture_by_uv)
+            }
+        }
+    }
 }

@@ -340,7 +340,7 @@ impl Evaluator {
             Value::Pigment(pigment) => {
                 let mut texture = self.object_texture(object);
                 let mut pigment = Rc::unwrap_or_clone(pigment);
-                pigment.transform(&object.transform().inverse());
+                pigment.transform_with_object(&object.transform().inverse());
                 change_top_layer(&mut texture, |top| top.pigment = pigment);
                 object.texture = Some(Arc::new(texture));
             }
@@ -419,7 +419,7 @@ impl Evaluator {
     /// the object's local space so later transformations carry it along; layered on top of
     /// a texture the object already has.
     fn attach_texture(&mut self, object: &mut Object, mut texture: Texture) {
-        texture.transform(&object.transform().inverse());
+        texture.transform_with_object(&object.transform().inverse());
         // POV-Ray lays a texture given to an object that has one on top of it.
         let texture = match object.texture.take() {
             Some(below) => layered(vec![Texture::clone(&below), texture]),

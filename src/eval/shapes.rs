@@ -3,14 +3,15 @@
 //!
 //! In: the block's item stream, positioned after the keyword's brace. Out: the [`Shape`], with
 //! the stream left at the object modifiers that follow the shape's own data.
-//! Holds: bad counts and indices end in spanned diagnostics, never panics; features that durer
-//! leaves out (per-triangle textures, uv data) are warned about once and ignored.
+//! Holds: bad counts and indices end in spanned diagnostics, never panics. Meshes are read in
+//! `shapes/mesh.rs`.
 
 mod bicubic_patch;
 mod blob;
 mod function;
 mod height_field;
 mod isosurface;
+mod mesh;
 mod prism;
 mod sphere_sweep;
 mod text;
@@ -19,7 +20,7 @@ use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{Mesh, MeshTriangle, Poly, Polygon, Shape};
+use crate::scene::{Poly, Polygon, Shape};
 use crate::syntax::ast::{Block, BlockHead, Expr, Item};
 use glam::DVec3;
 use std::sync::Arc;
@@ -69,143 +70,6 @@ impl Evaluator {
         }
         outlines.retain(|outline| outline.len() >= 3);
         Ok(Shape::Polygon(Arc::new(Polygon { outlines })))
-    }
-
-    /// `mesh { triangle { .. } smooth_triangle { .. } .. }`; modifiers follow.
-    pub(crate) fn eval_mesh(&mut self, stream: &mut Stream) -> EvalResult<Shape> {
-        let mut triangles = Vec::new();
-        while let Some(item) = self.next_item(stream)? {
-            let Item::Block(block) = &item else {
-                stream.push_back(item);
-                break;
-            };
-            let head = block_word(block);
-            if head != "triangle" && head != "smooth_triangle" {
-                stream.push_back(item);
-                break;
-            }
-            let mut body = Stream::new(block.body.clone());
-            let triangle = if head == "triangle" {
-                let a = self.expect_vector(&mut body, "the first corner")?;
-                let b = self.expect_vector(&mut body, "the second corner")?;
-                let c = self.expect_vector(&mut body, "the third corner")?;
-                MeshTriangle {
-                    corners: [a, b, c],
-                    normals: None,
-                }
-            } else {
-                match self.eval_smooth_triangle(&mut body)? {
-                    Shape::SmoothTriangle { corners, normals } => MeshTriangle {
-                        corners: *corners,
-                        normals: Some(*normals),
-                    },
-                    _ => continue,
-                }
-            };
-            while let Some(rest) = self.next_item(&mut body)? {
-                match rest {
-                    Item::Comma(_) => {}
-                    Item::Keyword(word, _) if &*word == "uv_vectors" => {
-                        for _ in 0..3 {
-                            self.expect_value(&mut body, "a uv vector")?;
-                        }
-                    }
-                    other => {
-                        self.warn(
-                            other.span(),
-                            "textures of single mesh triangles are not supported yet; they are ignored",
-                        );
-                        break;
-                    }
-                }
-            }
-            triangles.push(triangle);
-        }
-        Ok(Shape::Mesh(Arc::new(Mesh {
-            triangles,
-            inside_vector: None,
-        })))
-    }
-
-    /// `mesh2 { vertex_vectors { .. } normal_vectors { .. } face_indices { .. } .. }`.
-    pub(crate) fn eval_mesh2(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Shape> {
-        let mut vertices = Vec::new();
-        let mut normals = Vec::new();
-        let mut faces: Vec<([f64; 3], Span)> = Vec::new();
-        let mut normal_faces: Vec<([f64; 3], Span)> = Vec::new();
-        while let Some(item) = self.next_item(stream)? {
-            let Item::Block(block) = &item else {
-                stream.push_back(item);
-                break;
-            };
-            let head = block_word(block);
-            let mut body = Stream::new(block.body.clone());
-            match head {
-                "vertex_vectors" => vertices = self.vector_list(&mut body, block.span)?,
-                "normal_vectors" => normals = self.vector_list(&mut body, block.span)?,
-                "face_indices" => faces = self.index_list(&mut body, block.span)?,
-                "normal_indices" => normal_faces = self.index_list(&mut body, block.span)?,
-                "uv_vectors" | "uv_indices" => {}
-                "texture_list" => self.warn(
-                    block.head_span,
-                    "`texture_list` in `mesh2` is not supported yet; it is ignored",
-                ),
-                _ => {
-                    stream.push_back(item);
-                    break;
-                }
-            }
-        }
-        let vertex = |index: f64| -> Option<DVec3> {
-            (index >= 0.0 && index.fract() == 0.0)
-                .then(|| vertices.get(index as usize).copied())
-                .flatten()
-        };
-        let mut triangles = Vec::with_capacity(faces.len());
-        for (position, (face, face_span)) in faces.iter().enumerate() {
-            let corners = face.map(vertex);
-            let [Some(a), Some(b), Some(c)] = corners else {
-                return Err(self
-                    .error(*face_span, "face index out of range")
-                    .with_label(format!("there are {} vertices", vertices.len()))
-                    .into());
-            };
-            let smooth = if normals.is_empty() {
-                None
-            } else {
-                let indices = match normal_faces.get(position) {
-                    Some((indices, _)) => *indices,
-                    None if normal_faces.is_empty() => *face,
-                    None => {
-                        return Err(self
-                            .error(span, "fewer normal_indices than face_indices")
-                            .into())
-                    }
-                };
-                let pick = |index: f64| -> Option<DVec3> {
-                    (index >= 0.0 && index.fract() == 0.0)
-                        .then(|| normals.get(index as usize).copied())
-                        .flatten()
-                };
-                match indices.map(pick) {
-                    [Some(na), Some(nb), Some(nc)] => Some([na, nb, nc]),
-                    _ => {
-                        return Err(self
-                            .error(*face_span, "normal index out of range")
-                            .with_label(format!("there are {} normals", normals.len()))
-                            .into())
-                    }
-                }
-            };
-            triangles.push(MeshTriangle {
-                corners: [a, b, c],
-                normals: smooth,
-            });
-        }
-        Ok(Shape::Mesh(Arc::new(Mesh {
-            triangles,
-            inside_vector: None,
-        })))
     }
 
     /// `poly { order, <coefficients> }`, `cubic { <20> }` or `quartic { <35> }`.
@@ -346,7 +210,7 @@ impl Evaluator {
         Ok(list)
     }
 
-    /// `n, <a, b, c> [, texture index..] ..` of `face_indices` or `normal_indices`.
+    /// `n, <a, b, c> ..` of `normal_indices` or `uv_indices` (stray floats are skipped).
     fn index_list(&mut self, stream: &mut Stream, span: Span) -> EvalResult<Vec<([f64; 3], Span)>> {
         let count = self.expect_count(stream, "the number of faces", span)?;
         let mut list = Vec::with_capacity(count.min(1 << 20));
@@ -361,7 +225,6 @@ impl Evaluator {
                     let c = v.to_dvec3();
                     list.push(([c.x, c.y, c.z], item_span));
                 }
-                // Texture indices after a face: ignored with the texture list.
                 Value::Float(_) => {}
                 other => {
                     return Err(self

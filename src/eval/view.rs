@@ -424,7 +424,10 @@ impl Evaluator {
             let direction = (target - camera.location).normalize_or(DVec3::Z);
             let mut right = sky.cross(direction).normalize_or(DVec3::X);
             let up = direction.cross(right).normalize_or(DVec3::Y);
-            if handedness < 0.0 {
+            // POV-Ray keeps the right vector only for a strictly left-handed frame: when
+            // `up` and `direction` are parallel (up z with the default direction), the
+            // frame counts as right-handed and the image is mirrored (prism3a.pov).
+            if handedness <= 0.0 {
                 right = -right;
             }
             camera.direction = direction * direction_length;

@@ -14,13 +14,17 @@
 use super::csg::{Combination, CsgNode, CsgTree, NodeBounds};
 use super::instance::{MeshGeometry, MeshInstance};
 use super::leaf::{Leaf, LocalShape};
+use super::uv::texture_uses_uv;
 use super::Material;
 use crate::accel::Aabb;
 use crate::hash::FastHash;
-use crate::scene::{CsgOperation, Interior, Object, Shape, Texture, Transform};
+use crate::scene::{CsgOperation, Interior, Mesh, Object, Shape, Texture, Transform};
 use glam::DAffine3;
 use std::collections::HashMap;
 use std::sync::Arc;
+
+/// Places a local shape in the world: [`Leaf::from_local`] or its frame-keeping twin.
+type PlaceLeaf = fn(LocalShape, &Transform, u32, bool) -> (Leaf, super::leaf::LeafBounds);
 
 /// Relative padding added to every primitive's bounds, so that rounding in the box tests can
 /// never reject a hit the exact shape test finds.
@@ -144,7 +148,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
 /// The texture with every pattern transform re-expressed from owner-local to world space.
 fn texture_to_world(texture: &Texture, world_from_owner: &Transform) -> Texture {
     let mut converted = texture.clone();
-    converted.transform(world_from_owner);
+    converted.transform_with_object(world_from_owner);
     converted
 }
 
@@ -309,9 +313,38 @@ impl Builder {
             no_image: appearance.flags.no_image,
             no_reflection: appearance.flags.no_reflection,
             double_illuminate: appearance.flags.double_illuminate,
+            uses_uv: texture_uses_uv(&appearance.texture),
         });
         self.material_of.insert(key, index);
         index
+    }
+
+    /// How leaves of `material` are placed: shapes whose texture uses uv coordinates keep
+    /// their own space, so the uv follows the object's orientation.
+    fn leaf_placement(&self, material: u32) -> PlaceLeaf {
+        if self.materials[material as usize].uses_uv {
+            Leaf::from_local_keeping_frame
+        } else {
+            Leaf::from_local
+        }
+    }
+
+    /// The material of each texture slot of a mesh placed with `appearance`: the object's
+    /// own first, then one per triangle texture (converted to world space like the object's).
+    fn mesh_materials(
+        &mut self,
+        mesh: &Mesh,
+        appearance: &Appearance,
+        world_from_local: &Transform,
+    ) -> Box<[u32]> {
+        let mut materials = vec![self.material(appearance)];
+        for texture in &mesh.textures {
+            let mut own = appearance.clone();
+            own.texture = Arc::new(texture_to_world(texture, world_from_local));
+            own.texture_key = TextureKey::Owned(self.new_owner());
+            materials.push(self.material(&own));
+        }
+        materials.into_boxed_slice()
     }
 
     /// Adds a top-level object (or a child of a flattened top-level union).
@@ -382,7 +415,10 @@ impl Builder {
             }
             Shape::Mesh(mesh) => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
-                let material = self.material(&appearance);
+                let materials = self.mesh_materials(mesh, &appearance, &world_from_local);
+                let needs_uv = materials
+                    .iter()
+                    .any(|&material| self.materials[material as usize].uses_uv);
                 let geometry = self
                     .meshes
                     .entry(Arc::as_ptr(mesh) as usize)
@@ -390,7 +426,7 @@ impl Builder {
                     .clone();
                 let triangles = geometry.len();
                 if let Some((instance, bounds)) =
-                    MeshInstance::new(geometry, &world_from_local, material)
+                    MeshInstance::new(geometry, &world_from_local, materials, needs_uv)
                 {
                     self.leaf_count += triangles;
                     out.push((Primitive::Mesh(Box::new(instance)), padded(Some(bounds))));
@@ -399,9 +435,9 @@ impl Builder {
             shape => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
                 let material = self.material(&appearance);
+                let place = self.leaf_placement(material);
                 for piece in LocalShape::pieces(shape) {
-                    let (leaf, bounds) =
-                        Leaf::from_local(piece, &world_from_local, material, object.inverse);
+                    let (leaf, bounds) = place(piece, &world_from_local, material, object.inverse);
                     let surface = padded(bounds.surface);
                     if leaf.is_empty() || surface.is_some_and(|bounds| bounds.is_empty()) {
                         continue;
@@ -501,11 +537,29 @@ impl Builder {
             }
             shape => {
                 let material = self.material(&appearance);
-                let mut nodes: Vec<CsgNode> = LocalShape::pieces(shape)
+                // A mesh's textured triangles keep their own (first corner's) texture here.
+                let pieces: Vec<(LocalShape, u32)> = match shape {
+                    Shape::Mesh(mesh) if !mesh.face_textures.is_empty() => {
+                        let materials = self.mesh_materials(mesh, &appearance, &world_from_local);
+                        LocalShape::mesh_pieces(mesh)
+                            .into_iter()
+                            .map(|(piece, slot)| {
+                                let own = materials.get(slot as usize).copied();
+                                (piece, own.unwrap_or(material))
+                            })
+                            .collect()
+                    }
+                    _ => LocalShape::pieces(shape)
+                        .into_iter()
+                        .map(|piece| (piece, material))
+                        .collect(),
+                };
+                let mut nodes: Vec<CsgNode> = pieces
                     .into_iter()
-                    .map(|piece| {
+                    .map(|(piece, material)| {
+                        let place = self.leaf_placement(material);
                         let (leaf, bounds) =
-                            Leaf::from_local(piece, &world_from_local, material, inversion.odd);
+                            place(piece, &world_from_local, material, inversion.odd);
                         let index = leaves.len() as u32;
                         leaves.push(leaf);
                         self.leaf_count += 1;

@@ -207,23 +207,11 @@ impl Triangle {
     /// Pushes the crossing of the line with the triangle (edges included).
     #[inline]
     pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
-        let across_two = direction.cross(self.edge_two);
-        let determinant = self.edge_one.dot(across_two);
-        if determinant == 0.0 {
-            return;
+        if let Some(distance) =
+            triangle_crossing(self.corner, self.edge_one, self.edge_two, origin, direction)
+        {
+            roots.push(distance, 0);
         }
-        let inverse_determinant = 1.0 / determinant;
-        let offset = origin - self.corner;
-        let first = offset.dot(across_two) * inverse_determinant;
-        if !(0.0..=1.0).contains(&first) {
-            return;
-        }
-        let across_one = offset.cross(self.edge_one);
-        let second = direction.dot(across_one) * inverse_determinant;
-        if second < 0.0 || first + second > 1.0 {
-            return;
-        }
-        roots.push(self.edge_two.dot(across_one) * inverse_determinant, 0);
     }
 
     /// A triangle has no inside.
@@ -240,6 +228,35 @@ impl Triangle {
     pub fn bounds(&self) -> Aabb {
         Aabb::from_points(self.corners())
     }
+}
+
+/// The ray parameter where the line `origin + t direction` crosses the triangle with one
+/// corner at `corner` and edges `edge_one`, `edge_two` leaving it (edges included), or `None`.
+#[inline]
+pub fn triangle_crossing(
+    corner: DVec3,
+    edge_one: DVec3,
+    edge_two: DVec3,
+    origin: DVec3,
+    direction: DVec3,
+) -> Option<f64> {
+    let across_two = direction.cross(edge_two);
+    let determinant = edge_one.dot(across_two);
+    if determinant == 0.0 {
+        return None;
+    }
+    let inverse_determinant = 1.0 / determinant;
+    let offset = origin - corner;
+    let first = offset.dot(across_two) * inverse_determinant;
+    if !(0.0..=1.0).contains(&first) {
+        return None;
+    }
+    let across_one = offset.cross(edge_one);
+    let second = direction.dot(across_one) * inverse_determinant;
+    if second < 0.0 || first + second > 1.0 {
+        return None;
+    }
+    Some(edge_two.dot(across_one) * inverse_determinant)
 }
 
 /// An axis-aligned box between two corners.

@@ -1,18 +1,23 @@
 //! Shared mesh geometry: a mesh's triangles prepared once, with their own BVH, and placed in
-//! the world any number of times through instances that hold only a transform and a material.
+//! the world any number of times through instances that hold only a transform and materials.
 //!
 //! In: a scene [`Mesh`] (shared by `Arc` between every `object { Ident }` copy). Out:
-//! [`MeshGeometry`] (triangle leaves in the mesh's local space plus a BVH over them) and
-//! [`MeshInstance`] (geometry, world-to-local map, material) answering nearest hits.
-//! Holds: ray parameters are the same in both spaces (the map is affine and the direction is
-//! mapped without normalising), so limits pass through unchanged; queries never allocate.
+//! [`MeshGeometry`] (the vertices and each triangle's vertex indices in the mesh's local
+//! space, plus a BVH over the triangles) and [`MeshInstance`] (geometry, world-to-local map,
+//! one material per texture slot) answering nearest hits, normals and, for meshes with
+//! textured triangles or uv coordinates, which material and uv a hit has.
+//! Holds: a triangle costs 12 bytes plus its share of the BVH (normals, uv coordinates and
+//! texture slots only for meshes that have them); ray parameters are the same in both
+//! spaces (the map is affine and the direction is mapped without normalising), so limits pass
+//! through unchanged; queries never allocate.
 
-use super::leaf::{Leaf, LocalShape};
-use super::roots::Roots;
-use super::Ray;
+use super::flat::triangle_crossing;
+use super::polygon::interpolated_normal;
+use super::uv::{barycentric, corner_weighted};
+use super::{CornerBlend, Ray};
 use crate::accel::{Aabb, Bvh};
-use crate::scene::{Mesh, Transform};
-use glam::{DAffine3, DVec3};
+use crate::scene::{Mesh, Transform, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
+use glam::{DAffine3, DVec2, DVec3};
 use std::sync::Arc;
 
 /// Crossings closer than this to the start of an inside ray do not count.
@@ -21,45 +26,137 @@ const INSIDE_EPSILON: f64 = 1e-9;
 /// A mesh's triangles in its local space, behind their own BVH.
 #[derive(Debug)]
 pub struct MeshGeometry {
-    leaves: Vec<Leaf>,
+    /// Corner positions shared by the triangles.
+    vertices: Vec<DVec3>,
+    /// Each triangle's indices into `vertices`, in BVH order.
+    triangles: Vec<[u32; 3]>,
     bvh: Bvh,
+    /// Unit normals the smooth triangles interpolate.
+    normals: Vec<DVec3>,
+    /// Empty, or for each triangle its indices into `normals` ([`FLAT_FACE`] when flat).
+    smooth: Vec<[u32; 3]>,
     /// `inside_vector`, when the mesh is a solid.
     inside_vector: Option<DVec3>,
+    /// Empty, or for each triangle the uv coordinates of its corners (`uv_vectors`).
+    corner_uvs: Vec<[[f32; 2]; 3]>,
+    /// Empty, or for each triangle the texture slots of its corners (0: the object's texture).
+    corner_slots: Vec<[u32; 3]>,
+}
+
+/// What a hit on a mesh adds to the bare hit: uv coordinates and blended corner textures.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeshSurface {
+    /// The uv coordinates at the point (`None` when no material uses them).
+    pub uv: Option<DVec2>,
+    /// The material at the point (the first corner's when the corners differ).
+    pub material: u32,
+    /// The corners' materials and weights, when they differ.
+    pub corner_blend: Option<CornerBlend>,
 }
 
 impl MeshGeometry {
-    /// Prepares the triangles of `mesh` (degenerate ones are dropped).
+    /// Prepares the triangles of `mesh`; degenerate ones (corners in a line, not finite) are
+    /// dropped.
     pub fn new(mesh: &Mesh) -> MeshGeometry {
-        let mut leaves = Vec::new();
-        let mut bounds = Vec::new();
-        for triangle in &mesh.triangles {
-            let local = LocalShape::from_mesh_triangle(triangle);
-            let (leaf, leaf_bounds) = Leaf::from_local(local, &Transform::IDENTITY, 0, false);
-            if let (false, Some(surface)) = (leaf.is_empty(), leaf_bounds.surface) {
-                leaves.push(Some(leaf));
-                bounds.push(surface.padded(1e-9, 1e-12));
+        let vertices = mesh.vertices.clone();
+        let mut kept = Vec::with_capacity(mesh.len());
+        let mut bounds = Vec::with_capacity(mesh.len());
+        for (face, indices) in mesh.faces.iter().enumerate() {
+            let corners = indices.map(|index| vertices[index as usize]);
+            let [a, b, c] = corners;
+            let area = (b - a).cross(c - a).length_squared();
+            if area > 0.0 && area.is_finite() && a.is_finite() {
+                kept.push(face as u32);
+                bounds.push(Aabb::from_points(corners).padded(1e-9, 1e-12));
             }
         }
         let (bvh, order) = Bvh::build(&bounds);
-        let leaves = order
+        drop(bounds);
+        let faces: Vec<usize> = order.iter().map(|&at| kept[at as usize] as usize).collect();
+        drop(kept);
+        let triangles = faces.iter().map(|&face| mesh.faces[face]).collect();
+        let smooth = if mesh.face_normals.is_empty() {
+            Vec::new()
+        } else {
+            faces.iter().map(|&face| mesh.face_normals[face]).collect()
+        };
+        let normals = mesh
+            .normals
             .iter()
-            .filter_map(|&index| leaves[index as usize].take())
+            .map(|normal| normal.try_normalize().unwrap_or(DVec3::ZERO))
             .collect();
+        let corner_uvs = if mesh.face_uvs.is_empty() {
+            Vec::new()
+        } else {
+            faces
+                .iter()
+                .map(|&face| mesh.corner_uvs(face).map(|uv| [uv.x as f32, uv.y as f32]))
+                .collect()
+        };
+        let corner_slots = if mesh.face_textures.is_empty() {
+            Vec::new()
+        } else {
+            faces
+                .iter()
+                .map(|&face| mesh.corner_textures(face))
+                .collect()
+        };
         MeshGeometry {
-            leaves,
+            vertices,
+            triangles,
             bvh,
+            normals,
+            smooth,
             inside_vector: mesh.inside_vector.and_then(DVec3::try_normalize),
+            corner_uvs,
+            corner_slots,
         }
     }
 
     /// Number of triangles kept.
     pub fn len(&self) -> usize {
-        self.leaves.len()
+        self.triangles.len()
     }
 
     /// Local bounds of all triangles; `None` for an empty mesh.
     pub fn bounds(&self) -> Option<Aabb> {
         self.bvh.bounds()
+    }
+
+    /// The corners of triangle `index`.
+    #[inline]
+    fn corners(&self, index: usize) -> [DVec3; 3] {
+        self.triangles[index].map(|at| self.vertices[at as usize])
+    }
+
+    /// Where the local line crosses triangle `index`, if it does.
+    #[inline]
+    fn crossing(&self, index: usize, origin: DVec3, direction: DVec3) -> Option<f64> {
+        let [a, b, c] = self.corners(index);
+        triangle_crossing(a, b - a, c - a, origin, direction)
+    }
+
+    /// The local normal (any length) of triangle `index` at the local `point`: interpolated
+    /// for a smooth triangle (a zero corner normal stands for the flat one).
+    fn normal(&self, index: usize, point: DVec3) -> DVec3 {
+        let corners = self.corners(index);
+        let [a, b, c] = corners;
+        let flat = (b - a).cross(c - a);
+        match self.smooth.get(index) {
+            Some(indices) if indices[0] != FLAT_FACE => {
+                let unit_flat = flat.normalize_or_zero();
+                let normals = indices.map(|at| {
+                    let normal = self.normals[at as usize];
+                    if normal == DVec3::ZERO {
+                        unit_flat
+                    } else {
+                        normal
+                    }
+                });
+                interpolated_normal(corners, normals, point)
+            }
+            _ => flat,
+        }
     }
 }
 
@@ -68,17 +165,26 @@ impl MeshGeometry {
 pub struct MeshInstance {
     geometry: Arc<MeshGeometry>,
     local_from_world: DAffine3,
-    material: u32,
+    /// The material of each texture slot: first the object's own, then those of the mesh's
+    /// triangle textures.
+    materials: Box<[u32]>,
+    /// Hits need uv coordinates (a material uses `uv_mapping`).
+    needs_uv: bool,
 }
 
 impl MeshInstance {
-    /// Places `geometry` through `world_from_local`; `None` when the map cannot be inverted
-    /// or the mesh is empty. Returns the instance and its world bounds.
+    /// Places `geometry` through `world_from_local` with one material per texture slot
+    /// (`materials[0]` is the object's); `None` when the map cannot be inverted, the mesh is
+    /// empty or no material is given. Returns the instance and its world bounds.
     pub fn new(
         geometry: Arc<MeshGeometry>,
         world_from_local: &Transform,
-        material: u32,
+        materials: Box<[u32]>,
+        needs_uv: bool,
     ) -> Option<(MeshInstance, Aabb)> {
+        if materials.is_empty() {
+            return None;
+        }
         let forward = world_from_local.outer_from_inner;
         let backward = world_from_local.inner_from_outer;
         let determinant = forward.matrix3.determinant();
@@ -90,15 +196,56 @@ impl MeshInstance {
             MeshInstance {
                 geometry,
                 local_from_world: backward,
-                material,
+                materials,
+                needs_uv,
             },
             bounds,
         ))
     }
 
-    /// The instance's material index.
+    /// The material of the mesh object itself (every slot shares its object flags).
     pub fn material(&self) -> u32 {
-        self.material
+        self.materials[0]
+    }
+
+    /// The material, uv coordinates and corner blend at the world `point` on triangle
+    /// `triangle` (as [`MeshInstance::nearest`] returned it).
+    pub fn surface(&self, triangle: u32, point: DVec3) -> MeshSurface {
+        let geometry = &*self.geometry;
+        let index = triangle as usize;
+        let plain = MeshSurface {
+            uv: None,
+            material: self.materials[0],
+            corner_blend: None,
+        };
+        if (geometry.corner_slots.is_empty() && !self.needs_uv) || index >= geometry.len() {
+            return plain;
+        }
+        let local = self.local_from_world.transform_point3(point);
+        let weights = barycentric(geometry.corners(index), local);
+        let uv = if !self.needs_uv {
+            None
+        } else if let Some(uvs) = geometry.corner_uvs.get(index) {
+            let corner_uvs = uvs.map(|[u, v]| DVec2::new(f64::from(u), f64::from(v)));
+            Some(corner_weighted(corner_uvs, weights))
+        } else {
+            Some(corner_weighted(DEFAULT_TRIANGLE_UVS, weights))
+        };
+        let slots = geometry.corner_slots.get(index).copied().unwrap_or([0; 3]);
+        let slot_material = |slot: u32| -> u32 {
+            self.materials
+                .get(slot as usize)
+                .copied()
+                .unwrap_or(self.materials[0])
+        };
+        let materials = slots.map(slot_material);
+        let corner_blend = (materials[0] != materials[1] || materials[0] != materials[2])
+            .then_some(CornerBlend { materials, weights });
+        MeshSurface {
+            uv,
+            material: materials[0],
+            corner_blend,
+        }
     }
 
     /// True when the world `point` is inside the mesh: a mesh with an `inside_vector` is
@@ -108,61 +255,45 @@ impl MeshInstance {
         let Some(direction) = self.geometry.inside_vector else {
             return false;
         };
-        let ray = Ray {
-            origin: self.local_from_world.transform_point3(point),
-            direction,
-        };
+        let origin = self.local_from_world.transform_point3(point);
+        let geometry = &*self.geometry;
         let mut odd = false;
-        let leaves = &self.geometry.leaves;
-        self.geometry.bvh.for_each_on_ray(
-            ray.origin,
-            direction.recip(),
-            0.0,
-            f64::INFINITY,
-            |at| {
-                let mut roots = Roots::new();
-                leaves[at].intersect(&ray, &mut roots);
-                for (distance, _) in roots.iter() {
+        geometry
+            .bvh
+            .for_each_on_ray(origin, direction.recip(), 0.0, f64::INFINITY, |at| {
+                if let Some(distance) = geometry.crossing(at, origin, direction) {
                     if distance > INSIDE_EPSILON {
                         odd = !odd;
                     }
                 }
-            },
-        );
+            });
         odd
     }
 
-    /// The nearest triangle hit strictly between the limits: distance, leaf and part.
+    /// The nearest triangle hit strictly between the limits: distance and triangle index.
     #[inline]
-    pub fn nearest(
-        &self,
-        ray: &Ray,
-        min_distance: f64,
-        max_distance: f64,
-    ) -> Option<(f64, &Leaf, u8)> {
-        let local = Ray {
-            origin: self.local_from_world.transform_point3(ray.origin),
-            direction: self.local_from_world.transform_vector3(ray.direction),
-        };
-        let inverse_direction = DVec3::ONE / local.direction;
-        let leaves = &self.geometry.leaves;
-        let (distance, (index, part)) = self.geometry.bvh.nearest_hit(
-            local.origin,
+    pub fn nearest(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<(f64, u32)> {
+        let origin = self.local_from_world.transform_point3(ray.origin);
+        let direction = self.local_from_world.transform_vector3(ray.direction);
+        let inverse_direction = DVec3::ONE / direction;
+        let geometry = &*self.geometry;
+        geometry.bvh.nearest_hit(
+            origin,
             inverse_direction,
             min_distance,
             max_distance,
             |at, limit| {
-                let (distance, part) = leaves[at].nearest(&local, min_distance, limit)?;
-                Some((distance, (at, part)))
+                let distance = geometry.crossing(at, origin, direction)?;
+                (distance > min_distance && distance < limit).then_some((distance, at as u32))
             },
-        )?;
-        Some((distance, &leaves[index], part))
+        )
     }
 
-    /// The unit outward world normal at the world `point` on `leaf` (one of this mesh's).
-    pub fn normal(&self, leaf: &Leaf, point: DVec3, part: u8) -> DVec3 {
+    /// The unit outward world normal at the world `point` on triangle `triangle`.
+    pub fn normal(&self, triangle: u32, point: DVec3) -> DVec3 {
         let local = self.local_from_world.transform_point3(point);
-        let normal = self.local_from_world.matrix3.transpose() * leaf.normal(local, part);
+        let normal = self.local_from_world.matrix3.transpose()
+            * self.geometry.normal(triangle as usize, local);
         normal.try_normalize().unwrap_or(DVec3::Z)
     }
 }

@@ -70,6 +70,32 @@ impl Lathe {
         inside
     }
 
+    /// POV-Ray's uv at the surface `point` of segment `part`: u the angle around Y from +x
+    /// towards +z, v the curve parameter (segment number plus the position along it) over
+    /// the number of segments (measured).
+    pub fn uv(&self, point: DVec3, part: u8) -> DVec2 {
+        let u = super::uv::sphere_uv(DVec3::new(point.x, 0.0, point.z)).x;
+        let radius = DVec2::new(point.x, point.z).length();
+        let count = self.segments.len();
+        let candidates = match self.segments.get(usize::from(part)) {
+            Some(_) if part != UNKNOWN_SEGMENT => usize::from(part)..usize::from(part) + 1,
+            _ => 0..count,
+        };
+        // The parameter whose curve point lies closest to the point's (radius, height).
+        let mut best = (f64::INFINITY, 0.0);
+        for index in candidates {
+            let segment = &self.segments[index];
+            let (found, found_count) = segment.crossings_with_line(DVec2::Y, point.y);
+            for &t in &found[..found_count] {
+                let miss = (segment.at(t).x - radius).abs();
+                if miss < best.0 {
+                    best = (miss, (index as f64 + t.clamp(0.0, 1.0)) / count as f64);
+                }
+            }
+        }
+        DVec2::new(u, best.1)
+    }
+
     /// Pushes the crossings of the line `origin + s direction`.
     pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
         let mut crossings = [(0.0, 0u8); CROSSING_BUFFER];

@@ -23,10 +23,11 @@ use super::sor::Sor;
 use super::sphere_sweep::SphereSweep;
 use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
+use super::uv::shape_uv;
 use super::Ray;
 use crate::accel::Aabb;
-use crate::scene::{MeshTriangle, Shape, Transform};
-use glam::{DAffine3, DVec3};
+use crate::scene::{Mesh, MeshTriangle, Shape, Transform};
+use glam::{DAffine3, DVec2, DVec3};
 
 /// A shape in its own local space.
 #[derive(Clone, Debug)]
@@ -169,14 +170,24 @@ impl LocalShape {
         shape.unwrap_or(LocalShape::Empty)
     }
 
+    /// The triangles of a mesh that are not degenerate, each with its texture slot (that of
+    /// its first corner; 0 is the mesh object's own texture).
+    pub fn mesh_pieces(mesh: &Mesh) -> Vec<(LocalShape, u32)> {
+        (0..mesh.len())
+            .map(|face| {
+                let piece = Self::from_mesh_triangle(&mesh.triangle(face));
+                (piece, mesh.corner_textures(face)[0])
+            })
+            .filter(|(piece, _)| !matches!(piece, LocalShape::Empty))
+            .collect()
+    }
+
     /// The leaf shapes a scene shape becomes: one per mesh triangle, else one.
     pub fn pieces(shape: &Shape) -> Vec<LocalShape> {
         match shape {
-            Shape::Mesh(mesh) => mesh
-                .triangles
-                .iter()
-                .map(Self::from_mesh_triangle)
-                .filter(|piece| !matches!(piece, LocalShape::Empty))
+            Shape::Mesh(mesh) => Self::mesh_pieces(mesh)
+                .into_iter()
+                .map(|(piece, _)| piece)
                 .collect(),
             Shape::Text(glyphs) => glyphs
                 .iter()
@@ -451,13 +462,38 @@ impl Leaf {
         material: u32,
         inverse: bool,
     ) -> (Leaf, LeafBounds) {
+        Leaf::placed(local, world_from_local, material, inverse, true)
+    }
+
+    /// Like [`Leaf::from_local`], but the shape keeps its own space (the transform is never
+    /// folded into it), so that its uv coordinates follow the object's orientation.
+    pub fn from_local_keeping_frame(
+        local: LocalShape,
+        world_from_local: &Transform,
+        material: u32,
+        inverse: bool,
+    ) -> (Leaf, LeafBounds) {
+        Leaf::placed(local, world_from_local, material, inverse, false)
+    }
+
+    /// [`Leaf::from_local`]; `may_absorb` allows folding the transform into the shape.
+    fn placed(
+        local: LocalShape,
+        world_from_local: &Transform,
+        material: u32,
+        inverse: bool,
+        may_absorb: bool,
+    ) -> (Leaf, LeafBounds) {
         // POV-Ray cannot invert a triangle: it has no inside either way.
         let inverse = inverse && !local.has_no_inside();
         let (shape, local_from_world, world_from_shape) = if !usable(world_from_local) {
             (LocalShape::Empty, None, DAffine3::IDENTITY)
         } else if world_from_local.outer_from_inner == DAffine3::IDENTITY {
             (local, None, DAffine3::IDENTITY)
-        } else if let Some(absorbed) = local.absorbing(&world_from_local.outer_from_inner) {
+        } else if let Some(absorbed) = may_absorb
+            .then(|| local.absorbing(&world_from_local.outer_from_inner))
+            .flatten()
+        {
             (absorbed, None, DAffine3::IDENTITY)
         } else {
             let backward = Box::new(world_from_local.inner_from_outer);
@@ -544,6 +580,16 @@ impl Leaf {
         } else {
             normal
         }
+    }
+
+    /// The uv coordinates at the world surface `point` (surface part `part`); `None` for
+    /// shapes without uv coordinates.
+    pub fn uv(&self, point: DVec3, part: u8) -> Option<DVec2> {
+        let local = match &self.local_from_world {
+            None => point,
+            Some(map) => map.transform_point3(point),
+        };
+        shape_uv(&self.shape, local, part)
     }
 
     /// True for a leaf that nothing can hit.

@@ -27,6 +27,7 @@ mod sor;
 mod sphere_sweep;
 mod superellipsoid;
 mod torus;
+mod uv;
 mod world;
 
 #[cfg(test)]
@@ -44,7 +45,7 @@ pub use roots::MAX_ROOTS as MAX_CROSSINGS;
 pub use world::World;
 
 use crate::scene::{Interior, Texture};
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 use std::sync::Arc;
 
 /// A ray: a start point and a (unit length) direction.
@@ -81,6 +82,20 @@ pub struct SurfaceHit {
     pub normal: DVec3,
     /// Index into [`World::materials`].
     pub material: u32,
+    /// The surface's uv coordinates at the point, for materials that use `uv_mapping`;
+    /// `None` otherwise and for shapes without uv coordinates.
+    pub uv: Option<DVec2>,
+    /// For a mesh triangle whose corners have different textures: how they blend here.
+    pub corner_blend: Option<CornerBlend>,
+}
+
+/// The textures of a mesh triangle's corners blended at a hit point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CornerBlend {
+    /// The material of each corner.
+    pub materials: [u32; 3],
+    /// The barycentric weight of each corner at the point (they sum to 1).
+    pub weights: [f64; 3],
 }
 
 /// The appearance and interior shared by the leaves that inherit them from one object.
@@ -98,4 +113,6 @@ pub struct Material {
     pub no_reflection: bool,
     /// `double_illuminate`: lit from both sides.
     pub double_illuminate: bool,
+    /// The texture evaluates a pigment at uv coordinates (`uv_mapping`), so hits need them.
+    pub uses_uv: bool,
 }

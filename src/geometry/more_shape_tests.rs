@@ -72,10 +72,11 @@ fn mesh_triangles_are_hit_and_degenerate_ones_skipped() {
         corners: [DVec3::ZERO; 3],
         normals: Some([DVec3::ZERO; 3]),
     };
-    let mesh = Object::new(Shape::Mesh(Arc::new(Mesh {
-        triangles: vec![triangle(1.0), degenerate, triangle(2.0)],
-        inside_vector: None,
-    })));
+    let mesh = Object::new(Shape::Mesh(Arc::new(Mesh::from_triangles(&[
+        triangle(1.0),
+        degenerate,
+        triangle(2.0),
+    ]))));
     let along_z = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
     assert_eq!(distances(vec![mesh.clone()], along_z), vec![6.0, 7.0]);
     let in_csg = csg(CsgOperation::Intersection, vec![mesh, slab(-5.0, 5.0)]);
@@ -121,17 +122,14 @@ fn prism_and_poly_in_the_world() {
 
 #[test]
 fn mesh_instances_share_geometry_and_keep_their_transforms() {
-    let mesh = Arc::new(Mesh {
-        triangles: vec![MeshTriangle {
-            corners: [
-                DVec3::new(-1.0, -1.0, 0.0),
-                DVec3::new(1.0, -1.0, 0.0),
-                DVec3::new(0.0, 1.0, 0.0),
-            ],
-            normals: None,
-        }],
-        inside_vector: None,
-    });
+    let mesh = Arc::new(Mesh::from_triangles(&[MeshTriangle {
+        corners: [
+            DVec3::new(-1.0, -1.0, 0.0),
+            DVec3::new(1.0, -1.0, 0.0),
+            DVec3::new(0.0, 1.0, 0.0),
+        ],
+        normals: None,
+    }]));
     let mut near = Object::new(Shape::Mesh(Arc::clone(&mesh)));
     near.set_transform(crate::scene::Transform::translation(DVec3::new(
         0.0, 0.0, 1.0,

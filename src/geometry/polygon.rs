@@ -49,31 +49,38 @@ impl SmoothTriangle {
 
     /// The normal interpolated at `point` from the corner normals (barycentric weights).
     pub fn normal(&self, point: DVec3) -> DVec3 {
-        let [a, b, c] = self.triangle.corners();
-        let (edge_one, edge_two, offset) = (b - a, c - a, point - a);
-        let (d11, d12, d22) = (
-            edge_one.dot(edge_one),
-            edge_one.dot(edge_two),
-            edge_two.dot(edge_two),
-        );
-        let (p1, p2) = (offset.dot(edge_one), offset.dot(edge_two));
-        let determinant = d11 * d22 - d12 * d12;
-        if determinant == 0.0 || !determinant.is_finite() {
-            return self.triangle.normal();
-        }
-        let u = ((d22 * p1 - d12 * p2) / determinant).clamp(0.0, 1.0);
-        let v = ((d11 * p2 - d12 * p1) / determinant).clamp(0.0, 1.0 - u);
-        let normal = self.normals[0] * (1.0 - u - v) + self.normals[1] * u + self.normals[2] * v;
-        if normal.length_squared() > 0.0 {
-            normal
-        } else {
-            self.triangle.normal()
-        }
+        interpolated_normal(self.triangle.corners(), self.normals, point)
     }
 
     /// Bounding box of the corners.
     pub fn bounds(&self) -> Aabb {
         self.triangle.bounds()
+    }
+}
+
+/// The normal at `point` of a triangle with `corners`, interpolated from the unit `normals`
+/// at the corners by barycentric weights; the flat normal where that fails.
+pub fn interpolated_normal(corners: [DVec3; 3], normals: [DVec3; 3], point: DVec3) -> DVec3 {
+    let [a, b, c] = corners;
+    let flat = || (b - a).cross(c - a);
+    let (edge_one, edge_two, offset) = (b - a, c - a, point - a);
+    let (d11, d12, d22) = (
+        edge_one.dot(edge_one),
+        edge_one.dot(edge_two),
+        edge_two.dot(edge_two),
+    );
+    let (p1, p2) = (offset.dot(edge_one), offset.dot(edge_two));
+    let determinant = d11 * d22 - d12 * d12;
+    if determinant == 0.0 || !determinant.is_finite() {
+        return flat();
+    }
+    let u = ((d22 * p1 - d12 * p2) / determinant).clamp(0.0, 1.0);
+    let v = ((d11 * p2 - d12 * p1) / determinant).clamp(0.0, 1.0 - u);
+    let normal = normals[0] * (1.0 - u - v) + normals[1] * u + normals[2] * v;
+    if normal.length_squared() > 0.0 {
+        normal
+    } else {
+        flat()
     }
 }
 

@@ -209,6 +209,39 @@ impl Sor {
         })
     }
 
+    /// POV-Ray's uv at the surface `point` of part `part` (measured): u the angle around Y
+    /// from +x towards +z; on the side v is the height's place along the pieces (each piece
+    /// an equal share), on the bottom cap the distance from the axis over the cap's radius,
+    /// on the top cap one minus that.
+    pub fn uv(&self, point: DVec3, part: u8) -> DVec2 {
+        let u = super::uv::sphere_uv(DVec3::new(point.x, 0.0, point.z)).x;
+        let radius = DVec2::new(point.x, point.z).length();
+        let share_of_cap = |radius_squared: f64| {
+            let cap = radius_squared.sqrt();
+            if cap > 0.0 {
+                (radius / cap).min(1.0)
+            } else {
+                0.0
+            }
+        };
+        let v = match part {
+            BOTTOM_CAP => share_of_cap(self.bottom.1),
+            TOP_CAP => 1.0 - share_of_cap(self.top.1),
+            _ => {
+                let count = self.pieces.len() as f64;
+                self.pieces
+                    .iter()
+                    .position(|piece| point.y >= piece.low && point.y <= piece.high)
+                    .map_or(0.0, |index| {
+                        let piece = &self.pieces[index];
+                        let along = (point.y - piece.low) / (piece.high - piece.low);
+                        (index as f64 + along.clamp(0.0, 1.0)) / count
+                    })
+            }
+        };
+        DVec2::new(u, v)
+    }
+
     /// Outward normal at the surface `point` of part `part`.
     pub fn normal(&self, point: DVec3, part: u8) -> DVec3 {
         match part {

@@ -166,6 +166,11 @@ impl Torus {
         Some(TorusShape::Torus(Torus { major, minor }))
     }
 
+    /// The radius of the circle the tube's centre follows.
+    pub fn major(&self) -> f64 {
+        self.major
+    }
+
     /// Pushes every crossing of the line `origin + t direction` with the torus.
     pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
         let speed = direction.length();

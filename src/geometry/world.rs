@@ -30,11 +30,11 @@ pub struct World {
 
 /// The nearest hit found so far, before its normal is computed.
 #[derive(Clone, Copy)]
-struct PendingHit<'a> {
-    leaf: &'a Leaf,
-    part: u8,
-    /// The mesh instance the leaf belongs to (its leaves are in the mesh's local space).
-    instance: Option<&'a MeshInstance>,
+enum PendingHit<'a> {
+    /// A leaf shape and the surface part hit.
+    Leaf(&'a Leaf, u8),
+    /// A triangle (by index) of a mesh instance.
+    MeshTriangle(&'a MeshInstance, u32),
 }
 
 impl Primitive {
@@ -54,28 +54,14 @@ impl Primitive {
                     return None;
                 }
                 let (distance, part) = leaf.nearest(ray, min_distance, max_distance)?;
-                Some((
-                    distance,
-                    PendingHit {
-                        leaf,
-                        part,
-                        instance: None,
-                    },
-                ))
+                Some((distance, PendingHit::Leaf(leaf, part)))
             }
             Primitive::Mesh(instance) => {
                 if skip(instance.material()) {
                     return None;
                 }
-                let (distance, leaf, part) = instance.nearest(ray, min_distance, max_distance)?;
-                Some((
-                    distance,
-                    PendingHit {
-                        leaf,
-                        part,
-                        instance: Some(instance),
-                    },
-                ))
+                let (distance, triangle) = instance.nearest(ray, min_distance, max_distance)?;
+                Some((distance, PendingHit::MeshTriangle(instance, triangle)))
             }
             Primitive::Csg(tree) => {
                 let hit =
@@ -83,14 +69,7 @@ impl Primitive {
                         !skip(l.material())
                     })?;
                 let leaf = &tree.leaves[hit.leaf as usize];
-                Some((
-                    hit.distance,
-                    PendingHit {
-                        leaf,
-                        part: hit.part,
-                        instance: None,
-                    },
-                ))
+                Some((hit.distance, PendingHit::Leaf(leaf, hit.part)))
             }
         }
     }
@@ -229,7 +208,7 @@ impl World {
                 self.primitives[at].nearest(ray, inverse_direction, min_distance, limit, skip)
             },
         );
-        finish(ray, from_bvh.or(best))
+        finish(ray, from_bvh.or(best), &self.materials)
     }
 
     /// The same world with the child indexes of wide CSG nodes removed, so every CSG node
@@ -266,7 +245,7 @@ impl World {
                 best = Some(found);
             }
         }
-        finish(ray, best)
+        finish(ray, best, &self.materials)
     }
 }
 
@@ -278,19 +257,40 @@ fn usable(ray: &Ray, min_distance: f64, max_distance: f64) -> bool {
         && min_distance < max_distance
 }
 
-/// The world-space hit for the nearest pending hit, computing its normal.
-fn finish(ray: &Ray, nearest: Option<(f64, PendingHit)>) -> Option<SurfaceHit> {
+/// The world-space hit for the nearest pending hit, computing its normal (and, where the
+/// material or mesh needs them, uv coordinates and blended corner textures).
+fn finish(
+    ray: &Ray,
+    nearest: Option<(f64, PendingHit)>,
+    materials: &[Material],
+) -> Option<SurfaceHit> {
     let (distance, pending) = nearest?;
     let point = ray.at(distance);
+    let (normal, material, uv, corner_blend) = match pending {
+        PendingHit::MeshTriangle(instance, triangle) => {
+            let surface = instance.surface(triangle, point);
+            (
+                instance.normal(triangle, point),
+                surface.material,
+                surface.uv,
+                surface.corner_blend,
+            )
+        }
+        PendingHit::Leaf(leaf, part) => {
+            let material = leaf.material();
+            let uses_uv = materials
+                .get(material as usize)
+                .is_some_and(|material| material.uses_uv);
+            let uv = if uses_uv { leaf.uv(point, part) } else { None };
+            (leaf.normal(point, part), material, uv, None)
+        }
+    };
     Some(SurfaceHit {
         distance,
         point,
-        normal: match pending.instance {
-            Some(instance) => instance.normal(pending.leaf, point, pending.part),
-            None => pending.leaf.normal(point, pending.part),
-        },
-        material: pending
-            .instance
-            .map_or(pending.leaf.material(), MeshInstance::material),
+        normal,
+        material,
+        uv,
+        corner_blend,
     })
 }

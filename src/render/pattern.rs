@@ -77,6 +77,9 @@ fn colour_at_depth(pigment: &Pigment, world_point: DVec3, depth: u32) -> Colour 
         Pigment::Image { image, transform } => {
             image_colour(image, transform.point_to_inner(world_point))
         }
+        // The uv point is chosen where the surface is known (`render::uv`); nested inside
+        // another pigment the wrapper passes the point on.
+        Pigment::UvMapped(inner) => colour_at_depth(inner, world_point, depth + 1),
     }
 }
 

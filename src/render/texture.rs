@@ -17,7 +17,8 @@
 use super::image_map::material_choice;
 use super::lights::transmission;
 use super::pattern::{blend_position, block_index, pigment_colour};
-use crate::scene::{BlendMap, Colour, CompoundTexture, Texture};
+use crate::geometry::SurfaceHit;
+use crate::scene::{BlendMap, Colour, CompoundTexture, Pigment, Texture};
 use glam::DVec3;
 
 /// How far nested compound textures are followed.
@@ -50,6 +51,17 @@ pub fn surface_pigment(texture: &Texture, world_point: DVec3) -> Colour {
         }
     });
     Colour::from_array(sum)
+}
+
+/// The colour of a texture's own pigment at `hit`: a uv-mapped pigment is evaluated at the
+/// hit's `<u, v, 0>` (at the point on shapes without uv coordinates, as in POV-Ray), any
+/// other at the hit point.
+pub fn pigment_at_hit(pigment: &Pigment, hit: &SurfaceHit) -> Colour {
+    match (pigment.uv_mapped(), hit.uv) {
+        (Some(inner), Some(uv)) => pigment_colour(inner, uv.extend(0.0)),
+        (Some(inner), None) => pigment_colour(inner, hit.point),
+        (None, _) => pigment_colour(pigment, hit.point),
+    }
 }
 
 /// Visits the components of `texture`, whose results are weighted by `weight`.

@@ -43,10 +43,9 @@ use super::dispersion::Bands;
 use super::encoding::is_legacy_scene;
 use super::lights::{prepare_lights, transmission, SceneLight};
 use super::normal::perturbed_normal;
-use super::pattern::pigment_colour;
 use super::reflection::{apply_exponent, interior_fade, reflection_colour};
 use super::shading::{local_light, mirror, SurfaceSample};
-use super::texture::for_each_component;
+use super::texture::{for_each_component, pigment_at_hit};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
 use crate::scene::{Scene, Texture};
 use glam::DVec3;
@@ -275,6 +274,26 @@ impl<'a> Tracer<'a> {
         weight: RayWeight,
         media: &Media,
     ) -> Shaded {
+        if let Some(blend) = &hit.corner_blend {
+            // A mesh triangle with a texture per corner: each shaded, blended by weight.
+            let mut total = Shaded {
+                colour: DVec3::ZERO,
+                continued: None,
+            };
+            for (&corner, &share) in blend.materials.iter().zip(&blend.weights) {
+                let Some(corner_material) = self.world.materials.get(corner as usize) else {
+                    continue;
+                };
+                let single = SurfaceHit {
+                    material: corner,
+                    corner_blend: None,
+                    ..*hit
+                };
+                let part = self.shade(ray, &single, corner_material, level, weight, media);
+                total.add(DVec3::splat(share.max(0.0)), part);
+            }
+            return total;
+        }
         let texture = &material.texture;
         if texture.compound.is_none() {
             return self.shade_plain(ray, hit, material, texture, true, level, weight, media);
@@ -313,7 +332,7 @@ impl<'a> Tracer<'a> {
         weight: RayWeight,
         media: &Media,
     ) -> Shaded {
-        let pigment = pigment_colour(&texture.pigment, hit.point);
+        let pigment = pigment_at_hit(&texture.pigment, hit);
         let entering = ray.direction.dot(hit.normal) <= 0.0;
         let facing = if entering { hit.normal } else { -hit.normal };
         let mut normal = if facing.is_finite() {

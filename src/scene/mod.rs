@@ -9,6 +9,7 @@ mod colour;
 mod finish;
 mod implicit;
 mod light;
+mod mesh;
 mod texture;
 mod transform;
 
@@ -18,6 +19,7 @@ pub use colour::Colour;
 pub use finish::{Finish, Interior, Irid};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
 pub use light::{AreaLight, LightSource, Spotlight};
+pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
     Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
@@ -230,25 +232,6 @@ pub enum Shape {
 pub struct Polygon {
     /// Each closed outline (sub-polygon), without repeating its first point at the end.
     pub outlines: Vec<Vec<DVec3>>,
-}
-
-/// One triangle of a mesh.
-#[derive(Clone, Copy, Debug)]
-pub struct MeshTriangle {
-    /// The three corners.
-    pub corners: [DVec3; 3],
-    /// Normals at the corners for a smooth triangle; `None` for a flat one.
-    pub normals: Option<[DVec3; 3]>,
-}
-
-/// The triangles of a `mesh` or `mesh2`.
-#[derive(Clone, Debug)]
-pub struct Mesh {
-    /// All triangles, in the order written.
-    pub triangles: Vec<MeshTriangle>,
-    /// `inside_vector`: when given, the mesh is a solid (points are inside when a ray along
-    /// this vector crosses the surface an odd number of times).
-    pub inside_vector: Option<DVec3>,
 }
 
 /// A polynomial surface `poly { order, <coefficients> }`.

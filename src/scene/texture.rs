@@ -97,6 +97,10 @@ pub enum Pigment {
         image: Arc<ImageMap>,
         transform: Transform,
     },
+    /// `uv_mapping`: the pigment is evaluated at `<u, v, 0>` of the surface instead of the
+    /// point. Transformations of the pigment or its texture apply; those of the object do
+    /// not (see [`Pigment::transform_with_object`]).
+    UvMapped(Box<Pigment>),
 }
 
 /// What a pigment's pattern value is looked up in.
@@ -216,12 +220,24 @@ pub struct ImageMap {
 impl Texture {
     /// Composes `t` into every pattern transform of the texture (outer space moves by `t`).
     pub fn transform(&mut self, t: &Transform) {
-        self.pigment.transform(t);
+        self.transform_in(t, false);
+    }
+
+    /// Composes an object's transformation `t` into the texture: like
+    /// [`Texture::transform`], except that uv-mapped pigments keep their transforms (they
+    /// follow the surface's uv coordinates, not its space).
+    pub fn transform_with_object(&mut self, t: &Transform) {
+        self.transform_in(t, true);
+    }
+
+    /// [`Texture::transform`], or [`Texture::transform_with_object`] when `object_level`.
+    fn transform_in(&mut self, t: &Transform, object_level: bool) {
+        self.pigment.transform_in(t, object_level);
         if let Some(normal) = &mut self.normal {
             normal.transform(t);
         }
         if let Some(compound) = &mut self.compound {
-            Arc::make_mut(compound).transform(t);
+            Arc::make_mut(compound).transform_in(t, object_level);
         }
     }
 
@@ -234,22 +250,31 @@ impl Texture {
 impl CompoundTexture {
     /// Composes `t` into every texture and pattern transform held.
     pub fn transform(&mut self, t: &Transform) {
+        self.transform_in(t, false);
+    }
+
+    /// [`CompoundTexture::transform`]; `object_level` spares uv-mapped pigments.
+    fn transform_in(&mut self, t: &Transform, object_level: bool) {
         match self {
-            CompoundTexture::Layered(layers) => layers.iter_mut().for_each(|l| l.transform(t)),
+            CompoundTexture::Layered(layers) => layers
+                .iter_mut()
+                .for_each(|l| l.transform_in(t, object_level)),
             CompoundTexture::Pattern { map, transform, .. } => {
                 *transform = transform.then(t);
-                map.for_each_mut(|texture| texture.transform(t));
+                map.for_each_mut(|texture| texture.transform_in(t, object_level));
             }
             CompoundTexture::Average(entries) => entries
                 .iter_mut()
-                .for_each(|(_, texture)| texture.transform(t)),
+                .for_each(|(_, texture)| texture.transform_in(t, object_level)),
             CompoundTexture::MaterialMap {
                 textures,
                 transform,
                 ..
             } => {
                 *transform = transform.then(t);
-                textures.iter_mut().for_each(|texture| texture.transform(t));
+                textures
+                    .iter_mut()
+                    .for_each(|texture| texture.transform_in(t, object_level));
             }
         }
     }
@@ -268,20 +293,46 @@ impl<T> BlendMap<T> {
 impl Pigment {
     /// Composes `t` into the pigment's pattern transform and those of every nested pigment.
     pub fn transform(&mut self, t: &Transform) {
+        self.transform_in(t, false);
+    }
+
+    /// Composes an object's transformation `t` into the pigment: like [`Pigment::transform`],
+    /// except that uv-mapped pigments are left as they are (POV-Ray: scaling a uv-mapped
+    /// object does not scale its pattern).
+    pub fn transform_with_object(&mut self, t: &Transform) {
+        self.transform_in(t, true);
+    }
+
+    /// [`Pigment::transform`]; `object_level` spares uv-mapped pigments.
+    fn transform_in(&mut self, t: &Transform, object_level: bool) {
         match self {
             Pigment::Solid(_) => {}
             Pigment::Pattern { map, transform, .. } => {
                 *transform = transform.then(t);
                 match map {
                     PigmentMap::Colours(_) => {}
-                    PigmentMap::Blocks(blocks) => blocks.iter_mut().for_each(|b| b.transform(t)),
-                    PigmentMap::Pigments(entries) => {
-                        entries.iter_mut().for_each(|(_, p)| p.transform(t))
-                    }
+                    PigmentMap::Blocks(blocks) => blocks
+                        .iter_mut()
+                        .for_each(|b| b.transform_in(t, object_level)),
+                    PigmentMap::Pigments(entries) => entries
+                        .iter_mut()
+                        .for_each(|(_, p)| p.transform_in(t, object_level)),
                 }
             }
-            Pigment::Average(entries) => entries.iter_mut().for_each(|(_, p)| p.transform(t)),
+            Pigment::Average(entries) => entries
+                .iter_mut()
+                .for_each(|(_, p)| p.transform_in(t, object_level)),
             Pigment::Image { transform, .. } => *transform = transform.then(t),
+            Pigment::UvMapped(_) if object_level => {}
+            Pigment::UvMapped(inner) => inner.transform_in(t, false),
+        }
+    }
+
+    /// The pigment evaluated at uv coordinates, when it is `uv_mapping`'s.
+    pub fn uv_mapped(&self) -> Option<&Pigment> {
+        match self {
+            Pigment::UvMapped(inner) => Some(inner),
+            _ => None,
         }
     }
 

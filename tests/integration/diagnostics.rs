@@ -543,3 +543,29 @@ fn spline_identifier_as_a_function_body_is_refused() {
         ],
     );
 }
+
+#[test]
+fn mesh2_texture_index_out_of_range_names_the_list_size() {
+    check(
+        "mesh2_texture_index",
+        4,
+        21,
+        &[
+            "texture index out of range",
+            "the texture_list has 1 textures",
+        ],
+    );
+}
+
+#[test]
+fn mesh2_uv_vectors_without_uv_indices_need_one_per_vertex() {
+    check(
+        "mesh2_missing_uv_indices",
+        1,
+        1,
+        &[
+            "missing `uv_indices` in mesh2",
+            "2 uv vectors for 3 vertices",
+        ],
+    );
+}

@@ -16,6 +16,7 @@
   uv_vectors { 2, <0,0>, <1,1> }
   face_indices { 2, <0,1,2>, <0,2,3> }
   normal_indices { 2, <0,0,1>, <0,1,1> }
+  uv_indices { 2, <0,1,1>, <0,1,0> }
   scale 2
 }
 #declare M3 = mesh2 {

@@ -4,15 +4,15 @@
 //! patch split into 2^u_steps by 2^v_steps pieces, each piece two triangles through its
 //! corners on the surface with the surface's exact normals there. Holds: both types give
 //! the same surface; with a `flatness`, the split goes on evenly (up to 2^6 pieces a side)
-//! until every piece is that flat, where POV-Ray splits only the curved parts; uv data is
-//! ignored.
+//! until every piece is that flat, where POV-Ray splits only the curved parts; each corner
+//! carries its uv: the patch parameters mapped onto the `uv_vectors` corners.
 
 use super::super::stream::Stream;
 use super::super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::scene::{Mesh, MeshTriangle, Shape};
 use crate::syntax::ast::Item;
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 use std::sync::Arc;
 
 /// Largest u_steps or v_steps (2^8 pieces per side is far beyond any visible difference).
@@ -31,6 +31,7 @@ impl Evaluator {
         let mut v_steps = 0.0;
         let mut patch_type = None;
         let mut flatness = 0.0;
+        let mut corner_uvs = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
         let mut points = Vec::with_capacity(16);
         while points.len() < 16 {
             let Some(item) = self.next_item(stream)? else {
@@ -53,6 +54,7 @@ impl Evaluator {
                     "flatness" => {
                         flatness = self.expect_float(stream, "the flatness")?;
                     }
+                    "uv_vectors" => corner_uvs = self.patch_uv_vectors(stream)?,
                     "u_steps" | "v_steps" => {
                         let value = self.expect_float(stream, "the number of steps")?.floor();
                         let steps = value.clamp(0.0, MAX_STEPS);
@@ -92,10 +94,7 @@ impl Evaluator {
         };
         match self.next_item(stream)? {
             Some(Item::Keyword(word, _)) if &*word == "uv_vectors" => {
-                for _ in 0..4 {
-                    self.expect_value(stream, "a uv vector")?;
-                    self.skip_comma(stream)?;
-                }
+                corner_uvs = self.patch_uv_vectors(stream)?;
             }
             Some(other) => stream.push_back(other),
             None => {}
@@ -109,11 +108,27 @@ impl Evaluator {
             u_steps = (u_steps + 1).min(FLAT_STEPS.max(u_steps));
             v_steps = (v_steps + 1).min(FLAT_STEPS.max(v_steps));
         }
-        let triangles = triangulate(&controls, 1 << u_steps, 1 << v_steps);
-        Ok(Shape::Mesh(Arc::new(Mesh {
-            triangles,
-            inside_vector: None,
-        })))
+        let (triangles, triangle_uvs) = triangulate(&controls, 1 << u_steps, 1 << v_steps);
+        let mut mesh = Mesh::from_triangles(&triangles);
+        // Each corner's uv: the patch parameters mapped bilinearly onto the uv_vectors.
+        for [s_t_a, s_t_b, s_t_c] in triangle_uvs {
+            let first = mesh.uvs.len() as u32;
+            mesh.uvs
+                .extend([s_t_a, s_t_b, s_t_c].map(|at| bilinear(&corner_uvs, at)));
+            mesh.face_uvs.push([first, first + 1, first + 2]);
+        }
+        Ok(Shape::Mesh(Arc::new(mesh)))
+    }
+
+    /// The four uv corners after `uv_vectors`.
+    fn patch_uv_vectors(&mut self, stream: &mut Stream) -> EvalResult<[DVec2; 4]> {
+        let mut corners = [DVec2::ZERO; 4];
+        for corner in &mut corners {
+            let vector = self.expect_vector(stream, "a uv vector")?;
+            *corner = DVec2::new(vector.x, vector.y);
+            self.skip_comma(stream)?;
+        }
+        Ok(corners)
     }
 }
 
@@ -176,8 +191,21 @@ fn flat_enough(controls: &[DVec3; 16], columns: usize, rows: usize, flatness: f6
     })
 }
 
-/// Two smooth triangles for each of `columns` by `rows` pieces of the patch.
-fn triangulate(controls: &[DVec3; 16], columns: usize, rows: usize) -> Vec<MeshTriangle> {
+/// The uv at patch parameters `at` (s along a row of control points, t across rows) from the
+/// uv of the patch corners, in POV-Ray's order: (0, 0), (1, 0), (1, 1), (0, 1).
+fn bilinear(corners: &[DVec2; 4], at: DVec2) -> DVec2 {
+    let bottom = corners[0].lerp(corners[1], at.x);
+    let top = corners[3].lerp(corners[2], at.x);
+    bottom.lerp(top, at.y)
+}
+
+/// Two smooth triangles for each of `columns` by `rows` pieces of the patch, with the patch
+/// parameters (s, t) of each triangle's corners.
+fn triangulate(
+    controls: &[DVec3; 16],
+    columns: usize,
+    rows: usize,
+) -> (Vec<MeshTriangle>, Vec<[DVec2; 3]>) {
     let mut grid = Vec::with_capacity((columns + 1) * (rows + 1));
     for row in 0..=rows {
         for column in 0..=columns {
@@ -189,7 +217,11 @@ fn triangulate(controls: &[DVec3; 16], columns: usize, rows: usize) -> Vec<MeshT
         }
     }
     let at = |column: usize, row: usize| grid[row * (columns + 1) + column];
+    let parameters = |column: usize, row: usize| {
+        DVec2::new(column as f64 / columns as f64, row as f64 / rows as f64)
+    };
     let mut triangles = Vec::with_capacity(2 * columns * rows);
+    let mut triangle_uvs = Vec::with_capacity(2 * columns * rows);
     for row in 0..rows {
         for column in 0..columns {
             let corners = [
@@ -197,6 +229,12 @@ fn triangulate(controls: &[DVec3; 16], columns: usize, rows: usize) -> Vec<MeshT
                 at(column + 1, row),
                 at(column + 1, row + 1),
                 at(column, row + 1),
+            ];
+            let corner_parameters = [
+                parameters(column, row),
+                parameters(column + 1, row),
+                parameters(column + 1, row + 1),
+                parameters(column, row + 1),
             ];
             for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
                 let (pa, pb, pc) = (corners[a].0, corners[b].0, corners[c].0);
@@ -206,6 +244,11 @@ fn triangulate(controls: &[DVec3; 16], columns: usize, rows: usize) -> Vec<MeshT
                         .or_else(|| face.try_normalize())
                         .unwrap_or(DVec3::Y)
                 };
+                triangle_uvs.push([
+                    corner_parameters[a],
+                    corner_parameters[b],
+                    corner_parameters[c],
+                ]);
                 triangles.push(MeshTriangle {
                     corners: [pa, pb, pc],
                     normals: Some([
@@ -217,7 +260,7 @@ fn triangulate(controls: &[DVec3; 16], columns: usize, rows: usize) -> Vec<MeshT
             }
         }
     }
-    triangles
+    (triangles, triangle_uvs)
 }
 
 #[cfg(test)]
@@ -243,7 +286,10 @@ mod tests {
 
     #[test]
     fn steps_give_two_triangles_per_piece() {
-        assert_eq!(triangulate(&flat(), 8, 4).len(), 64);
-        assert_eq!(triangulate(&flat(), 1, 1).len(), 2);
+        assert_eq!(triangulate(&flat(), 8, 4).0.len(), 64);
+        assert_eq!(triangulate(&flat(), 1, 1).0.len(), 2);
+        let at = DVec2::new(0.25, 0.5);
+        let corners = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
+        assert_eq!(bilinear(&corners, at), at);
     }
 }
