@@ -315,6 +315,7 @@ impl Evaluator {
                     pigment = Pigment::Image {
                         image: Arc::new(image),
                         transform: Transform::IDENTITY,
+                        warps: None,
                     };
                     continue;
                 }
@@ -331,7 +332,7 @@ impl Evaluator {
                 if let Some(spec) = self.pattern_keyword(word, *span, stream)? {
                     let map = match spec.block_count() {
                         Some(count) => PigmentMap::Blocks(self.block_list(stream, count)?),
-                        None => PigmentMap::Colours(grey_ramp()),
+                        None => PigmentMap::Colours(default_colours(&spec)),
                     };
                     pigment = Pigment::Pattern {
                         pattern: Box::new(spec),
@@ -340,14 +341,14 @@ impl Evaluator {
                     };
                     continue;
                 }
-                if let Pigment::Pattern { pattern, .. } = &mut pigment {
+                if let Some(pattern) = modified_pattern(&mut pigment) {
                     if self.pattern_modifier(word, *span, stream, pattern)? {
                         continue;
                     }
                 }
             }
             if let Item::Block(block) = &item {
-                if let Pigment::Pattern { pattern, .. } = &mut pigment {
+                if let Some(pattern) = modified_pattern(&mut pigment) {
                     if self.pattern_block(block, pattern)? {
                         continue;
                     }
@@ -357,8 +358,13 @@ impl Evaluator {
                 Item::Keyword(word, span) => match &**word {
                     "translate" | "rotate" | "scale" | "matrix" | "transform" => {
                         let t = self.transform_keyword(word, *span, stream)?;
-                        if let Pigment::Pattern { pattern, .. } = &mut pigment {
-                            pattern.note_transform(&t);
+                        match &mut pigment {
+                            Pigment::Pattern { pattern, .. } => pattern.note_transform(&t),
+                            Pigment::Image {
+                                warps: Some(pattern),
+                                ..
+                            } => pattern.note_transform(&t),
+                            _ => {}
                         }
                         pigment.transform(&t);
                     }
@@ -648,6 +654,33 @@ fn set_colour_component(colour: &mut Colour, keyword: &str, amount: f64) {
             colour.blue = amount;
         }
     }
+}
+
+/// The pattern that the pattern modifiers written in `pigment` change: the pattern of a
+/// patterned pigment, or the image pattern that carries an image map's turbulence and warps
+/// (made on first use). `None` for other pigments.
+fn modified_pattern(pigment: &mut Pigment) -> Option<&mut Pattern> {
+    match pigment {
+        Pigment::Pattern { pattern, .. } => Some(pattern),
+        Pigment::Image { image, warps, .. } => Some(warps.get_or_insert_with(|| {
+            Box::new(Pattern::new(crate::pattern::PatternKind::ImagePattern(
+                image.clone(),
+            )))
+        })),
+        _ => None,
+    }
+}
+
+/// The colour map of a pigment that names `pattern` without one: the pattern's built-in map,
+/// or else black to white.
+fn default_colours(pattern: &Pattern) -> Vec<(f64, Colour)> {
+    if pattern.default_colour_map.is_empty() {
+        return grey_ramp();
+    }
+    let entries = pattern.default_colour_map.iter();
+    entries
+        .map(|&(key, [red, green, blue])| (key, Colour::rgb(red, green, blue)))
+        .collect()
 }
 
 /// POV-Ray's map for a pattern without one: black to white.

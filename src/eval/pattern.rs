@@ -15,8 +15,8 @@ use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::noise::NoiseGenerator;
 use crate::pattern::{
-    BlackHole, Colouring, Crackle, Fractal, FractalKind, MagnetType, Mapping, MappingKind,
-    PatternKind, PatternSpec, Repeat, Warp, WaveShape,
+    default_colour_map, BlackHole, Colouring, Crackle, Fractal, FractalKind, MagnetType, Mapping,
+    MappingKind, PatternKind, PatternSpec, Repeat, Warp, WaveShape,
 };
 use crate::syntax::ast::{Block, BlockHead, Item};
 
@@ -106,6 +106,7 @@ impl Evaluator {
         };
         let mut pattern = PatternSpec::new(kind);
         pattern.use_global_noise_generator(self.settings.noise_generator);
+        pattern.default_colour_map = default_colour_map(word);
         Ok(Some(pattern))
     }
 

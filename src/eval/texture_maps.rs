@@ -127,6 +127,7 @@ impl Evaluator {
                 Value::Pigment(Rc::new(Pigment::Image {
                     image: Arc::new(image),
                     transform: Transform::IDENTITY,
+                    warps: None,
                 }))
             }
             _ => {

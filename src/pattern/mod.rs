@@ -15,6 +15,7 @@
 //! Maps (colour, pigment, normal, texture maps) and what a value means live with the textures
 //! (`render::pattern`); this module only knows patterns.
 
+mod default_maps;
 mod fractal;
 mod geometric;
 mod noise_based;
@@ -27,6 +28,7 @@ use glam::DVec3;
 use crate::noise::{vector_turbulence, NoiseGenerator, TurbulenceShape};
 use crate::scene::Transform;
 
+pub use default_maps::{default_colour_map, DefaultColourMap};
 pub use fractal::{Colouring, Fractal, FractalKind, MagnetType};
 pub use geometric::checker_block;
 pub use noise_based::{ClassicTurbulence, Crackle};
@@ -50,6 +52,8 @@ pub struct PatternSpec {
     pub noise_generator: NoiseGenerator,
     /// Whether the pattern names its own `noise_generator`.
     pub own_noise_generator: bool,
+    /// The colour map a pigment uses when it gives none (empty: black to white).
+    pub default_colour_map: DefaultColourMap,
     /// Every transformation noted so far, composed (outer from inner).
     noted: Transform,
 }
@@ -178,6 +182,7 @@ impl PatternSpec {
             warps: Vec::new(),
             noise_generator: NoiseGenerator::default(),
             own_noise_generator: false,
+            default_colour_map: &[],
             noted: Transform::IDENTITY,
         }
     }
@@ -315,7 +320,7 @@ impl PatternSpec {
 
     /// The point the raw pattern is evaluated at: through the warps and the
     /// transformations between them (last written first), then the classic turbulence.
-    fn moved_point(&self, point: DVec3) -> DVec3 {
+    pub fn moved_point(&self, point: DVec3) -> DVec3 {
         // `point` is in the innermost pattern space. Each warp's frame is that space moved by
         // the transformations written before the warp, so the point is carried into the
         // last warp's frame, warped, carried back into the previous warp's frame, and so on.

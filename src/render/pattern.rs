@@ -74,8 +74,16 @@ fn colour_at_depth(pigment: &Pigment, world_point: DVec3, depth: u32) -> Colour 
             }
             Colour::from_array(sum)
         }
-        Pigment::Image { image, transform } => {
-            image_colour(image, transform.point_to_inner(world_point))
+        Pigment::Image {
+            image,
+            transform,
+            warps,
+        } => {
+            let point = transform.point_to_inner(world_point);
+            match warps {
+                Some(pattern) => image_colour(image, pattern.moved_point(point)),
+                None => image_colour(image, point),
+            }
         }
     }
 }
