@@ -15,14 +15,7 @@ use std::rc::Rc;
 use std::sync::Arc;
 
 /// Patterns POV-Ray has that durer does not render yet (they fall back to their first colour).
-pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "aoi",
-    "density_file",
-    "function",
-    "object",
-    "pigment_pattern",
-    "slope",
-];
+pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &["density_file", "function"];
 
 impl Evaluator {
     /// `texture { [Ident] pigment normal finish transforms }`, or a pattern of whole
@@ -35,8 +28,12 @@ impl Evaluator {
         let mut pattern_transform = Transform::IDENTITY;
         let mut average = false;
         while let Some(item) = self.next_item(stream)? {
-            if let Some(spec) = self.image_pattern(&item)? {
-                pattern = Some((spec, None, item.span()));
+            if let Some((spec, list)) = self.block_pattern(&item)? {
+                let blocks = match (spec.block_count(), list) {
+                    (Some(count), Some(mut list)) => self.texture_block_list(&mut list, count)?,
+                    _ => None,
+                };
+                pattern = Some((spec, blocks.map(BlendMap::Blocks), item.span()));
                 pattern_transform = Transform::IDENTITY;
                 continue;
             }
@@ -320,10 +317,16 @@ impl Evaluator {
                     continue;
                 }
             }
-            if let Some(spec) = self.image_pattern(&item)? {
+            if let Some((spec, list)) = self.block_pattern(&item)? {
+                let map = match (spec.block_count(), list) {
+                    (Some(count), Some(mut list)) => {
+                        PigmentMap::Blocks(self.block_list(&mut list, count)?)
+                    }
+                    _ => PigmentMap::Colours(grey_ramp()),
+                };
                 pigment = Pigment::Pattern {
                     pattern: Box::new(spec),
-                    map: PigmentMap::Colours(grey_ramp()),
+                    map,
                     transform: Transform::IDENTITY,
                 };
                 continue;

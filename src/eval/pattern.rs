@@ -8,15 +8,17 @@
 //! (`PatternSpec::use_global_noise_generator` can apply a later one).
 
 use glam::{DVec2, DVec3};
+use std::sync::Arc;
 
 use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
+use crate::geometry::World;
 use crate::noise::NoiseGenerator;
 use crate::pattern::{
-    default_colour_map, BlackHole, Colouring, Crackle, Fractal, FractalKind, MagnetType, Mapping,
-    MappingKind, PatternKind, PatternSpec, Repeat, Warp, WaveShape,
+    default_colour_map, Altitude, BlackHole, Colouring, Crackle, Fractal, FractalKind, MagnetType,
+    Mapping, MappingKind, PatternKind, PatternSpec, Repeat, Slope, Warp, WaveShape,
 };
 use crate::syntax::ast::{Block, BlockHead, Item};
 
@@ -36,6 +38,7 @@ impl Evaluator {
     ) -> EvalResult<Option<PatternSpec>> {
         let kind = match word {
             "agate" => PatternKind::Agate { agate_turb: 1.0 },
+            "aoi" => PatternKind::Aoi,
             "boxed" => PatternKind::Boxed,
             "bozo" | "spotted" => PatternKind::Bozo,
             "brick" => PatternKind::Brick {
@@ -108,6 +111,122 @@ impl Evaluator {
         pattern.use_global_noise_generator(self.settings.noise_generator);
         pattern.default_colour_map = default_colour_map(word);
         Ok(Some(pattern))
+    }
+
+    /// When `item` is a pattern written as a block (`image_pattern { .. }`,
+    /// `pigment_pattern { .. }`, `slope { .. }`, `object { .. }`), parses it. For `object`
+    /// the block list (the items for outside and inside) is inside the block: the stream
+    /// holding it comes back too, for the owner to read the list from.
+    pub(crate) fn block_pattern(
+        &mut self,
+        item: &Item,
+    ) -> EvalResult<Option<(PatternSpec, Option<Stream>)>> {
+        let Item::Block(block) = item else {
+            return Ok(None);
+        };
+        let BlockHead::Word(head) = &block.head else {
+            return Ok(None);
+        };
+        let mut body = Stream::new(block.body.clone());
+        let kind = match &**head {
+            "image_pattern" => return Ok(self.image_pattern(item)?.map(|spec| (spec, None))),
+            "pigment_pattern" => {
+                let pigment = self.eval_pigment(&mut body)?;
+                PatternKind::PigmentPattern(Arc::new(pigment))
+            }
+            "slope" => PatternKind::Slope(self.slope_body(block.head_span, &mut body)?),
+            "object" => {
+                let (value, span) = self.expect_value(&mut body, "an object")?;
+                let object = match value {
+                    Value::Object(object) => object,
+                    other => {
+                        return Err(self
+                            .error(
+                                span,
+                                format!("expected an object, found {}", other.type_name()),
+                            )
+                            .with_label("the `object` pattern needs an object")
+                            .into())
+                    }
+                };
+                let world = World::build_from_objects(vec![Arc::unwrap_or_clone(object)]);
+                let mut pattern = PatternSpec::new(PatternKind::Object(Arc::new(world)));
+                pattern.use_global_noise_generator(self.settings.noise_generator);
+                return Ok(Some((pattern, Some(body))));
+            }
+            _ => return Ok(None),
+        };
+        let mut pattern = PatternSpec::new(kind);
+        pattern.use_global_noise_generator(self.settings.noise_generator);
+        Ok(Some((pattern, None)))
+    }
+
+    /// The body of `slope { .. }`: `DIRECTION [, LO, HI] [altitude DIRECTION [, LO, HI]]`
+    /// or `point_at POINT [, LO, HI]`.
+    fn slope_body(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Slope> {
+        let point_at = match self.peek_item(stream)? {
+            Some(Item::Keyword(word, _)) if &*word == "point_at" => {
+                let _ = self.next_item(stream)?;
+                Some(self.expect_vector(stream, "a point")?)
+            }
+            _ => None,
+        };
+        let direction = match point_at {
+            Some(_) => DVec3::Y,
+            None => self.expect_vector(stream, "a slope direction")?,
+        };
+        if point_at.is_none() && direction == DVec3::ZERO {
+            return Err(self
+                .error(span, "the `slope` direction must not be zero")
+                .into());
+        }
+        let mut slope = Slope::new(direction);
+        slope.point_at = point_at;
+        if let Some(range) = self.optional_range(stream)? {
+            slope.slope_range = range;
+        }
+        match self.next_item(stream)? {
+            None => {}
+            Some(Item::Keyword(word, word_span)) if &*word == "altitude" => {
+                if point_at.is_some() {
+                    return Err(self
+                        .error(
+                            word_span,
+                            "`altitude` cannot follow `point_at` in a `slope`",
+                        )
+                        .into());
+                }
+                let direction = self.expect_vector(stream, "an altitude direction")?;
+                let range = self.optional_range(stream)?.unwrap_or((0.0, 1.0));
+                slope.altitude = Some(Altitude {
+                    direction: direction.try_normalize().unwrap_or(DVec3::ZERO),
+                    weight: direction.length(),
+                    range,
+                });
+                if let Some(extra) = self.next_item(stream)? {
+                    return Err(self.unexpected_in(&extra, "slope"));
+                }
+            }
+            Some(other) => return Err(self.unexpected_in(&other, "slope")),
+        }
+        Ok(slope)
+    }
+
+    /// An optional `, LOW, HIGH` pair.
+    fn optional_range(&mut self, stream: &mut Stream) -> EvalResult<Option<(f64, f64)>> {
+        match self.next_item(stream)? {
+            Some(Item::Comma(_)) => {
+                let low = self.expect_float(stream, "the low end of the range")?;
+                self.skip_comma(stream)?;
+                let high = self.expect_float(stream, "the high end of the range")?;
+                Ok(Some((low, high)))
+            }
+            Some(other) => {
+                stream.push_back(other);
+                Ok(None)
+            }
+            None => Ok(None),
+        }
     }
 
     /// When `word` is a pattern modifier (`turbulence`, `octaves`, `frequency`, wave types,

@@ -318,11 +318,20 @@ impl Evaluator {
         let mut average = false;
         let mut pattern_started = false;
         while let Some(item) = self.next_item(stream)? {
-            if let Some(spec) = self.image_pattern(&item)? {
+            if let Some((spec, list)) = self.block_pattern(&item)? {
                 let mut fresh = Normal::new(NormalSource::Pattern {
-                    pattern: spec,
+                    pattern: spec.clone(),
                     slope_map: None,
                 });
+                if let (Some(count), Some(mut list)) = (spec.block_count(), list) {
+                    let blocks = self.normal_block_list(&mut list, count)?;
+                    if !blocks.is_empty() {
+                        fresh.source = NormalSource::Map {
+                            pattern: spec,
+                            map: BlendMap::Blocks(blocks),
+                        };
+                    }
+                }
                 if let Some(amount) = self.optional_amount(stream)? {
                     fresh.amount = amount;
                 }

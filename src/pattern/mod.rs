@@ -20,6 +20,7 @@ mod fractal;
 mod geometric;
 mod noise_based;
 mod normals;
+mod surface;
 mod warp;
 mod wave;
 
@@ -32,6 +33,7 @@ pub use default_maps::{default_colour_map, DefaultColourMap};
 pub use fractal::{Colouring, Fractal, FractalKind, MagnetType};
 pub use geometric::checker_block;
 pub use noise_based::{ClassicTurbulence, Crackle};
+pub use surface::{Altitude, Slope, SurfaceContext};
 pub use warp::{BlackHole, Mapping, MappingKind, Repeat, Warp};
 pub use wave::{Wave, WaveShape};
 
@@ -140,6 +142,16 @@ pub enum PatternKind {
     Radial,
     /// Ripples from the wave centres.
     Ripples,
+    /// `slope { .. }`: the surface normal against a direction (needs the surface).
+    Slope(Slope),
+    /// `aoi`: the angle between the ray and the surface (needs the surface).
+    Aoi,
+    /// `pigment_pattern { .. }`: the grey level 0.297 R + 0.589 G + 0.114 B of a pigment
+    /// (measured; filter and transmit do not count).
+    PigmentPattern(std::sync::Arc<crate::scene::Pigment>),
+    /// `object { .. }`: block 1 inside the object, block 0 outside (the geometry is built
+    /// once, when the pattern is parsed).
+    Object(std::sync::Arc<crate::geometry::World>),
     /// 1 at the origin falling to 0 at radius 1.
     Spherical,
     /// A screw around the z axis with a number of arms (the integer part is used).
@@ -216,7 +228,7 @@ impl PatternSpec {
     /// `None` for patterns with a continuous value.
     pub fn block_count(&self) -> Option<usize> {
         match self.kind {
-            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Checker | PatternKind::Brick { .. } | PatternKind::Object(_) => Some(2),
             PatternKind::Hexagon => Some(3),
             PatternKind::Square => Some(4),
             PatternKind::Triangular | PatternKind::Cubic => Some(6),
@@ -253,20 +265,33 @@ impl PatternSpec {
             return 0;
         }
         let p = self.moved_point(point);
-        match self.kind {
+        match &self.kind {
             PatternKind::Checker => checker_block(p),
-            PatternKind::Brick { size, mortar } => geometric::brick_block(p, size, mortar),
+            PatternKind::Brick { size, mortar } => geometric::brick_block(p, *size, *mortar),
             PatternKind::Hexagon => geometric::hexagon_block(p),
             PatternKind::Square => geometric::square_block(p),
             PatternKind::Triangular => geometric::triangular_block(p),
             PatternKind::Cubic => geometric::cubic_block(p),
+            PatternKind::Object(world) => usize::from(world.inside(p)),
             _ => 0,
         }
+    }
+
+    /// True for the patterns whose value depends on the surface being shaded (`slope`,
+    /// `aoi`): their callers pass a [`SurfaceContext`] to [`Self::value_at`].
+    pub fn uses_surface(&self) -> bool {
+        matches!(self.kind, PatternKind::Slope(_) | PatternKind::Aoi)
     }
 
     /// The pattern's value in [0, 1] at a pattern-space point (after turbulence, warps,
     /// frequency, phase and the wave shape). Block patterns give their block index.
     pub fn value(&self, point: DVec3) -> f64 {
+        self.value_at(point, &SurfaceContext::default())
+    }
+
+    /// [`Self::value`] for a point on a surface: `surface` holds the normal and ray
+    /// direction in pattern space, for the patterns that [`Self::uses_surface`].
+    pub fn value_at(&self, point: DVec3, surface: &SurfaceContext) -> f64 {
         if !point.is_finite() {
             return 0.0;
         }
@@ -274,7 +299,7 @@ impl PatternSpec {
             return self.block(point) as f64;
         }
         let p = self.moved_point(point);
-        let value = self.wave.apply(self.raw_value(p));
+        let value = self.wave.apply(self.raw_value(p, surface));
         if value.is_finite() {
             value
         } else {
@@ -348,7 +373,7 @@ impl PatternSpec {
     }
 
     /// The pattern's value before frequency, phase and wave shape.
-    fn raw_value(&self, p: DVec3) -> f64 {
+    fn raw_value(&self, p: DVec3, surface: &SurfaceContext) -> f64 {
         let generator = self.noise_generator;
         let turbulence = &self.turbulence;
         match &self.kind {
@@ -375,6 +400,13 @@ impl PatternSpec {
             }
             PatternKind::Radial => geometric::radial(p),
             PatternKind::Ripples => noise_based::ripples(p, generator),
+            PatternKind::Slope(slope) => slope.value(p, surface.normal),
+            PatternKind::Aoi => surface::angle_of_incidence(surface.normal, surface.ray_direction),
+            PatternKind::PigmentPattern(pigment) => {
+                let [red, green, blue, _, _] =
+                    crate::render::pattern::pigment_colour(pigment, p).to_array();
+                0.297 * red + 0.589 * green + 0.114 * blue
+            }
             PatternKind::Spherical => geometric::spherical(p),
             PatternKind::SquareTiles => geometric::square_tiles(p),
             PatternKind::Spiral1(arms) => {
@@ -392,7 +424,8 @@ impl PatternSpec {
             | PatternKind::Hexagon
             | PatternKind::Square
             | PatternKind::Triangular
-            | PatternKind::Cubic => self.block(p) as f64,
+            | PatternKind::Cubic
+            | PatternKind::Object(_) => self.block(p) as f64,
         }
     }
 }

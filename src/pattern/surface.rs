@@ -1,0 +1,99 @@
+//! The patterns that depend on the surface rather than on the point alone: `slope` (the
+//! surface normal against a direction, optionally blended with an altitude gradient) and
+//! `aoi` (the angle between the ray and the surface).
+//!
+//! In: a pattern-space point and the [`SurfaceContext`] (normal and ray direction, world
+//! space) of the hit being shaded. Out: the raw pattern value. Holds: pure,
+//! allocation-free; without a surface (zero normal) the value is that of a normal
+//! perpendicular to everything, 0.5.
+
+use glam::DVec3;
+
+/// What a surface-dependent pattern knows of the hit being shaded, in world space. Zero
+/// vectors mean "unknown" (a pattern evaluated away from any surface, such as in media).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SurfaceContext {
+    /// The unit normal facing the incoming ray (before any `normal { }` perturbation).
+    pub normal: DVec3,
+    /// The unit direction of the ray that hit the surface.
+    pub ray_direction: DVec3,
+}
+
+/// `slope { .. }`'s settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slope {
+    /// The unit direction the normal is compared with (for `point_at`, unused).
+    pub direction: DVec3,
+    /// The weight of the slope part: the length of the direction as written.
+    pub slope_weight: f64,
+    /// The slope values mapped to 0 and 1.
+    pub slope_range: (f64, f64),
+    /// `point_at`: the point the normal is compared with the direction to.
+    pub point_at: Option<DVec3>,
+    /// `altitude`: the unit gradient direction, its weight (length as written) and the
+    /// heights mapped to 0 and 1.
+    pub altitude: Option<Altitude>,
+}
+
+/// The altitude part of a `slope` pattern.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Altitude {
+    /// Unit direction of the gradient.
+    pub direction: DVec3,
+    /// Its weight: the length of the direction as written.
+    pub weight: f64,
+    /// The heights along `direction` mapped to 0 and 1.
+    pub range: (f64, f64),
+}
+
+impl Slope {
+    /// `slope { direction }` with the full range 0 to 1 and no altitude.
+    pub fn new(direction: DVec3) -> Slope {
+        let length = direction.length();
+        Slope {
+            direction: direction.try_normalize().unwrap_or(DVec3::Y),
+            slope_weight: length,
+            slope_range: (0.0, 1.0),
+            point_at: None,
+            altitude: None,
+        }
+    }
+
+    /// The raw value at pattern-space `point` with the pattern-space unit `normal`.
+    pub fn value(&self, point: DVec3, normal: DVec3) -> f64 {
+        let towards = match self.point_at {
+            Some(target) => (target - point).try_normalize().unwrap_or(DVec3::ZERO),
+            None => self.direction,
+        };
+        let slope = 0.5 + 0.5 * normal.dot(towards);
+        let slope = stretch(slope, self.slope_range);
+        match self.altitude {
+            None => slope,
+            Some(altitude) => {
+                let height = stretch(point.dot(altitude.direction), altitude.range);
+                let total = self.slope_weight + altitude.weight;
+                if total > 0.0 {
+                    (self.slope_weight * slope + altitude.weight * height) / total
+                } else {
+                    slope
+                }
+            }
+        }
+    }
+}
+
+/// `value` with `range.0` mapped to 0 and `range.1` to 1 (unchanged for an empty range).
+fn stretch(value: f64, (low, high): (f64, f64)) -> f64 {
+    let span = high - low;
+    if span != 0.0 && span.is_finite() {
+        (value - low) / span
+    } else {
+        value
+    }
+}
+
+/// `aoi`: 0.5 where the ray grazes the surface, 1 where it meets it head on.
+pub fn angle_of_incidence(normal: DVec3, ray_direction: DVec3) -> f64 {
+    let cosine = normal.dot(-ray_direction).clamp(-1.0, 1.0);
+    1.0 - cosine.acos() / std::f64::consts::PI
+}
