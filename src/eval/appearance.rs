@@ -110,6 +110,7 @@ impl Evaluator {
                                 &mut pattern,
                                 entries,
                                 average,
+                                &pattern_transform,
                                 &mut texture,
                                 block.head_span,
                             )?;
@@ -147,6 +148,7 @@ impl Evaluator {
                                 &mut pattern,
                                 entries,
                                 average,
+                                &pattern_transform,
                                 &mut texture,
                                 expr.span(),
                             )?;
@@ -185,6 +187,7 @@ impl Evaluator {
         pattern: &mut Option<(Pattern, Option<BlendMap<Texture>>, Span)>,
         entries: Vec<(f64, Texture)>,
         average: bool,
+        pattern_transform: &Transform,
         texture: &mut Texture,
         span: Span,
     ) -> EvalResult<()> {
@@ -194,7 +197,11 @@ impl Evaluator {
         }
         match pattern {
             Some((_, map, _)) => {
-                *map = Some(BlendMap::Entries(entries));
+                // The transformations written between the pattern and its map move the
+                // map's textures too (measured).
+                let mut entries = BlendMap::Entries(entries);
+                entries.for_each_mut(|inner| inner.transform(pattern_transform));
+                *map = Some(entries);
                 Ok(())
             }
             None => Err(self
@@ -487,7 +494,13 @@ impl Evaluator {
             return Ok(());
         }
         match pigment {
-            Pigment::Pattern { map, .. } => {
+            Pigment::Pattern { map, transform, .. } => {
+                // The transformations written between the pattern and its map move the
+                // map's pigments too (measured).
+                let mut entries = entries;
+                for (_, entry) in &mut entries {
+                    entry.transform(transform);
+                }
                 *map = PigmentMap::Pigments(entries);
                 Ok(())
             }

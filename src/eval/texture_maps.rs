@@ -546,10 +546,11 @@ impl Evaluator {
                 transform,
                 ..
             }) => {
-                let mut normal = Normal::new(NormalSource::Map {
-                    pattern,
-                    map: BlendMap::Entries(entries),
-                });
+                // The transformations written between the pattern and its map move the
+                // map's normals too (measured).
+                let mut map = BlendMap::Entries(entries);
+                map.for_each_mut(|entry| entry.transform(&transform));
+                let mut normal = Normal::new(NormalSource::Map { pattern, map });
                 normal.transform = transform;
                 Ok(normal)
             }

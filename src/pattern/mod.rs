@@ -277,20 +277,14 @@ impl PatternSpec {
         }
     }
 
-    /// True for the patterns whose value depends on the surface being shaded (`slope`,
-    /// `aoi`): their callers pass a [`SurfaceContext`] to [`Self::value_at`].
-    pub fn uses_surface(&self) -> bool {
-        matches!(self.kind, PatternKind::Slope(_) | PatternKind::Aoi)
-    }
-
     /// The pattern's value in [0, 1] at a pattern-space point (after turbulence, warps,
     /// frequency, phase and the wave shape). Block patterns give their block index.
     pub fn value(&self, point: DVec3) -> f64 {
         self.value_at(point, &SurfaceContext::default())
     }
 
-    /// [`Self::value`] for a point on a surface: `surface` holds the normal and ray
-    /// direction in pattern space, for the patterns that [`Self::uses_surface`].
+    /// [`Self::value`] for a point on a surface: `surface` holds the hit point, normal and
+    /// ray direction in world space, for the patterns that depend on it (`slope`, `aoi`).
     pub fn value_at(&self, point: DVec3, surface: &SurfaceContext) -> f64 {
         if !point.is_finite() {
             return 0.0;
@@ -400,7 +394,7 @@ impl PatternSpec {
             }
             PatternKind::Radial => geometric::radial(p),
             PatternKind::Ripples => noise_based::ripples(p, generator),
-            PatternKind::Slope(slope) => slope.value(p, surface.normal),
+            PatternKind::Slope(slope) => slope.value(p, surface),
             PatternKind::Aoi => surface::angle_of_incidence(surface.normal, surface.ray_direction),
             PatternKind::PigmentPattern(pigment) => {
                 let [red, green, blue, _, _] =

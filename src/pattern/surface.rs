@@ -2,10 +2,16 @@
 //! surface normal against a direction, optionally blended with an altitude gradient) and
 //! `aoi` (the angle between the ray and the surface).
 //!
-//! In: a pattern-space point and the [`SurfaceContext`] (normal and ray direction, world
-//! space) of the hit being shaded. Out: the raw pattern value. Holds: pure,
+//! In: a pattern-space point and the [`SurfaceContext`] (point, normal and ray direction in
+//! world space) of the hit being shaded. Out: the raw pattern value. Holds: pure,
 //! allocation-free; without a surface (zero normal) the value is that of a normal
 //! perpendicular to everything, 0.5.
+//!
+//! Measured against POV-Ray 3.7 renders: the slope direction, `point_at` and the ray and
+//! normal of `aoi` live in world space — the pattern's transformations and turbulence do
+//! not turn or move them; only the altitude part uses the pattern-space point. Values
+//! outside [0, 1] (a `Lo_slope, Hi_slope` range narrower than the slopes met) are not
+//! clamped: the wave wraps them like any pattern value.
 
 use glam::DVec3;
 
@@ -13,6 +19,8 @@ use glam::DVec3;
 /// vectors mean "unknown" (a pattern evaluated away from any surface, such as in media).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct SurfaceContext {
+    /// The hit point.
+    pub point: DVec3,
     /// The unit normal facing the incoming ray (before any `normal { }` perturbation).
     pub normal: DVec3,
     /// The unit direction of the ray that hit the surface.
@@ -59,13 +67,15 @@ impl Slope {
         }
     }
 
-    /// The raw value at pattern-space `point` with the pattern-space unit `normal`.
-    pub fn value(&self, point: DVec3, normal: DVec3) -> f64 {
+    /// The raw value at pattern-space `point` on `surface`.
+    pub fn value(&self, point: DVec3, surface: &SurfaceContext) -> f64 {
         let towards = match self.point_at {
-            Some(target) => (target - point).try_normalize().unwrap_or(DVec3::ZERO),
+            Some(target) => (target - surface.point)
+                .try_normalize()
+                .unwrap_or(DVec3::ZERO),
             None => self.direction,
         };
-        let slope = 0.5 + 0.5 * normal.dot(towards);
+        let slope = angle_of_incidence(surface.normal, -towards);
         let slope = stretch(slope, self.slope_range);
         match self.altitude {
             None => slope,
@@ -92,7 +102,9 @@ fn stretch(value: f64, (low, high): (f64, f64)) -> f64 {
     }
 }
 
-/// `aoi`: 0.5 where the ray grazes the surface, 1 where it meets it head on.
+/// `aoi`: 0.5 where the ray grazes the surface, 1 where it meets it head on: one minus the
+/// angle between the normal and the reversed ray, over π. (The slope is the same measure of
+/// the angle between the normal and the slope direction, measured.)
 pub fn angle_of_incidence(normal: DVec3, ray_direction: DVec3) -> f64 {
     let cosine = normal.dot(-ray_direction).clamp(-1.0, 1.0);
     1.0 - cosine.acos() / std::f64::consts::PI

@@ -29,7 +29,7 @@
 //!   normals, normalised.
 
 use super::image_map::bump_map_tilt;
-use super::pattern::{blend_position, block_index, surface_in};
+use super::pattern::{blend_position, block_index};
 use crate::pattern::SurfaceContext;
 use crate::scene::{BlendMap, Normal, NormalSource, SlopeEntry};
 use glam::DVec3;
@@ -53,6 +53,7 @@ const TETRAHEDRON: [DVec3; 4] = [
 /// The unit normal at `world_point` after `normal` tilts the facing unit normal `facing`.
 pub fn perturbed_normal(normal: &Normal, world_point: DVec3, facing: DVec3) -> DVec3 {
     let surface = SurfaceContext {
+        point: world_point,
         normal: facing,
         ray_direction: DVec3::ZERO,
     };
@@ -82,12 +83,11 @@ fn tilt(normal: &Normal, world_point: DVec3, surface: &SurfaceContext, depth: u3
     }
     match &normal.source {
         NormalSource::Pattern { pattern, slope_map } => {
-            let local = surface_in(pattern, &normal.transform, surface);
             let perturbation = match pattern.normal_perturbation(point) {
                 Some(vector) => vector,
                 None => {
                     let height = |p: DVec3| {
-                        let value = pattern.value_at(p, &local);
+                        let value = pattern.value_at(p, surface);
                         match slope_map {
                             Some(entries) => slope_map_height(entries, value),
                             None => value,
@@ -103,16 +103,14 @@ fn tilt(normal: &Normal, world_point: DVec3, surface: &SurfaceContext, depth: u3
         }
         NormalSource::Map { pattern, map } => match map {
             BlendMap::Blocks(blocks) => {
-                let local = surface_in(pattern, &normal.transform, surface);
-                let index = block_index(pattern, point, blocks.len(), &local);
+                let index = block_index(pattern, point, blocks.len(), surface);
                 match blocks.get(index).or(blocks.last()) {
                     Some(block) => unit(tilt(block, world_point, surface, depth + 1), facing),
                     None => facing,
                 }
             }
             BlendMap::Entries(entries) => {
-                let local = surface_in(pattern, &normal.transform, surface);
-                let value = pattern.value_at(point, &local);
+                let value = pattern.value_at(point, surface);
                 let Some((low, high, fraction)) = blend_position(entries, value) else {
                     return facing;
                 };

@@ -17,7 +17,7 @@
 
 use super::image_map::image_colour;
 use crate::pattern::SurfaceContext;
-use crate::scene::{Colour, Pattern, Pigment, PigmentMap, Transform};
+use crate::scene::{Colour, Pattern, Pigment, PigmentMap};
 use glam::DVec3;
 
 /// How far nested pigments (a block of a checker holding another checker...) are followed.
@@ -38,39 +38,22 @@ pub fn pigment_colour_at(
     colour_at_depth(pigment, world_point, surface, 0)
 }
 
-/// The surface a ray meets: the unit geometric normal `normal` turned towards the ray (or
-/// the reversed ray when the normal is not finite) and the ray's unit direction.
-pub fn hit_surface(ray_direction: DVec3, normal: DVec3) -> SurfaceContext {
+/// The surface a ray meets at `point`: the unit geometric normal `normal` turned towards
+/// the ray (or the reversed ray when the normal is not finite) and the ray's unit direction.
+pub fn hit_surface(point: DVec3, ray_direction: DVec3, normal: DVec3) -> SurfaceContext {
     let facing = if ray_direction.dot(normal) <= 0.0 {
         normal
     } else {
         -normal
     };
     SurfaceContext {
+        point,
         normal: if facing.is_finite() {
             facing
         } else {
             -ray_direction
         },
         ray_direction,
-    }
-}
-
-/// `surface` (world space) seen from the pattern space `transform` leads to; the default
-/// (unknown surface) for patterns that do not use it, so that they pay nothing.
-pub fn surface_in(
-    pattern: &Pattern,
-    transform: &Transform,
-    surface: &SurfaceContext,
-) -> SurfaceContext {
-    if !pattern.uses_surface() || *surface == SurfaceContext::default() {
-        return SurfaceContext::default();
-    }
-    let normal = transform.outer_from_inner.matrix3.transpose() * surface.normal;
-    let direction = transform.vector_to_inner(surface.ray_direction);
-    SurfaceContext {
-        normal: normal.try_normalize().unwrap_or(DVec3::ZERO),
-        ray_direction: direction.try_normalize().unwrap_or(DVec3::ZERO),
     }
 }
 
@@ -101,8 +84,7 @@ fn colour_at_depth(
                     block_colour(map, block, block as f64, world_point, surface, depth)
                 }
                 None => {
-                    let local = surface_in(pattern, transform, surface);
-                    let value = pattern.value_at(point, &local);
+                    let value = pattern.value_at(point, surface);
                     match map {
                         PigmentMap::Blocks(blocks) => {
                             let index = spread_index(value, blocks.len());

@@ -16,7 +16,7 @@
 
 use super::image_map::material_choice;
 use super::lights::transmission;
-use super::pattern::{blend_position, block_index, pigment_colour_at, surface_in};
+use super::pattern::{blend_position, block_index, pigment_colour_at};
 use crate::pattern::SurfaceContext;
 use crate::scene::{BlendMap, Colour, CompoundTexture, Texture};
 use glam::DVec3;
@@ -117,16 +117,15 @@ fn components(
             if !point.is_finite() {
                 return;
             }
-            let local = surface_in(pattern, transform, place.surface);
             match map {
                 BlendMap::Blocks(blocks) => {
-                    let index = block_index(pattern, point, blocks.len(), &local);
+                    let index = block_index(pattern, point, blocks.len(), place.surface);
                     if let Some(block) = blocks.get(index).or(blocks.last()) {
                         recurse(block, DVec3::ONE, passes_light);
                     }
                 }
                 BlendMap::Entries(entries) => {
-                    let value = pattern.value_at(point, &local);
+                    let value = pattern.value_at(point, place.surface);
                     if let Some((low, high, fraction)) = blend_position(entries, value) {
                         if fraction < 1.0 {
                             recurse(&entries[low].1, DVec3::splat(1.0 - fraction), passes_light);

@@ -284,7 +284,7 @@ impl<'a> Tracer<'a> {
             colour: DVec3::ZERO,
             continued: None,
         };
-        let surface = hit_surface(ray.direction, hit.normal);
+        let surface = hit_surface(hit.point, ray.direction, hit.normal);
         for_each_component(
             texture,
             hit.point,
@@ -320,7 +320,7 @@ impl<'a> Tracer<'a> {
         weight: RayWeight,
         media: &Media,
     ) -> Shaded {
-        let surface = hit_surface(ray.direction, hit.normal);
+        let surface = hit_surface(hit.point, ray.direction, hit.normal);
         let pigment = pigment_colour_at(&texture.pigment, hit.point, &surface);
         let entering = ray.direction.dot(hit.normal) <= 0.0;
         let facing = if entering { hit.normal } else { -hit.normal };
