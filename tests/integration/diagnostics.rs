@@ -416,3 +416,26 @@ fn material_map_without_textures_is_an_error() {
         &["lists no textures", "expected `texture { .. }` entries"],
     );
 }
+
+#[test]
+fn slope_with_zero_direction_is_refused() {
+    check(
+        "slope_zero_direction",
+        2,
+        25,
+        &["the `slope` direction must not be zero"],
+    );
+}
+
+#[test]
+fn object_pattern_needs_an_object() {
+    check(
+        "object_pattern_not_object",
+        3,
+        34,
+        &[
+            "expected an object, found",
+            "the `object` pattern needs an object",
+        ],
+    );
+}
