@@ -17,8 +17,8 @@ use crate::diag::Span;
 use crate::geometry::World;
 use crate::noise::NoiseGenerator;
 use crate::pattern::{
-    default_colour_map, Altitude, BlackHole, Colouring, Crackle, Fractal, FractalKind, MagnetType,
-    Mapping, MappingKind, PatternKind, PatternSpec, Repeat, Slope, Warp, WaveShape,
+    default_colour_map, Altitude, BlackHole, Colouring, Crackle, DensityFile, Fractal, FractalKind,
+    MagnetType, Mapping, MappingKind, PatternKind, PatternSpec, Repeat, Slope, Warp, WaveShape,
 };
 use crate::syntax::ast::{Block, BlockHead, Item};
 
@@ -52,6 +52,7 @@ impl Evaluator {
             "cubic" => PatternKind::Cubic,
             "cylindrical" => PatternKind::Cylindrical,
             "dents" => PatternKind::Dents,
+            "density_file" => self.density_file_operands(span, stream)?,
             "facets" => PatternKind::Facets {
                 coords: 0.0,
                 size: 0.0,
@@ -292,6 +293,7 @@ impl Evaluator {
             "exponent" => "mandel, julia or magnet",
             "interior" | "exterior" => "mandel, julia, magnet or pavement",
             "number_of_sides" | "number_of_tiles" | "pattern" => "pavement",
+            "interpolate" => "density_file",
             _ => return Ok(false),
         };
         match (&mut pattern.kind, word) {
@@ -329,6 +331,19 @@ impl Evaluator {
                 crackle.offset = self.expect_float(stream, "a float")?
             }
             (PatternKind::Crackle(crackle), "solid") => crackle.solid = true,
+            (PatternKind::DensityFile { interpolation, .. }, "interpolate") => {
+                let number = self.expect_float(stream, "an interpolation (0, 1 or 2)")?;
+                *interpolation = match number {
+                    0.0 => 0,
+                    1.0 => 1,
+                    2.0 => 2,
+                    _ => {
+                        return Err(self
+                            .error(span, "the `density_file` interpolation must be 0, 1 or 2")
+                            .into())
+                    }
+                };
+            }
             (PatternKind::Facets { coords, .. }, "coords") => {
                 *coords = self.expect_float(stream, "a float")?
             }
@@ -540,6 +555,52 @@ impl Evaluator {
                 )
                 .into()),
         }
+    }
+
+    /// `density_file df3 "FILE"`: reads the grid.
+    fn density_file_operands(
+        &mut self,
+        span: Span,
+        stream: &mut Stream,
+    ) -> EvalResult<PatternKind> {
+        match self.next_item(stream)? {
+            Some(Item::Keyword(word, _)) if &*word == "df3" => {}
+            Some(other) => {
+                return Err(self
+                    .error(
+                        other.span(),
+                        "expected `df3` (the only density file format)",
+                    )
+                    .with_label("expected `df3`")
+                    .into())
+            }
+            None => {
+                return Err(self
+                    .error(span, "expected `df3 \"FILE\"` after `density_file`")
+                    .into())
+            }
+        }
+        let (value, name_span) = self.expect_value(stream, "a file name")?;
+        let Value::String(name) = value else {
+            return Err(self
+                .error(name_span, "expected the density file's name in quotes")
+                .into());
+        };
+        let path = self.find_file(&name, name_span, "density file", "no such file")?;
+        let grid = std::fs::read(&path)
+            .map_err(|error| error.to_string())
+            .and_then(|bytes| DensityFile::parse(&bytes))
+            .map_err(|message| {
+                self.error(
+                    name_span,
+                    format!("cannot read density file \"{name}\": {message}"),
+                )
+                .with_label("unreadable density file")
+            })?;
+        Ok(PatternKind::DensityFile {
+            grid: Arc::new(grid),
+            interpolation: 0,
+        })
     }
 
     /// `magnet 1|2 mandel ITERATIONS` or `magnet 1|2 julia COMPLEX, ITERATIONS`.

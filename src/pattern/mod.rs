@@ -16,6 +16,7 @@
 //! (`render::pattern`); this module only knows patterns.
 
 mod default_maps;
+mod density_file;
 mod fractal;
 mod geometric;
 mod noise_based;
@@ -30,6 +31,7 @@ use crate::noise::{vector_turbulence, NoiseGenerator, TurbulenceShape};
 use crate::scene::Transform;
 
 pub use default_maps::{default_colour_map, DefaultColourMap};
+pub use density_file::DensityFile;
 pub use fractal::{Colouring, Fractal, FractalKind, MagnetType};
 pub use geometric::checker_block;
 pub use noise_based::{ClassicTurbulence, Crackle};
@@ -106,6 +108,13 @@ pub enum PatternKind {
     Cylindrical,
     /// Dents (noise cubed as a pigment).
     Dents,
+    /// `density_file df3 "file"`: a voxel grid over the unit cube.
+    DensityFile {
+        /// The grid, read when the scene is parsed.
+        grid: std::sync::Arc<DensityFile>,
+        /// `interpolate`: 0 nearest voxel, 1 trilinear, 2 cubic.
+        interpolation: u8,
+    },
     /// Facets: a normal-only pattern (`coords`, `size`); its value is 0.
     Facets {
         /// `coords` scale (0: not given).
@@ -380,6 +389,10 @@ impl PatternSpec {
             PatternKind::Crackle(settings) => noise_based::crackle(p, settings, generator),
             PatternKind::Cylindrical => geometric::cylindrical(p),
             PatternKind::Dents => noise_based::dents(p, generator),
+            PatternKind::DensityFile {
+                grid,
+                interpolation,
+            } => grid.value(p, *interpolation),
             PatternKind::Facets { .. } | PatternKind::Pavement => 0.0,
             PatternKind::Fractal(fractal) => fractal.value(p.x, p.y),
             PatternKind::Gradient(direction) => geometric::gradient_raw(p, *direction),

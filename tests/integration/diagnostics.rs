@@ -439,3 +439,16 @@ fn object_pattern_needs_an_object() {
         ],
     );
 }
+
+#[test]
+fn broken_density_file_is_refused() {
+    check(
+        "bad_density_file",
+        2,
+        42,
+        &[
+            "cannot read density file \"broken.df3\"",
+            "do not fit 2 x 2 x 2 voxels",
+        ],
+    );
+}
