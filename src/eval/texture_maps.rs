@@ -315,6 +315,10 @@ impl Evaluator {
     /// `normal { [N] PATTERN [bump_size] modifiers | bump_map {..} | average normal_map {..} }`.
     pub(crate) fn eval_normal(&mut self, stream: &mut Stream) -> EvalResult<Normal> {
         let mut normal = self.default_texture.normal.clone().map(|boxed| *boxed);
+        // The bump size a pattern written next starts with: a `bump_size` written before
+        // the pattern (or in `#default { normal { .. } }`) is kept, as in POV-Ray
+        // (measured with normmap.pov).
+        let mut preset_amount = normal.as_ref().map(|normal| normal.amount);
         let mut average = false;
         let mut pattern_started = false;
         while let Some(item) = self.next_item(stream)? {
@@ -323,6 +327,7 @@ impl Evaluator {
                     pattern: spec.clone(),
                     slope_map: None,
                 });
+                fresh.amount = preset_amount.unwrap_or(fresh.amount);
                 if let (Some(count), Some(mut list)) = (spec.block_count(), list) {
                     let blocks = self.normal_block_list(&mut list, count)?;
                     if !blocks.is_empty() {
@@ -349,6 +354,7 @@ impl Evaluator {
                         pattern: spec.clone(),
                         slope_map: None,
                     });
+                    fresh.amount = preset_amount.unwrap_or(fresh.amount);
                     if let Some(count) = spec.block_count() {
                         let blocks = self.normal_block_list(stream, count)?;
                         if !blocks.is_empty() {
@@ -421,6 +427,7 @@ impl Evaluator {
                     }
                     "bump_size" => {
                         let amount = self.expect_float(stream, "a float")?;
+                        preset_amount = Some(amount);
                         if let Some(normal) = &mut normal {
                             normal.amount = amount;
                         }
@@ -523,8 +530,13 @@ impl Evaluator {
         }
         match normal {
             Some(normal) => Ok(normal),
-            None if average => Ok(Normal::new(NormalSource::Average(Vec::new()))),
-            None => Ok(Normal::new(NormalSource::Average(Vec::new()))),
+            None => {
+                // No pattern: a normal that perturbs nothing, keeping its bump size for the
+                // patterns of the normals that start from it.
+                let mut flat = Normal::new(NormalSource::Average(Vec::new()));
+                flat.amount = preset_amount.unwrap_or(flat.amount);
+                Ok(flat)
+            }
         }
     }
 
