@@ -15,14 +15,7 @@ use std::rc::Rc;
 use std::sync::Arc;
 
 /// Patterns POV-Ray has that durer does not render yet (they fall back to their first colour).
-pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "aoi",
-    "density_file",
-    "function",
-    "object",
-    "pigment_pattern",
-    "slope",
-];
+pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &["density_file", "function"];
 
 impl Evaluator {
     /// `texture { [Ident] pigment normal finish transforms }`, or a pattern of whole
@@ -36,8 +29,12 @@ impl Evaluator {
         let mut average = false;
         let mut uv_mapping = false;
         while let Some(item) = self.next_item(stream)? {
-            if let Some(spec) = self.image_pattern(&item)? {
-                pattern = Some((spec, None, item.span()));
+            if let Some((spec, list)) = self.block_pattern(&item)? {
+                let blocks = match (spec.block_count(), list) {
+                    (Some(count), Some(mut list)) => self.texture_block_list(&mut list, count)?,
+                    _ => None,
+                };
+                pattern = Some((spec, blocks.map(BlendMap::Blocks), item.span()));
                 pattern_transform = Transform::IDENTITY;
                 continue;
             }
@@ -112,6 +109,7 @@ impl Evaluator {
                                 &mut pattern,
                                 entries,
                                 average,
+                                &pattern_transform,
                                 &mut texture,
                                 block.head_span,
                             )?;
@@ -149,6 +147,7 @@ impl Evaluator {
                                 &mut pattern,
                                 entries,
                                 average,
+                                &pattern_transform,
                                 &mut texture,
                                 expr.span(),
                             )?;
@@ -190,6 +189,7 @@ impl Evaluator {
         pattern: &mut Option<(Pattern, Option<BlendMap<Texture>>, Span)>,
         entries: Vec<(f64, Texture)>,
         average: bool,
+        pattern_transform: &Transform,
         texture: &mut Texture,
         span: Span,
     ) -> EvalResult<()> {
@@ -199,7 +199,11 @@ impl Evaluator {
         }
         match pattern {
             Some((_, map, _)) => {
-                *map = Some(BlendMap::Entries(entries));
+                // The transformations written between the pattern and its map move the
+                // map's textures too (measured).
+                let mut entries = BlendMap::Entries(entries);
+                entries.for_each_mut(|inner| inner.transform(pattern_transform));
+                *map = Some(entries);
                 Ok(())
             }
             None => Err(self
@@ -330,14 +334,21 @@ impl Evaluator {
                     pigment = Pigment::Image {
                         image: Arc::new(image),
                         transform: Transform::IDENTITY,
+                        warps: None,
                     };
                     continue;
                 }
             }
-            if let Some(spec) = self.image_pattern(&item)? {
+            if let Some((spec, list)) = self.block_pattern(&item)? {
+                let map = match (spec.block_count(), list) {
+                    (Some(count), Some(mut list)) => {
+                        PigmentMap::Blocks(self.block_list(&mut list, count)?)
+                    }
+                    _ => PigmentMap::Colours(grey_ramp()),
+                };
                 pigment = Pigment::Pattern {
                     pattern: Box::new(spec),
-                    map: PigmentMap::Colours(grey_ramp()),
+                    map,
                     transform: Transform::IDENTITY,
                 };
                 continue;
@@ -349,7 +360,7 @@ impl Evaluator {
                     }
                     let map = match spec.block_count() {
                         Some(count) => PigmentMap::Blocks(self.block_list(stream, count)?),
-                        None => PigmentMap::Colours(grey_ramp()),
+                        None => PigmentMap::Colours(default_colours(&spec)),
                     };
                     pigment = Pigment::Pattern {
                         pattern: Box::new(spec),
@@ -358,14 +369,14 @@ impl Evaluator {
                     };
                     continue;
                 }
-                if let Pigment::Pattern { pattern, .. } = &mut pigment {
+                if let Some(pattern) = modified_pattern(&mut pigment) {
                     if self.pattern_modifier(word, *span, stream, pattern)? {
                         continue;
                     }
                 }
             }
             if let Item::Block(block) = &item {
-                if let Pigment::Pattern { pattern, .. } = &mut pigment {
+                if let Some(pattern) = modified_pattern(&mut pigment) {
                     if self.pattern_block(block, pattern)? {
                         continue;
                     }
@@ -375,8 +386,13 @@ impl Evaluator {
                 Item::Keyword(word, span) => match &**word {
                     "translate" | "rotate" | "scale" | "matrix" | "transform" => {
                         let t = self.transform_keyword(word, *span, stream)?;
-                        if let Pigment::Pattern { pattern, .. } = &mut pigment {
-                            pattern.note_transform(&t);
+                        match &mut pigment {
+                            Pigment::Pattern { pattern, .. } => pattern.note_transform(&t),
+                            Pigment::Image {
+                                warps: Some(pattern),
+                                ..
+                            } => pattern.note_transform(&t),
+                            _ => {}
                         }
                         pigment.transform(&t);
                     }
@@ -497,7 +513,13 @@ impl Evaluator {
             return Ok(());
         }
         match pigment {
-            Pigment::Pattern { map, .. } => {
+            Pigment::Pattern { map, transform, .. } => {
+                // The transformations written between the pattern and its map move the
+                // map's pigments too (measured).
+                let mut entries = entries;
+                for (_, entry) in &mut entries {
+                    entry.transform(transform);
+                }
                 *map = PigmentMap::Pigments(entries);
                 Ok(())
             }
@@ -667,6 +689,33 @@ fn set_colour_component(colour: &mut Colour, keyword: &str, amount: f64) {
             colour.blue = amount;
         }
     }
+}
+
+/// The pattern that the pattern modifiers written in `pigment` change: the pattern of a
+/// patterned pigment, or the image pattern that carries an image map's turbulence and warps
+/// (made on first use). `None` for other pigments.
+fn modified_pattern(pigment: &mut Pigment) -> Option<&mut Pattern> {
+    match pigment {
+        Pigment::Pattern { pattern, .. } => Some(pattern),
+        Pigment::Image { image, warps, .. } => Some(warps.get_or_insert_with(|| {
+            Box::new(Pattern::new(crate::pattern::PatternKind::ImagePattern(
+                image.clone(),
+            )))
+        })),
+        _ => None,
+    }
+}
+
+/// The colour map of a pigment that names `pattern` without one: the pattern's built-in map,
+/// or else black to white.
+fn default_colours(pattern: &Pattern) -> Vec<(f64, Colour)> {
+    if pattern.default_colour_map.is_empty() {
+        return grey_ramp();
+    }
+    let entries = pattern.default_colour_map.iter();
+    entries
+        .map(|&(key, [red, green, blue])| (key, Colour::rgb(red, green, blue)))
+        .collect()
 }
 
 /// POV-Ray's map for a pattern without one: black to white.

@@ -8,15 +8,17 @@
 //! (`PatternSpec::use_global_noise_generator` can apply a later one).
 
 use glam::{DVec2, DVec3};
+use std::sync::Arc;
 
 use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
+use crate::geometry::World;
 use crate::noise::NoiseGenerator;
 use crate::pattern::{
-    BlackHole, Colouring, Crackle, Fractal, FractalKind, MagnetType, Mapping, MappingKind,
-    PatternKind, PatternSpec, Repeat, Warp, WaveShape,
+    default_colour_map, Altitude, BlackHole, Colouring, Crackle, DensityFile, Fractal, FractalKind,
+    MagnetType, Mapping, MappingKind, PatternKind, PatternSpec, Repeat, Slope, Warp, WaveShape,
 };
 use crate::syntax::ast::{Block, BlockHead, Item};
 
@@ -36,6 +38,7 @@ impl Evaluator {
     ) -> EvalResult<Option<PatternSpec>> {
         let kind = match word {
             "agate" => PatternKind::Agate { agate_turb: 1.0 },
+            "aoi" => PatternKind::Aoi,
             "boxed" => PatternKind::Boxed,
             "bozo" | "spotted" => PatternKind::Bozo,
             "brick" => PatternKind::Brick {
@@ -49,6 +52,7 @@ impl Evaluator {
             "cubic" => PatternKind::Cubic,
             "cylindrical" => PatternKind::Cylindrical,
             "dents" => PatternKind::Dents,
+            "density_file" => self.density_file_operands(span, stream)?,
             "facets" => PatternKind::Facets {
                 coords: 0.0,
                 size: 0.0,
@@ -106,6 +110,7 @@ impl Evaluator {
         };
         let mut pattern = PatternSpec::new(kind);
         pattern.use_global_noise_generator(self.settings.noise_generator);
+        pattern.default_colour_map = default_colour_map(word);
         Ok(Some(pattern))
     }
 
@@ -125,6 +130,122 @@ impl Evaluator {
         .with_secondary(earlier, "this comes before it")
         .with_help("write the pattern keyword first, then its modifiers and maps")
         .into()
+    }
+
+    /// When `item` is a pattern written as a block (`image_pattern { .. }`,
+    /// `pigment_pattern { .. }`, `slope { .. }`, `object { .. }`), parses it. For `object`
+    /// the block list (the items for outside and inside) is inside the block: the stream
+    /// holding it comes back too, for the owner to read the list from.
+    pub(crate) fn block_pattern(
+        &mut self,
+        item: &Item,
+    ) -> EvalResult<Option<(PatternSpec, Option<Stream>)>> {
+        let Item::Block(block) = item else {
+            return Ok(None);
+        };
+        let BlockHead::Word(head) = &block.head else {
+            return Ok(None);
+        };
+        let mut body = Stream::new(block.body.clone());
+        let kind = match &**head {
+            "image_pattern" => return Ok(self.image_pattern(item)?.map(|spec| (spec, None))),
+            "pigment_pattern" => {
+                let pigment = self.eval_pigment(&mut body)?;
+                PatternKind::PigmentPattern(Arc::new(pigment))
+            }
+            "slope" => PatternKind::Slope(self.slope_body(block.head_span, &mut body)?),
+            "object" => {
+                let (value, span) = self.expect_value(&mut body, "an object")?;
+                let object = match value {
+                    Value::Object(object) => object,
+                    other => {
+                        return Err(self
+                            .error(
+                                span,
+                                format!("expected an object, found {}", other.type_name()),
+                            )
+                            .with_label("the `object` pattern needs an object")
+                            .into())
+                    }
+                };
+                let world = World::build_from_objects(vec![Arc::unwrap_or_clone(object)]);
+                let mut pattern = PatternSpec::new(PatternKind::Object(Arc::new(world)));
+                pattern.use_global_noise_generator(self.settings.noise_generator);
+                return Ok(Some((pattern, Some(body))));
+            }
+            _ => return Ok(None),
+        };
+        let mut pattern = PatternSpec::new(kind);
+        pattern.use_global_noise_generator(self.settings.noise_generator);
+        Ok(Some((pattern, None)))
+    }
+
+    /// The body of `slope { .. }`: `DIRECTION [, LO, HI] [altitude DIRECTION [, LO, HI]]`
+    /// or `point_at POINT [, LO, HI]`.
+    fn slope_body(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Slope> {
+        let point_at = match self.peek_item(stream)? {
+            Some(Item::Keyword(word, _)) if &*word == "point_at" => {
+                let _ = self.next_item(stream)?;
+                Some(self.expect_vector(stream, "a point")?)
+            }
+            _ => None,
+        };
+        let direction = match point_at {
+            Some(_) => DVec3::Y,
+            None => self.expect_vector(stream, "a slope direction")?,
+        };
+        if point_at.is_none() && direction == DVec3::ZERO {
+            return Err(self
+                .error(span, "the `slope` direction must not be zero")
+                .into());
+        }
+        let mut slope = Slope::new(direction);
+        slope.point_at = point_at;
+        if let Some(range) = self.optional_range(stream)? {
+            slope.slope_range = range;
+        }
+        match self.next_item(stream)? {
+            None => {}
+            Some(Item::Keyword(word, word_span)) if &*word == "altitude" => {
+                if point_at.is_some() {
+                    return Err(self
+                        .error(
+                            word_span,
+                            "`altitude` cannot follow `point_at` in a `slope`",
+                        )
+                        .into());
+                }
+                let direction = self.expect_vector(stream, "an altitude direction")?;
+                let range = self.optional_range(stream)?.unwrap_or((0.0, 1.0));
+                slope.altitude = Some(Altitude {
+                    direction: direction.try_normalize().unwrap_or(DVec3::ZERO),
+                    weight: direction.length(),
+                    range,
+                });
+                if let Some(extra) = self.next_item(stream)? {
+                    return Err(self.unexpected_in(&extra, "slope"));
+                }
+            }
+            Some(other) => return Err(self.unexpected_in(&other, "slope")),
+        }
+        Ok(slope)
+    }
+
+    /// An optional `, LOW, HIGH` pair.
+    fn optional_range(&mut self, stream: &mut Stream) -> EvalResult<Option<(f64, f64)>> {
+        match self.next_item(stream)? {
+            Some(Item::Comma(_)) => {
+                let low = self.expect_float(stream, "the low end of the range")?;
+                self.skip_comma(stream)?;
+                let high = self.expect_float(stream, "the high end of the range")?;
+                Ok(Some((low, high)))
+            }
+            Some(other) => {
+                stream.push_back(other);
+                Ok(None)
+            }
+            None => Ok(None),
+        }
     }
 
     /// When `word` is a pattern modifier (`turbulence`, `octaves`, `frequency`, wave types,
@@ -190,6 +311,7 @@ impl Evaluator {
             "exponent" => "mandel, julia or magnet",
             "interior" | "exterior" => "mandel, julia, magnet or pavement",
             "number_of_sides" | "number_of_tiles" | "pattern" => "pavement",
+            "interpolate" => "density_file",
             _ => return Ok(false),
         };
         match (&mut pattern.kind, word) {
@@ -227,6 +349,19 @@ impl Evaluator {
                 crackle.offset = self.expect_float(stream, "a float")?
             }
             (PatternKind::Crackle(crackle), "solid") => crackle.solid = true,
+            (PatternKind::DensityFile { interpolation, .. }, "interpolate") => {
+                let number = self.expect_float(stream, "an interpolation (0, 1 or 2)")?;
+                *interpolation = match number {
+                    0.0 => 0,
+                    1.0 => 1,
+                    2.0 => 2,
+                    _ => {
+                        return Err(self
+                            .error(span, "the `density_file` interpolation must be 0, 1 or 2")
+                            .into())
+                    }
+                };
+            }
             (PatternKind::Facets { coords, .. }, "coords") => {
                 *coords = self.expect_float(stream, "a float")?
             }
@@ -438,6 +573,52 @@ impl Evaluator {
                 )
                 .into()),
         }
+    }
+
+    /// `density_file df3 "FILE"`: reads the grid.
+    fn density_file_operands(
+        &mut self,
+        span: Span,
+        stream: &mut Stream,
+    ) -> EvalResult<PatternKind> {
+        match self.next_item(stream)? {
+            Some(Item::Keyword(word, _)) if &*word == "df3" => {}
+            Some(other) => {
+                return Err(self
+                    .error(
+                        other.span(),
+                        "expected `df3` (the only density file format)",
+                    )
+                    .with_label("expected `df3`")
+                    .into())
+            }
+            None => {
+                return Err(self
+                    .error(span, "expected `df3 \"FILE\"` after `density_file`")
+                    .into())
+            }
+        }
+        let (value, name_span) = self.expect_value(stream, "a file name")?;
+        let Value::String(name) = value else {
+            return Err(self
+                .error(name_span, "expected the density file's name in quotes")
+                .into());
+        };
+        let path = self.find_file(&name, name_span, "density file", "no such file")?;
+        let grid = std::fs::read(&path)
+            .map_err(|error| error.to_string())
+            .and_then(|bytes| DensityFile::parse(&bytes))
+            .map_err(|message| {
+                self.error(
+                    name_span,
+                    format!("cannot read density file \"{name}\": {message}"),
+                )
+                .with_label("unreadable density file")
+            })?;
+        Ok(PatternKind::DensityFile {
+            grid: Arc::new(grid),
+            interpolation: 0,
+        })
     }
 
     /// `magnet 1|2 mandel ITERATIONS` or `magnet 1|2 julia COMPLEX, ITERATIONS`.

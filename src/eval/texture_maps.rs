@@ -127,6 +127,7 @@ impl Evaluator {
                 Value::Pigment(Rc::new(Pigment::Image {
                     image: Arc::new(image),
                     transform: Transform::IDENTITY,
+                    warps: None,
                 }))
             }
             _ => {
@@ -314,14 +315,28 @@ impl Evaluator {
     /// `normal { [N] PATTERN [bump_size] modifiers | bump_map {..} | average normal_map {..} }`.
     pub(crate) fn eval_normal(&mut self, stream: &mut Stream) -> EvalResult<Normal> {
         let mut normal = self.default_texture.normal.clone().map(|boxed| *boxed);
+        // The bump size a pattern written next starts with: a `bump_size` written before
+        // the pattern (or in `#default { normal { .. } }`) is kept, as in POV-Ray
+        // (measured with normmap.pov).
+        let mut preset_amount = normal.as_ref().map(|normal| normal.amount);
         let mut average = false;
         let mut pattern_started = false;
         while let Some(item) = self.next_item(stream)? {
-            if let Some(spec) = self.image_pattern(&item)? {
+            if let Some((spec, list)) = self.block_pattern(&item)? {
                 let mut fresh = Normal::new(NormalSource::Pattern {
-                    pattern: spec,
+                    pattern: spec.clone(),
                     slope_map: None,
                 });
+                fresh.amount = preset_amount.unwrap_or(fresh.amount);
+                if let (Some(count), Some(mut list)) = (spec.block_count(), list) {
+                    let blocks = self.normal_block_list(&mut list, count)?;
+                    if !blocks.is_empty() {
+                        fresh.source = NormalSource::Map {
+                            pattern: spec,
+                            map: BlendMap::Blocks(blocks),
+                        };
+                    }
+                }
                 if let Some(amount) = self.optional_amount(stream)? {
                     fresh.amount = amount;
                 }
@@ -339,6 +354,7 @@ impl Evaluator {
                         pattern: spec.clone(),
                         slope_map: None,
                     });
+                    fresh.amount = preset_amount.unwrap_or(fresh.amount);
                     if let Some(count) = spec.block_count() {
                         let blocks = self.normal_block_list(stream, count)?;
                         if !blocks.is_empty() {
@@ -427,6 +443,7 @@ impl Evaluator {
                     }
                     "bump_size" => {
                         let amount = self.expect_float(stream, "a float")?;
+                        preset_amount = Some(amount);
                         if let Some(normal) = &mut normal {
                             normal.amount = amount;
                         }
@@ -529,8 +546,13 @@ impl Evaluator {
         }
         match normal {
             Some(normal) => Ok(normal),
-            None if average => Ok(Normal::new(NormalSource::Average(Vec::new()))),
-            None => Ok(Normal::new(NormalSource::Average(Vec::new()))),
+            None => {
+                // No pattern: a normal that perturbs nothing, keeping its bump size for the
+                // patterns of the normals that start from it.
+                let mut flat = Normal::new(NormalSource::Average(Vec::new()));
+                flat.amount = preset_amount.unwrap_or(flat.amount);
+                Ok(flat)
+            }
         }
     }
 
@@ -552,10 +574,11 @@ impl Evaluator {
                 transform,
                 ..
             }) => {
-                let mut normal = Normal::new(NormalSource::Map {
-                    pattern,
-                    map: BlendMap::Entries(entries),
-                });
+                // The transformations written between the pattern and its map move the
+                // map's normals too (measured).
+                let mut map = BlendMap::Entries(entries);
+                map.for_each_mut(|entry| entry.transform(&transform));
+                let mut normal = Normal::new(NormalSource::Map { pattern, map });
                 normal.transform = transform;
                 Ok(normal)
             }

@@ -15,10 +15,13 @@
 //! Maps (colour, pigment, normal, texture maps) and what a value means live with the textures
 //! (`render::pattern`); this module only knows patterns.
 
+mod default_maps;
+mod density_file;
 mod fractal;
 mod geometric;
 mod noise_based;
 mod normals;
+mod surface;
 mod warp;
 mod wave;
 
@@ -27,9 +30,12 @@ use glam::DVec3;
 use crate::noise::{vector_turbulence, NoiseGenerator, TurbulenceShape};
 use crate::scene::Transform;
 
+pub use default_maps::{default_colour_map, DefaultColourMap};
+pub use density_file::DensityFile;
 pub use fractal::{Colouring, Fractal, FractalKind, MagnetType};
 pub use geometric::checker_block;
 pub use noise_based::{ClassicTurbulence, Crackle};
+pub use surface::{Altitude, Slope, SurfaceContext};
 pub use warp::{BlackHole, Mapping, MappingKind, Repeat, Warp};
 pub use wave::{Wave, WaveShape};
 
@@ -50,6 +56,8 @@ pub struct PatternSpec {
     pub noise_generator: NoiseGenerator,
     /// Whether the pattern names its own `noise_generator`.
     pub own_noise_generator: bool,
+    /// The colour map a pigment uses when it gives none (empty: black to white).
+    pub default_colour_map: DefaultColourMap,
     /// Every transformation noted so far, composed (outer from inner).
     noted: Transform,
 }
@@ -100,6 +108,13 @@ pub enum PatternKind {
     Cylindrical,
     /// Dents (noise cubed as a pigment).
     Dents,
+    /// `density_file df3 "file"`: a voxel grid over the unit cube.
+    DensityFile {
+        /// The grid, read when the scene is parsed.
+        grid: std::sync::Arc<DensityFile>,
+        /// `interpolate`: 0 nearest voxel, 1 trilinear, 2 cubic.
+        interpolation: u8,
+    },
     /// Facets: a normal-only pattern (`coords`, `size`); its value is 0.
     Facets {
         /// `coords` scale (0: not given).
@@ -136,6 +151,16 @@ pub enum PatternKind {
     Radial,
     /// Ripples from the wave centres.
     Ripples,
+    /// `slope { .. }`: the surface normal against a direction (needs the surface).
+    Slope(Slope),
+    /// `aoi`: the angle between the ray and the surface (needs the surface).
+    Aoi,
+    /// `pigment_pattern { .. }`: the grey level 0.297 R + 0.589 G + 0.114 B of a pigment
+    /// (measured; filter and transmit do not count).
+    PigmentPattern(std::sync::Arc<crate::scene::Pigment>),
+    /// `object { .. }`: block 1 inside the object, block 0 outside (the geometry is built
+    /// once, when the pattern is parsed).
+    Object(std::sync::Arc<crate::geometry::World>),
     /// 1 at the origin falling to 0 at radius 1.
     Spherical,
     /// A screw around the z axis with a number of arms (the integer part is used).
@@ -178,6 +203,7 @@ impl PatternSpec {
             warps: Vec::new(),
             noise_generator: NoiseGenerator::default(),
             own_noise_generator: false,
+            default_colour_map: &[],
             noted: Transform::IDENTITY,
         }
     }
@@ -211,7 +237,7 @@ impl PatternSpec {
     /// `None` for patterns with a continuous value.
     pub fn block_count(&self) -> Option<usize> {
         match self.kind {
-            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Checker | PatternKind::Brick { .. } | PatternKind::Object(_) => Some(2),
             PatternKind::Hexagon => Some(3),
             PatternKind::Square => Some(4),
             PatternKind::Triangular | PatternKind::Cubic => Some(6),
@@ -248,13 +274,14 @@ impl PatternSpec {
             return 0;
         }
         let p = self.moved_point(point);
-        match self.kind {
+        match &self.kind {
             PatternKind::Checker => checker_block(p),
-            PatternKind::Brick { size, mortar } => geometric::brick_block(p, size, mortar),
+            PatternKind::Brick { size, mortar } => geometric::brick_block(p, *size, *mortar),
             PatternKind::Hexagon => geometric::hexagon_block(p),
             PatternKind::Square => geometric::square_block(p),
             PatternKind::Triangular => geometric::triangular_block(p),
             PatternKind::Cubic => geometric::cubic_block(p),
+            PatternKind::Object(world) => usize::from(world.inside(p)),
             _ => 0,
         }
     }
@@ -262,6 +289,12 @@ impl PatternSpec {
     /// The pattern's value in [0, 1] at a pattern-space point (after turbulence, warps,
     /// frequency, phase and the wave shape). Block patterns give their block index.
     pub fn value(&self, point: DVec3) -> f64 {
+        self.value_at(point, &SurfaceContext::default())
+    }
+
+    /// [`Self::value`] for a point on a surface: `surface` holds the hit point, normal and
+    /// ray direction in world space, for the patterns that depend on it (`slope`, `aoi`).
+    pub fn value_at(&self, point: DVec3, surface: &SurfaceContext) -> f64 {
         if !point.is_finite() {
             return 0.0;
         }
@@ -269,7 +302,7 @@ impl PatternSpec {
             return self.block(point) as f64;
         }
         let p = self.moved_point(point);
-        let value = self.wave.apply(self.raw_value(p));
+        let value = self.wave.apply(self.raw_value(p, surface));
         if value.is_finite() {
             value
         } else {
@@ -314,7 +347,7 @@ impl PatternSpec {
 
     /// The point the raw pattern is evaluated at: through the warps and the
     /// transformations between them (last written first), then the classic turbulence.
-    fn moved_point(&self, point: DVec3) -> DVec3 {
+    pub fn moved_point(&self, point: DVec3) -> DVec3 {
         // `point` is in the innermost pattern space. Each warp's frame is that space moved by
         // the transformations written before the warp, so the point is carried into the
         // last warp's frame, warped, carried back into the previous warp's frame, and so on.
@@ -342,7 +375,7 @@ impl PatternSpec {
     }
 
     /// The pattern's value before frequency, phase and wave shape.
-    fn raw_value(&self, p: DVec3) -> f64 {
+    fn raw_value(&self, p: DVec3, surface: &SurfaceContext) -> f64 {
         let generator = self.noise_generator;
         let turbulence = &self.turbulence;
         match &self.kind {
@@ -355,6 +388,10 @@ impl PatternSpec {
             PatternKind::Crackle(settings) => noise_based::crackle(p, settings, generator),
             PatternKind::Cylindrical => geometric::cylindrical(p),
             PatternKind::Dents => noise_based::dents(p, generator),
+            PatternKind::DensityFile {
+                grid,
+                interpolation,
+            } => grid.value(p, *interpolation),
             PatternKind::Facets { .. } | PatternKind::Pavement => 0.0,
             PatternKind::Fractal(fractal) => fractal.value(p.x, p.y),
             PatternKind::Gradient(direction) => geometric::gradient_raw(p, *direction),
@@ -369,6 +406,13 @@ impl PatternSpec {
             }
             PatternKind::Radial => geometric::radial(p),
             PatternKind::Ripples => noise_based::ripples(p, generator),
+            PatternKind::Slope(slope) => slope.value(p, surface),
+            PatternKind::Aoi => surface::angle_of_incidence(surface.normal, surface.ray_direction),
+            PatternKind::PigmentPattern(pigment) => {
+                let [red, green, blue, _, _] =
+                    crate::render::pattern::pigment_colour(pigment, p).to_array();
+                0.297 * red + 0.589 * green + 0.114 * blue
+            }
             PatternKind::Spherical => geometric::spherical(p),
             PatternKind::SquareTiles => geometric::square_tiles(p),
             PatternKind::Spiral1(arms) => {
@@ -386,7 +430,8 @@ impl PatternSpec {
             | PatternKind::Hexagon
             | PatternKind::Square
             | PatternKind::Triangular
-            | PatternKind::Cubic => self.block(p) as f64,
+            | PatternKind::Cubic
+            | PatternKind::Object(_) => self.block(p) as f64,
         }
     }
 }

@@ -30,6 +30,7 @@
 
 use super::image_map::bump_map_tilt;
 use super::pattern::{blend_position, block_index};
+use crate::pattern::SurfaceContext;
 use crate::scene::{BlendMap, Normal, NormalSource, SlopeEntry};
 use glam::DVec3;
 
@@ -51,16 +52,28 @@ const TETRAHEDRON: [DVec3; 4] = [
 
 /// The unit normal at `world_point` after `normal` tilts the facing unit normal `facing`.
 pub fn perturbed_normal(normal: &Normal, world_point: DVec3, facing: DVec3) -> DVec3 {
-    let tilted = tilt(normal, world_point, facing, 0);
+    let surface = SurfaceContext {
+        point: world_point,
+        normal: facing,
+        ray_direction: DVec3::ZERO,
+    };
+    perturbed_normal_at(normal, world_point, &surface)
+}
+
+/// [`perturbed_normal`] knowing the ray too: `surface.normal` is the facing unit normal,
+/// and the surface-dependent patterns (`slope`, `aoi`) see it and the ray direction.
+pub fn perturbed_normal_at(normal: &Normal, world_point: DVec3, surface: &SurfaceContext) -> DVec3 {
+    let tilted = tilt(normal, world_point, surface, 0);
     match tilted.try_normalize() {
         Some(unit) => unit,
-        None => facing,
+        None => surface.normal,
     }
 }
 
 /// The (unnormalised) tilted normal, following nested normals at most
 /// [`MAX_NORMAL_NESTING`] deep.
-fn tilt(normal: &Normal, world_point: DVec3, facing: DVec3, depth: u32) -> DVec3 {
+fn tilt(normal: &Normal, world_point: DVec3, surface: &SurfaceContext, depth: u32) -> DVec3 {
+    let facing = surface.normal;
     if depth >= MAX_NORMAL_NESTING {
         return facing;
     }
@@ -74,7 +87,7 @@ fn tilt(normal: &Normal, world_point: DVec3, facing: DVec3, depth: u32) -> DVec3
                 Some(vector) => vector,
                 None => {
                     let height = |p: DVec3| {
-                        let value = pattern.value(p);
+                        let value = pattern.value_at(p, surface);
                         match slope_map {
                             Some(entries) => slope_map_height(entries, value),
                             None => value,
@@ -90,26 +103,26 @@ fn tilt(normal: &Normal, world_point: DVec3, facing: DVec3, depth: u32) -> DVec3
         }
         NormalSource::Map { pattern, map } => match map {
             BlendMap::Blocks(blocks) => {
-                let index = block_index(pattern, point, blocks.len());
+                let index = block_index(pattern, point, blocks.len(), surface);
                 match blocks.get(index).or(blocks.last()) {
-                    Some(block) => unit(tilt(block, world_point, facing, depth + 1), facing),
+                    Some(block) => unit(tilt(block, world_point, surface, depth + 1), facing),
                     None => facing,
                 }
             }
             BlendMap::Entries(entries) => {
-                let value = pattern.value(point);
+                let value = pattern.value_at(point, surface);
                 let Some((low, high, fraction)) = blend_position(entries, value) else {
                     return facing;
                 };
                 let below = unit(
-                    tilt(&entries[low].1, world_point, facing, depth + 1),
+                    tilt(&entries[low].1, world_point, surface, depth + 1),
                     facing,
                 );
                 if fraction == 0.0 {
                     return below;
                 }
                 let above = unit(
-                    tilt(&entries[high].1, world_point, facing, depth + 1),
+                    tilt(&entries[high].1, world_point, surface, depth + 1),
                     facing,
                 );
                 below * (1.0 - fraction) + above * fraction
@@ -118,7 +131,7 @@ fn tilt(normal: &Normal, world_point: DVec3, facing: DVec3, depth: u32) -> DVec3
         NormalSource::Average(entries) => {
             let mut sum = DVec3::ZERO;
             for (weight, entry) in entries {
-                sum += *weight * unit(tilt(entry, world_point, facing, depth + 1), facing);
+                sum += *weight * unit(tilt(entry, world_point, surface, depth + 1), facing);
             }
             sum
         }

@@ -16,19 +16,54 @@
 //! - `average`: the weighted mean of the entries' colours (weights divided by their sum).
 
 use super::image_map::image_colour;
-use crate::scene::{Colour, Pigment, PigmentMap};
+use crate::pattern::SurfaceContext;
+use crate::scene::{Colour, Pattern, Pigment, PigmentMap};
 use glam::DVec3;
 
 /// How far nested pigments (a block of a checker holding another checker...) are followed.
 const MAX_PIGMENT_NESTING: u32 = 64;
 
-/// The colour of `pigment` at `world_point`.
+/// The colour of `pigment` at `world_point`, away from any surface.
 pub fn pigment_colour(pigment: &Pigment, world_point: DVec3) -> Colour {
-    colour_at_depth(pigment, world_point, 0)
+    colour_at_depth(pigment, world_point, &SurfaceContext::default(), 0)
+}
+
+/// The colour of `pigment` at `world_point` on a surface (`surface` in world space), for
+/// the patterns that depend on the surface (`slope`, `aoi`).
+pub fn pigment_colour_at(
+    pigment: &Pigment,
+    world_point: DVec3,
+    surface: &SurfaceContext,
+) -> Colour {
+    colour_at_depth(pigment, world_point, surface, 0)
+}
+
+/// The surface a ray meets at `point`: the unit geometric normal `normal` turned towards
+/// the ray (or the reversed ray when the normal is not finite) and the ray's unit direction.
+pub fn hit_surface(point: DVec3, ray_direction: DVec3, normal: DVec3) -> SurfaceContext {
+    let facing = if ray_direction.dot(normal) <= 0.0 {
+        normal
+    } else {
+        -normal
+    };
+    SurfaceContext {
+        point,
+        normal: if facing.is_finite() {
+            facing
+        } else {
+            -ray_direction
+        },
+        ray_direction,
+    }
 }
 
 /// Evaluates `pigment`, following nested pigments at most [`MAX_PIGMENT_NESTING`] deep.
-fn colour_at_depth(pigment: &Pigment, world_point: DVec3, depth: u32) -> Colour {
+fn colour_at_depth(
+    pigment: &Pigment,
+    world_point: DVec3,
+    surface: &SurfaceContext,
+    depth: u32,
+) -> Colour {
     if depth >= MAX_PIGMENT_NESTING {
         return Colour::BLACK;
     }
@@ -46,16 +81,16 @@ fn colour_at_depth(pigment: &Pigment, world_point: DVec3, depth: u32) -> Colour 
             match pattern.block_count() {
                 Some(_) => {
                     let block = pattern.block(point);
-                    block_colour(map, block, block as f64, world_point, depth)
+                    block_colour(map, block, block as f64, world_point, surface, depth)
                 }
                 None => {
-                    let value = pattern.value(point);
+                    let value = pattern.value_at(point, surface);
                     match map {
                         PigmentMap::Blocks(blocks) => {
                             let index = spread_index(value, blocks.len());
-                            block_colour(map, index, value, world_point, depth)
+                            block_colour(map, index, value, world_point, surface, depth)
                         }
-                        _ => block_colour(map, 0, value, world_point, depth),
+                        _ => block_colour(map, 0, value, world_point, surface, depth),
                     }
                 }
             }
@@ -67,19 +102,27 @@ fn colour_at_depth(pigment: &Pigment, world_point: DVec3, depth: u32) -> Colour 
             }
             let mut sum = [0.0; 5];
             for (weight, entry) in entries {
-                let colour = colour_at_depth(entry, world_point, depth + 1).to_array();
+                let colour = colour_at_depth(entry, world_point, surface, depth + 1).to_array();
                 for (acc, component) in sum.iter_mut().zip(colour) {
                     *acc += weight / total * component;
                 }
             }
             Colour::from_array(sum)
         }
-        Pigment::Image { image, transform } => {
-            image_colour(image, transform.point_to_inner(world_point))
+        Pigment::Image {
+            image,
+            transform,
+            warps,
+        } => {
+            let point = transform.point_to_inner(world_point);
+            match warps {
+                Some(pattern) => image_colour(image, pattern.moved_point(point)),
+                None => image_colour(image, point),
+            }
         }
         // The uv point is chosen where the surface is known (`render::uv`); nested inside
         // another pigment the wrapper passes the point on.
-        Pigment::UvMapped(inner) => colour_at_depth(inner, world_point, depth + 1),
+        Pigment::UvMapped(inner) => colour_at_depth(inner, world_point, surface, depth + 1),
     }
 }
 
@@ -90,11 +133,12 @@ fn block_colour(
     index: usize,
     value: f64,
     world_point: DVec3,
+    surface: &SurfaceContext,
     depth: u32,
 ) -> Colour {
     match map {
         PigmentMap::Blocks(blocks) => match blocks.get(index).or(blocks.last()) {
-            Some(block) => colour_at_depth(block, world_point, depth + 1),
+            Some(block) => colour_at_depth(block, world_point, surface, depth + 1),
             None => Colour::BLACK,
         },
         PigmentMap::Colours(entries) => colour_map_lookup(entries, value),
@@ -102,11 +146,11 @@ fn block_colour(
             let Some((low, high, fraction)) = blend_position(entries, value) else {
                 return Colour::BLACK;
             };
-            let below = colour_at_depth(&entries[low].1, world_point, depth + 1);
+            let below = colour_at_depth(&entries[low].1, world_point, surface, depth + 1);
             if fraction == 0.0 {
                 return below;
             }
-            let above = colour_at_depth(&entries[high].1, world_point, depth + 1);
+            let above = colour_at_depth(&entries[high].1, world_point, surface, depth + 1);
             below.lerp(above, fraction)
         }
     }
@@ -114,10 +158,15 @@ fn block_colour(
 
 /// The block a pattern selects at a pattern-space point among `count` blocks: the pattern's
 /// own block for block patterns, else the value's share of [0, 1].
-pub fn block_index(pattern: &crate::scene::Pattern, point: DVec3, count: usize) -> usize {
+pub fn block_index(
+    pattern: &Pattern,
+    point: DVec3,
+    count: usize,
+    surface: &SurfaceContext,
+) -> usize {
     match pattern.block_count() {
         Some(_) => pattern.block(point),
-        None => spread_index(pattern.value(point), count),
+        None => spread_index(pattern.value_at(point, surface), count),
     }
 }
 

@@ -16,8 +16,9 @@
 
 use super::image_map::material_choice;
 use super::lights::transmission;
-use super::pattern::{blend_position, block_index, pigment_colour};
+use super::pattern::{blend_position, block_index, pigment_colour_at};
 use crate::geometry::SurfaceHit;
+use crate::pattern::SurfaceContext;
 use crate::scene::{BlendMap, Colour, CompoundTexture, Pigment, Texture};
 use glam::DVec3;
 
@@ -25,49 +26,70 @@ use glam::DVec3;
 const MAX_TEXTURE_NESTING: u32 = 32;
 
 /// Calls `visit(texture, weight, passes_light)` for every plain texture that contributes
-/// at `world_point`.
+/// at `world_point` on the surface `surface` (world space; the default when unknown).
 pub fn for_each_component(
     texture: &Texture,
     world_point: DVec3,
+    surface: &SurfaceContext,
     visit: &mut dyn FnMut(&Texture, DVec3, bool),
 ) {
-    components(texture, world_point, DVec3::ONE, true, 0, visit);
+    let place = Place {
+        point: world_point,
+        surface,
+    };
+    components(texture, &place, DVec3::ONE, true, 0, visit);
+}
+
+/// Where textures are evaluated: the world point and the surface there.
+struct Place<'a> {
+    point: DVec3,
+    surface: &'a SurfaceContext,
 }
 
 /// The pigment colour the surface shows at `world_point` (the blend of its components'
 /// pigments), for what shadow rays see.
 pub fn surface_pigment(texture: &Texture, world_point: DVec3) -> Colour {
+    surface_pigment_at(texture, world_point, &SurfaceContext::default())
+}
+
+/// [`surface_pigment`] on the surface `surface` (world space).
+fn surface_pigment_at(texture: &Texture, world_point: DVec3, surface: &SurfaceContext) -> Colour {
     if texture.compound.is_none() {
-        return pigment_colour(&texture.pigment, world_point);
+        return pigment_colour_at(&texture.pigment, world_point, surface);
     }
     let mut sum = [0.0; 5];
-    for_each_component(texture, world_point, &mut |plain, weight, passes_light| {
-        if passes_light {
-            let colour = pigment_colour(&plain.pigment, world_point).to_array();
-            let weight = weight.dot(DVec3::splat(1.0 / 3.0));
-            for (acc, component) in sum.iter_mut().zip(colour) {
-                *acc += weight * component;
+    for_each_component(
+        texture,
+        world_point,
+        surface,
+        &mut |plain, weight, passes_light| {
+            if passes_light {
+                let colour = pigment_colour_at(&plain.pigment, world_point, surface).to_array();
+                let weight = weight.dot(DVec3::splat(1.0 / 3.0));
+                for (acc, component) in sum.iter_mut().zip(colour) {
+                    *acc += weight * component;
+                }
             }
-        }
-    });
+        },
+    );
     Colour::from_array(sum)
 }
 
 /// The colour of a texture's own pigment at `hit`: a uv-mapped pigment is evaluated at the
 /// hit's `<u, v, 0>` (at the point on shapes without uv coordinates, as in POV-Ray), any
 /// other at the hit point.
-pub fn pigment_at_hit(pigment: &Pigment, hit: &SurfaceHit) -> Colour {
+pub fn pigment_at_hit(pigment: &Pigment, hit: &SurfaceHit, surface: &SurfaceContext) -> Colour {
     match (pigment.uv_mapped(), hit.uv) {
-        (Some(inner), Some(uv)) => pigment_colour(inner, uv.extend(0.0)),
-        (Some(inner), None) => pigment_colour(inner, hit.point),
-        (None, _) => pigment_colour(pigment, hit.point),
+        (Some(inner), Some(uv)) => pigment_colour_at(inner, uv.extend(0.0), surface),
+        (Some(inner), None) => pigment_colour_at(inner, hit.point, surface),
+        (None, _) => pigment_colour_at(pigment, hit.point, surface),
     }
 }
 
 /// Visits the components of `texture`, whose results are weighted by `weight`.
 fn components(
     texture: &Texture,
-    world_point: DVec3,
+    place: &Place,
     weight: DVec3,
     passes_light: bool,
     depth: u32,
@@ -81,7 +103,7 @@ fn components(
         return;
     }
     let mut recurse = |inner: &Texture, share: DVec3, passes: bool| {
-        components(inner, world_point, weight * share, passes, depth + 1, visit)
+        components(inner, place, weight * share, passes, depth + 1, visit)
     };
     match &**compound {
         CompoundTexture::Layered(layers) => {
@@ -92,7 +114,7 @@ fn components(
                 if bottom {
                     break;
                 }
-                seen *= transmission(surface_pigment(layer, world_point));
+                seen *= transmission(surface_pigment_at(layer, place.point, place.surface));
                 if seen == DVec3::ZERO {
                     break;
                 }
@@ -103,19 +125,19 @@ fn components(
             map,
             transform,
         } => {
-            let point = transform.point_to_inner(world_point);
+            let point = transform.point_to_inner(place.point);
             if !point.is_finite() {
                 return;
             }
             match map {
                 BlendMap::Blocks(blocks) => {
-                    let index = block_index(pattern, point, blocks.len());
+                    let index = block_index(pattern, point, blocks.len(), place.surface);
                     if let Some(block) = blocks.get(index).or(blocks.last()) {
                         recurse(block, DVec3::ONE, passes_light);
                     }
                 }
                 BlendMap::Entries(entries) => {
-                    let value = pattern.value(point);
+                    let value = pattern.value_at(point, place.surface);
                     if let Some((low, high, fraction)) = blend_position(entries, value) {
                         if fraction < 1.0 {
                             recurse(&entries[low].1, DVec3::splat(1.0 - fraction), passes_light);
@@ -132,7 +154,7 @@ fn components(
             textures,
             transform,
         } => {
-            let point = transform.point_to_inner(world_point);
+            let point = transform.point_to_inner(place.point);
             let chosen = material_choice(image, point, textures.len());
             if let Some(texture) = chosen.and_then(|index| textures.get(index)) {
                 recurse(texture, DVec3::ONE, passes_light);

@@ -42,11 +42,13 @@ use super::atmosphere::AtmosphereShader;
 use super::dispersion::Bands;
 use super::encoding::is_legacy_scene;
 use super::lights::{prepare_lights, transmission, SceneLight};
-use super::normal::perturbed_normal;
+use super::normal::perturbed_normal_at;
+use super::pattern::hit_surface;
 use super::reflection::{apply_exponent, interior_fade, reflection_colour};
 use super::shading::{local_light, mirror, SurfaceSample};
 use super::texture::{for_each_component, pigment_at_hit};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
+use crate::pattern::SurfaceContext;
 use crate::scene::{Scene, Texture};
 use glam::DVec3;
 
@@ -302,19 +304,25 @@ impl<'a> Tracer<'a> {
             colour: DVec3::ZERO,
             continued: None,
         };
-        for_each_component(texture, hit.point, &mut |plain, share, passes_light| {
-            let part = self.shade_plain(
-                ray,
-                hit,
-                material,
-                plain,
-                passes_light,
-                level,
-                weight,
-                media,
-            );
-            total.add(share, part);
-        });
+        let surface = hit_surface(hit.point, ray.direction, hit.normal);
+        for_each_component(
+            texture,
+            hit.point,
+            &surface,
+            &mut |plain, share, passes_light| {
+                let part = self.shade_plain(
+                    ray,
+                    hit,
+                    material,
+                    plain,
+                    passes_light,
+                    level,
+                    weight,
+                    media,
+                );
+                total.add(share, part);
+            },
+        );
         total
     }
 
@@ -332,7 +340,8 @@ impl<'a> Tracer<'a> {
         weight: RayWeight,
         media: &Media,
     ) -> Shaded {
-        let pigment = pigment_at_hit(&texture.pigment, hit);
+        let surface = hit_surface(hit.point, ray.direction, hit.normal);
+        let pigment = pigment_at_hit(&texture.pigment, hit, &surface);
         let entering = ray.direction.dot(hit.normal) <= 0.0;
         let facing = if entering { hit.normal } else { -hit.normal };
         let mut normal = if facing.is_finite() {
@@ -341,7 +350,8 @@ impl<'a> Tracer<'a> {
             -ray.direction
         };
         if let Some(perturbation) = &texture.normal {
-            normal = perturbed_normal(perturbation, hit.point, normal);
+            let surface = SurfaceContext { normal, ..surface };
+            normal = perturbed_normal_at(perturbation, hit.point, &surface);
         }
         let sample = SurfaceSample {
             point: hit.point,

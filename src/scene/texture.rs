@@ -96,6 +96,9 @@ pub enum Pigment {
     Image {
         image: Arc<ImageMap>,
         transform: Transform,
+        /// The `turbulence` and warps written in the pigment, carried by an image pattern
+        /// of the same image (its value is not used); `None` without any.
+        warps: Option<Box<Pattern>>,
     },
     /// `uv_mapping`: the pigment is evaluated at `<u, v, 0>` of the surface instead of the
     /// point. Transformations of the pigment or its texture apply; those of the object do

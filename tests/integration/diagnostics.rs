@@ -569,3 +569,39 @@ fn mesh2_uv_vectors_without_uv_indices_need_one_per_vertex() {
         ],
     );
 }
+
+#[test]
+fn slope_with_zero_direction_is_refused() {
+    check(
+        "slope_zero_direction",
+        2,
+        25,
+        &["the `slope` direction must not be zero"],
+    );
+}
+
+#[test]
+fn object_pattern_needs_an_object() {
+    check(
+        "object_pattern_not_object",
+        3,
+        34,
+        &[
+            "expected an object, found",
+            "the `object` pattern needs an object",
+        ],
+    );
+}
+
+#[test]
+fn broken_density_file_is_refused() {
+    check(
+        "bad_density_file",
+        2,
+        42,
+        &[
+            "cannot read density file \"broken.df3\"",
+            "do not fit 2 x 2 x 2 voxels",
+        ],
+    );
+}

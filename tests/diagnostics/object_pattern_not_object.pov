@@ -1,0 +1,3 @@
+#version 3.7;
+#declare Size = 3;
+sphere { 0, 1 pigment { object { Size color rgb 0, color rgb 1 } } }
