@@ -171,9 +171,7 @@ impl Evaluator {
             "transform" => Ok(Value::Transform(Rc::new(
                 self.eval_transform_block(stream)?,
             ))),
-            "material" => Ok(Value::Texture(std::sync::Arc::new(
-                self.eval_material(stream)?.0,
-            ))),
+            "material" => Ok(Value::Material(Rc::new(self.eval_material(stream)?))),
             _ if APPEARANCE_BLOCKS.contains(&head) => {
                 self.eval_appearance_block(head, block, stream)
             }

@@ -106,6 +106,9 @@ pub struct Object {
     pub no_reflection: bool,
     /// `double_illuminate`: lit from both sides.
     pub double_illuminate: bool,
+    /// Light sources written inside this CSG object, in its local space: they move with
+    /// it, and evaluation adds them to the scene's lights wherever the object is placed.
+    pub lights: Vec<LightSource>,
 }
 
 impl Object {
@@ -124,6 +127,7 @@ impl Object {
             no_image: false,
             no_reflection: false,
             double_illuminate: false,
+            lights: Vec::new(),
         }
     }
 }
