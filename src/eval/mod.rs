@@ -489,6 +489,10 @@ impl Evaluator {
         let mut settings = self.settings.clone();
         settings.language_version = self.version;
         settings.version_declared = self.version_declared;
+        if settings.radiosity && self.version >= 3.7 {
+            // POV-Ray 3.7 replaces the ambient term by radiosity (legacy scenes keep it).
+            settings.ambient_light = glam::DVec3::ZERO;
+        }
         Scene {
             camera: self.camera.clone().unwrap_or_default(),
             lights: std::mem::take(&mut self.lights),

@@ -501,10 +501,15 @@ impl Evaluator {
                         _ => String::new(),
                     };
                     if matches!(name.as_str(), "radiosity" | "photons") {
-                        self.warn(
-                            block.head_span,
-                            format!("`{name}` is not supported yet; it is ignored"),
-                        );
+                        let message = if name == "radiosity" {
+                            self.settings.radiosity = true;
+                            "`radiosity` is not supported yet: no indirect light is computed \
+                             (ambient counts as zero, as with radiosity in POV-Ray 3.7)"
+                                .to_string()
+                        } else {
+                            format!("`{name}` is not supported yet; it is ignored")
+                        };
+                        self.warn(block.head_span, message);
                     } else {
                         return Err(self.unexpected_in(&item, "global_settings"));
                     }

@@ -61,6 +61,9 @@ pub struct GlobalSettings {
     pub ambient_light: DVec3,
     /// The noise generator patterns use unless they name their own (default 2).
     pub noise_generator: crate::noise::NoiseGenerator,
+    /// A `radiosity { }` block was given. durer computes no indirect light, but in 3.7
+    /// scenes radiosity sets every finish's ambient term to zero, and so does durer.
+    pub radiosity: bool,
 }
 
 impl Default for GlobalSettings {
@@ -73,6 +76,7 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
             noise_generator: crate::noise::NoiseGenerator::default(),
+            radiosity: false,
         }
     }
 }
