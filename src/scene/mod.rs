@@ -13,7 +13,10 @@ mod texture;
 mod transform;
 
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
-pub use camera::{Camera, CylinderKind, FocalBlur, Projection, DEFAULT_ANGLE};
+pub use camera::{
+    Camera, CameraFace, CylinderKind, FocalBlur, MeshCamera, MeshDistribution, Projection,
+    DEFAULT_ANGLE,
+};
 pub use colour::Colour;
 pub use finish::{Finish, Interior, Irid};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
