@@ -32,6 +32,12 @@ pub struct LightSource {
     /// `looks_like { object }`: the light's visible shape, already at the light's position
     /// and marked `no_shadow`; evaluation adds it to the scene's objects.
     pub looks_like: Option<Arc<Object>>,
+    /// `media_interaction` (default on): whether media scatter this light. durer has no
+    /// media, so this changes nothing yet.
+    pub media_interaction: bool,
+    /// `media_attenuation` (default off): whether media along shadow rays dim this light.
+    /// durer has no media, so this changes nothing yet.
+    pub media_attenuation: bool,
 }
 
 impl LightSource {
@@ -48,6 +54,8 @@ impl LightSource {
             area: None,
             projected_through: None,
             looks_like: None,
+            media_interaction: true,
+            media_attenuation: false,
         }
     }
 
