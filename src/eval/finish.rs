@@ -95,12 +95,15 @@ impl Evaluator {
                             continue;
                         }
                         if &**w == "irid" {
-                            self.warn(
-                                block.head_span,
-                                "`irid` is parsed but not rendered yet; it is ignored",
-                            );
                             let mut body = Stream::new(block.body.clone());
-                            finish.irid = Some(self.eval_irid(&mut body, finish.irid)?);
+                            let irid = self.eval_irid(&mut body, finish.irid)?;
+                            if irid.turbulence != 0.0 {
+                                self.warn(
+                                    block.head_span,
+                                    "irid `turbulence` is not applied yet; the film is even",
+                                );
+                            }
+                            finish.irid = Some(irid);
                             continue;
                         }
                         if &**w == "subsurface" {

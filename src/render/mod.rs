@@ -22,6 +22,7 @@ pub mod dispersion;
 pub mod encoding;
 pub mod focal_blur;
 pub mod image_map;
+pub mod iridescence;
 pub mod lights;
 pub mod mesh_camera;
 pub mod normal;
