@@ -123,6 +123,11 @@ pub fn local_light(
                     let Some(direction) = offset.try_normalize() else {
                         return LocalLight::default();
                     };
+                    // A point light behind the surface lights nothing: no shadow ray.
+                    let cosine = sample.normal.dot(direction);
+                    if !(cosine > 0.0 || (cosine < 0.0 && lights_back(sample))) {
+                        return LocalLight::default();
+                    }
                     let towards = Incoming {
                         direction,
                         distance,
