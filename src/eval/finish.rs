@@ -96,14 +96,7 @@ impl Evaluator {
                         }
                         if &**w == "irid" {
                             let mut body = Stream::new(block.body.clone());
-                            let irid = self.eval_irid(&mut body, finish.irid)?;
-                            if irid.turbulence != 0.0 {
-                                self.warn(
-                                    block.head_span,
-                                    "irid `turbulence` is not applied yet; the film is even",
-                                );
-                            }
-                            finish.irid = Some(irid);
+                            finish.irid = Some(self.eval_irid(&mut body, finish.irid)?);
                             continue;
                         }
                         if &**w == "subsurface" {

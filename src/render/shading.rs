@@ -183,7 +183,7 @@ fn lit_by(
     let colour = match &finish.irid {
         Some(irid) => {
             let cos_view = sample.normal.dot(-sample.ray_direction).abs();
-            colour * iridescence(irid, cosine.abs(), cos_view)
+            colour * iridescence(irid, sample.point, cosine.abs(), cos_view)
         }
         None => colour,
     };
