@@ -1,17 +1,20 @@
-//! Camera items beyond the basic vectors: focal blur and the spherical camera's second
-//! angle.
+//! Camera items beyond the basic vectors: focal blur, the spherical camera's second
+//! angle and `mesh_camera`.
 //!
-//! In: camera block items. Out: a resolved [`FocalBlur`]. Holds: POV-Ray's defaults
+//! In: camera block items. Out: a resolved [`FocalBlur`], a [`MeshCamera`] with its faces
+//! in world space (read from the meshes, which stay untouched). Holds: POV-Ray's defaults
 //! (focal point at the origin, confidence 0.9, variance 1/128, minimum samples 4 below 7
 //! samples, else 7); bad values are reported with their span.
 
+use super::objects::apply_transform;
 use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::FocalBlur;
-use crate::syntax::ast::Item;
+use crate::scene::{CameraFace, FocalBlur, MeshCamera, MeshDistribution, Shape};
+use crate::syntax::ast::{Block, BlockHead, Item};
 use glam::DVec3;
+use std::sync::Arc;
 
 /// POV-Ray's default `variance` of focal blur sampling.
 const DEFAULT_VARIANCE: f64 = 1.0 / 128.0;
@@ -127,5 +130,149 @@ impl Evaluator {
                 .with_label("expected a whole number of at least 1")
                 .into())
         }
+    }
+}
+
+/// The largest `rays_per_pixel` of a mesh camera.
+const MAX_MESH_RAYS: f64 = 1024.0;
+
+impl Evaluator {
+    /// `mesh_camera { rays_per_pixel distribution [max_distance] mesh { .. } .. }`; the
+    /// camera's `location` and `direction` fill in `offset` and `reversed` afterwards.
+    pub(crate) fn eval_mesh_camera(&mut self, block: &Block) -> EvalResult<MeshCamera> {
+        let mut stream = Stream::new(block.body.clone());
+        let (value, rays_span) = self.expect_value(&mut stream, "the number of rays per pixel")?;
+        let rays = self.to_float(value, rays_span)?;
+        if !(1.0..=MAX_MESH_RAYS).contains(&rays) {
+            return Err(self
+                .error(rays_span, format!("{rays} rays per pixel"))
+                .with_label(format!("expected 1 to {MAX_MESH_RAYS}"))
+                .into());
+        }
+        self.skip_comma(&mut stream)?;
+        let (value, type_span) = self.expect_value(&mut stream, "the distribution type")?;
+        let distribution = match self.to_float(value, type_span)? {
+            0.0 => MeshDistribution::PerMesh,
+            1.0 => MeshDistribution::Summed,
+            2.0 => MeshDistribution::SideBySide,
+            3.0 => {
+                return Err(self
+                    .error(type_span, "mesh camera distribution 3 is not supported yet")
+                    .with_label("it needs the meshes' uv coordinates")
+                    .into())
+            }
+            other => {
+                return Err(self
+                    .error(
+                        type_span,
+                        format!("unknown mesh camera distribution {other}"),
+                    )
+                    .with_label("expected 0, 1, 2 or 3")
+                    .into())
+            }
+        };
+        let mut camera = MeshCamera {
+            rays_per_pixel: rays as u32,
+            distribution,
+            max_distance: 0.0,
+            meshes: Vec::new(),
+            offset: 0.0,
+            reversed: false,
+        };
+        if let Some((distance, _)) = self.optional_second_value(&mut stream)? {
+            camera.max_distance = distance.max(0.0);
+        }
+        while let Some(item) = self.next_item(&mut stream)? {
+            match &item {
+                Item::Comma(_) => {}
+                Item::Block(mesh) if matches!(&mesh.head, BlockHead::Word(w) if &**w == "mesh") => {
+                    let faces = self.camera_mesh_faces(mesh)?;
+                    camera.meshes.push(faces);
+                }
+                _ => return Err(self.unexpected_in(&item, "mesh_camera")),
+            }
+        }
+        if camera.meshes.is_empty() {
+            return Err(self
+                .error(block.span, "a mesh camera needs at least one `mesh { .. }`")
+                .with_label("no mesh in this mesh_camera")
+                .into());
+        }
+        if distribution == MeshDistribution::PerMesh && camera.meshes.len() < rays as usize {
+            return Err(self
+                .error(
+                    rays_span,
+                    format!(
+                        "distribution 0 needs a mesh for each of the {rays} rays per pixel, \
+                         found {} meshes",
+                        camera.meshes.len()
+                    ),
+                )
+                .into());
+        }
+        Ok(camera)
+    }
+
+    /// The faces of one camera `mesh { MESH_IDENTIFIER transformations }` (or an inline
+    /// mesh), in world space.
+    fn camera_mesh_faces(&mut self, block: &Block) -> EvalResult<Vec<CameraFace>> {
+        let mut body = Stream::new(block.body.clone());
+        let object = match self.peek_item(&mut body)? {
+            Some(Item::Expr(_)) => {
+                let (value, span) = self.expect_value(&mut body, "a mesh")?;
+                let Value::Object(object) = value else {
+                    return Err(self
+                        .error(
+                            span,
+                            format!("expected a mesh, found {}", value.type_name()),
+                        )
+                        .into());
+                };
+                let mut object = Arc::unwrap_or_clone(object);
+                while let Some(item) = self.next_item(&mut body)? {
+                    let t = match &item {
+                        Item::Keyword(word, span) => {
+                            self.transform_keyword(word, *span, &mut body)?
+                        }
+                        Item::Block(b) => match self.eval_block(b)? {
+                            Value::Transform(t) => *t,
+                            _ => return Err(self.unexpected_in(&item, "mesh")),
+                        },
+                        Item::Comma(_) => continue,
+                        _ => return Err(self.unexpected_in(&item, "mesh")),
+                    };
+                    apply_transform(&mut object, &t);
+                }
+                object
+            }
+            _ => match self.eval_block(block)? {
+                Value::Object(object) => Arc::unwrap_or_clone(object),
+                other => {
+                    return Err(self
+                        .error(
+                            block.span,
+                            format!("expected a mesh, found {}", other.type_name()),
+                        )
+                        .into())
+                }
+            },
+        };
+        let Shape::Mesh(mesh) = &object.shape else {
+            return Err(self
+                .error(block.span, "a mesh camera needs `mesh` or `mesh2` objects")
+                .with_label("this is not a mesh")
+                .into());
+        };
+        let t = *object.transform();
+        Ok(mesh
+            .triangles()
+            .map(|triangle| {
+                let [a, b, c] = triangle.corners.map(|corner| t.point_to_outer(corner));
+                CameraFace {
+                    centre: (a + b + c) / 3.0,
+                    normal: (c - a).cross(b - a).normalize_or_zero(),
+                }
+            })
+            .collect())
     }
 }

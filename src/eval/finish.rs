@@ -95,10 +95,6 @@ impl Evaluator {
                             continue;
                         }
                         if &**w == "irid" {
-                            self.warn(
-                                block.head_span,
-                                "`irid` is parsed but not rendered yet; it is ignored",
-                            );
                             let mut body = Stream::new(block.body.clone());
                             finish.irid = Some(self.eval_irid(&mut body, finish.irid)?);
                             continue;
@@ -239,7 +235,7 @@ impl Evaluator {
         let mut interior = Interior::default();
         while let Some(item) = self.next_item(stream)? {
             match &item {
-                Item::Keyword(word, span) => match &**word {
+                Item::Keyword(word, _) => match &**word {
                     "ior" => interior.ior = self.expect_float(stream, "a float")?,
                     "dispersion" => interior.dispersion = self.expect_float(stream, "a float")?,
                     "dispersion_samples" => {
@@ -254,13 +250,7 @@ impl Evaluator {
                         let (value, span) = self.expect_value(stream, "a colour")?;
                         interior.fade_colour = self.to_colour(value, span)?.rgb_vec();
                     }
-                    "caustics" => {
-                        self.warn(
-                            *span,
-                            "interior `caustics` (fake caustics) is not rendered; it is ignored",
-                        );
-                        interior.caustics = self.expect_float(stream, "a float")?;
-                    }
+                    "caustics" => interior.caustics = self.expect_float(stream, "a float")?,
                     _ => return Err(self.unexpected_in(&item, "interior")),
                 },
                 Item::Block(block) if matches!(&block.head, BlockHead::Word(w) if &**w == "media") =>

@@ -103,10 +103,9 @@ impl Evaluator {
                         let t = self.transform_keyword(word, *span, stream)?;
                         transform_light(&mut light, &mut spot, &t);
                     }
-                    "media_interaction" | "media_attenuation" => {
-                        // Without media these change nothing.
-                        let _ = self.optional_bool(stream)?;
-                    }
+                    // Stored for media; durer has none yet, so neither changes the picture.
+                    "media_interaction" => light.media_interaction = self.optional_bool(stream)?,
+                    "media_attenuation" => light.media_attenuation = self.optional_bool(stream)?,
                     "area_light" => light.area = Some(self.eval_area_light(stream, light.area)?),
                     "jitter" | "circular" | "orient" => {
                         let area = self.area_of(&mut light, word, *span)?;

@@ -31,7 +31,8 @@ pub use value::{Array, Value, Vector};
 use crate::diag::{did_you_mean, Diagnostic, FileId, SourceMap, Span, TraceEntry};
 use crate::hash::FastHash;
 use crate::scene::{
-    Atmosphere, Camera, Colour, GlobalSettings, LightSource, Object, Scene, Texture,
+    Atmosphere, Camera, Colour, GlobalSettings, LightSource, Object, Scene, Shape, Texture,
+    Transform,
 };
 use crate::syntax::ast::Item;
 use std::collections::HashMap;
@@ -482,6 +483,7 @@ impl Evaluator {
                 if object.texture.is_none() && self.default_texture_set {
                     object.texture = Some(Arc::new(self.default_texture.clone()));
                 }
+                self.add_carried_lights(&object, &Transform::IDENTITY);
                 self.objects.push(object);
             }
             Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),
@@ -509,6 +511,10 @@ impl Evaluator {
         let mut settings = self.settings.clone();
         settings.language_version = self.version;
         settings.version_declared = self.version_declared;
+        if settings.radiosity && self.version >= 3.7 {
+            // POV-Ray 3.7 replaces the ambient term by radiosity (legacy scenes keep it).
+            settings.ambient_light = glam::DVec3::ZERO;
+        }
         Scene {
             camera: self.camera.clone().unwrap_or_default(),
             lights: std::mem::take(&mut self.lights),
@@ -533,6 +539,20 @@ impl Evaluator {
     }
 
     /// Adds a light to the scene, and its `looks_like` object to the objects.
+    /// Adds the lights written inside `object` and its CSG children, moved into world
+    /// space (`outer` maps the object's parent space to world space).
+    fn add_carried_lights(&mut self, object: &Object, outer: &Transform) {
+        let to_world = object.transform().then(outer);
+        for light in object.lights.iter().flat_map(|lights| lights.iter()) {
+            self.add_light(light.transformed(&to_world));
+        }
+        if let Shape::Csg { children, .. } = &object.shape {
+            for child in children {
+                self.add_carried_lights(child, &to_world);
+            }
+        }
+    }
+
     pub(crate) fn add_light(&mut self, light: LightSource) {
         if let Some(shape) = &light.looks_like {
             self.objects.push((**shape).clone());

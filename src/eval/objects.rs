@@ -61,10 +61,12 @@ impl Evaluator {
                         Item::Block(b) => match self.eval_block(b)? {
                             Value::Object(o) => Some(o),
                             Value::Light(light) => {
-                                // POV-Ray moves such lights with the CSG; durer keeps them
-                                // where they are written for now.
-                                self.warn(b.span, "light sources inside CSG do not follow its transformations yet");
-                                self.add_light(Rc::unwrap_or_clone(light));
+                                // The light moves with the CSG and joins the scene where
+                                // the CSG is placed.
+                                object
+                                    .lights
+                                    .get_or_insert_with(Default::default)
+                                    .push(Rc::unwrap_or_clone(light));
                                 None
                             }
                             other => {
@@ -537,6 +539,13 @@ impl Evaluator {
             match value {
                 Value::Texture(t) => texture = (*t).clone(),
                 Value::Interior(i) => interior = Some(Rc::unwrap_or_clone(i)),
+                Value::Material(material) => {
+                    let (declared_texture, declared_interior) = Rc::unwrap_or_clone(material);
+                    texture = declared_texture;
+                    if declared_interior.is_some() {
+                        interior = declared_interior;
+                    }
+                }
                 _ => return Err(self.unexpected_in(&item, "material")),
             }
         }

@@ -30,6 +30,8 @@ pub enum Value {
     Finish(Rc<Finish>),
     /// An interior.
     Interior(Rc<Interior>),
+    /// A `material`: a texture and, when it gives one, an interior.
+    Material(Rc<(Texture, Option<Interior>)>),
     /// A colour map.
     ColourMap(Rc<Vec<(f64, Colour)>>),
     /// A normal.
@@ -125,6 +127,7 @@ impl Value {
             Value::Pigment(_) => "a pigment",
             Value::Finish(_) => "a finish",
             Value::Interior(_) => "an interior",
+            Value::Material(_) => "a material",
             Value::ColourMap(_) => "a colour map",
             Value::Normal(_) => "a normal",
             Value::Map(_) => "a map",

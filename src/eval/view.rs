@@ -12,6 +12,7 @@ use crate::scene::{Camera, CylinderKind, Projection, Transform};
 use crate::syntax::ast::{Block, BlockHead, Item};
 use glam::DVec3;
 use std::rc::Rc;
+use std::sync::Arc;
 
 /// Block keywords durer evaluates.
 pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
@@ -171,9 +172,7 @@ impl Evaluator {
             "transform" => Ok(Value::Transform(Rc::new(
                 self.eval_transform_block(stream)?,
             ))),
-            "material" => Ok(Value::Texture(std::sync::Arc::new(
-                self.eval_material(stream)?.0,
-            ))),
+            "material" => Ok(Value::Material(Rc::new(self.eval_material(stream)?))),
             _ if APPEARANCE_BLOCKS.contains(&head) => {
                 self.eval_appearance_block(head, block, stream)
             }
@@ -371,10 +370,11 @@ impl Evaluator {
                             };
                             camera.projection = Projection::Cylinder(kind);
                         }
-                        "mesh_camera" => {
+                        "smooth" => {
                             self.warn(
                                 *span,
-                                "`mesh_camera` is not supported yet; a perspective camera is used",
+                                "`smooth` only matters for mesh camera distribution 3, which \
+                                 durer does not support yet; it is ignored",
                             );
                         }
                         "focal_point" | "aperture" | "blur_samples" | "confidence" | "variance" => {
@@ -382,6 +382,11 @@ impl Evaluator {
                         }
                         _ => return Err(self.unexpected_in(&item, "camera")),
                     }
+                }
+                Item::Block(block) if matches!(&block.head, BlockHead::Word(w) if &**w == "mesh_camera") =>
+                {
+                    camera.projection = Projection::Mesh;
+                    camera.mesh = Some(Arc::new(self.eval_mesh_camera(block)?));
                 }
                 Item::Block(block) => match self.eval_block(block)? {
                     Value::Transform(t) => transforms.push(*t),
@@ -397,6 +402,12 @@ impl Evaluator {
                 Item::Comma(_) => {}
                 _ => return Err(self.unexpected_in(&item, "camera")),
             }
+        }
+        if let Some(mesh) = &mut camera.mesh {
+            // Only the z of `location` and `direction` mean something to a mesh camera.
+            let mesh = Arc::make_mut(mesh);
+            mesh.offset = camera.location.z;
+            mesh.reversed = camera.direction.z < -1e-10;
         }
         if let Some(given) = angle.filter(|a| a.is_finite()) {
             camera.angle = given;
@@ -506,10 +517,15 @@ impl Evaluator {
                         _ => String::new(),
                     };
                     if matches!(name.as_str(), "radiosity" | "photons") {
-                        self.warn(
-                            block.head_span,
-                            format!("`{name}` is not supported yet; it is ignored"),
-                        );
+                        let message = if name == "radiosity" {
+                            self.settings.radiosity = true;
+                            "`radiosity` is not supported yet: no indirect light is computed \
+                             (ambient counts as zero, as with radiosity in POV-Ray 3.7)"
+                                .to_string()
+                        } else {
+                            format!("`{name}` is not supported yet; it is ignored")
+                        };
+                        self.warn(block.head_span, message);
                     } else {
                         return Err(self.unexpected_in(&item, "global_settings"));
                     }

@@ -6,10 +6,18 @@
 //!
 //! Rules (POV-Ray 3.7 manual; the measured ones say so):
 //! - sky sphere: pigments are looked up at the ray direction (moved into sky space by the
-//!   inverse of the sky's transformations); layers are stacked like layered textures, the
-//!   last on top: each layer shows `1 − filter − transmit` of its colour and lets
+//!   inverse of the sky's transformations); layers are stacked, the last on top. In 3.7
+//!   scenes each layer shows `1 − filter − transmit` of its colour and lets
 //!   `filter · colour + transmit` of the layers below through; what passes every layer
-//!   shows the background. The result is multiplied by `emission`.
+//!   shows the background. Legacy scenes (no `#version`, or one below 3.7) stack them
+//!   differently: each layer's `1 − filter − transmit` share is weighted by what reaches
+//!   it, 1 for the top layer, below that the product of the filters above plus the
+//!   product of their transmits (so between layers filter acts like transmit, and a
+//!   filter layer above a transmit layer passes nothing); the background is weighted by
+//!   the product of all filters times the product of all colours plus the product of all
+//!   transmits. Both measured on single pixels with stacks of rgbf, rgbt and rgbft layers
+//!   (legacy: exact for layers with filter or transmit; layers with both differ). The
+//!   result is multiplied by `emission`.
 //! - fog: with depth d, constant fog lets `a = exp(−d / distance)` through; ground fog
 //!   uses the density integrated along the ray instead of d, with density 1 up to height
 //!   `fog_offset` (along `up`) and `1 / (1 + ((h − offset) / alt)²)` above (measured: 0.8,
@@ -40,6 +48,8 @@ use glam::DVec3;
 pub struct AtmosphereShader<'a> {
     atmosphere: &'a Atmosphere,
     background: DVec3,
+    /// Stack sky sphere layers as POV-Ray does for scenes before 3.7.
+    legacy_sky_layers: bool,
 }
 
 impl<'a> AtmosphereShader<'a> {
@@ -48,12 +58,23 @@ impl<'a> AtmosphereShader<'a> {
         AtmosphereShader {
             atmosphere,
             background,
+            legacy_sky_layers: false,
         }
+    }
+
+    /// The shader with sky sphere layers stacked the pre-3.7 way (`legacy`: the scene is a
+    /// legacy scene, see `encoding::is_legacy_scene`) or the 3.7 way.
+    pub fn with_legacy_sky_layers(mut self, legacy: bool) -> AtmosphereShader<'a> {
+        self.legacy_sky_layers = legacy;
+        self
     }
 
     /// The colour seen by a ray that hits nothing, looking along unit `direction`.
     pub fn sky(&self, direction: DVec3) -> DVec3 {
         match &self.atmosphere.sky_sphere {
+            Some(sky) if self.legacy_sky_layers => {
+                legacy_sky_colour(sky, direction, self.background)
+            }
             Some(sky) => sky_colour(sky, direction, self.background),
             None => self.background,
         }
@@ -195,7 +216,7 @@ fn rainbow_share(rainbow: &Rainbow, direction: DVec3, depth: f64) -> Option<(f64
     Some((share, colour, weight))
 }
 
-/// The sky sphere's colour in unit `direction`, over `background`.
+/// The sky sphere's colour in unit `direction`, over `background` (3.7 scenes).
 fn sky_colour(sky: &SkySphere, direction: DVec3, background: DVec3) -> DVec3 {
     let point = sky.transform.point_to_inner(direction);
     let mut colour = DVec3::ZERO;
@@ -210,6 +231,32 @@ fn sky_colour(sky: &SkySphere, direction: DVec3, background: DVec3) -> DVec3 {
         }
     }
     (colour + through * background) * sky.emission
+}
+
+/// The sky sphere's colour in unit `direction`, over `background` (scenes before 3.7).
+fn legacy_sky_colour(sky: &SkySphere, direction: DVec3, background: DVec3) -> DVec3 {
+    let point = sky.transform.point_to_inner(direction);
+    let mut colour = DVec3::ZERO;
+    // What reaches a layer from the layers above it: 1 for the top one, then the product
+    // of their filters plus the product of their transmits.
+    let mut through = 1.0;
+    let mut filter_product = 1.0;
+    let mut transmit_product = 1.0;
+    let mut filter_colour = DVec3::ONE;
+    for pigment in sky.pigments.iter().rev() {
+        let layer = pigment_colour(pigment, point);
+        let rgb = layer.rgb_vec();
+        colour += through * (1.0 - layer.filter - layer.transmit) * rgb;
+        filter_product *= layer.filter;
+        transmit_product *= layer.transmit;
+        filter_colour *= rgb;
+        through = filter_product + transmit_product;
+        if through <= 0.0 {
+            break;
+        }
+    }
+    let to_background = filter_product * filter_colour + DVec3::splat(transmit_product);
+    (colour + to_background * background) * sky.emission
 }
 
 #[cfg(test)]
@@ -286,5 +333,26 @@ mod tests {
         };
         let colour = sky_colour(&sky, DVec3::Y, DVec3::ZERO);
         assert!((colour - DVec3::new(0.5, 0.0, 0.5)).length() < 1e-12);
+    }
+
+    /// POV-Ray 3.7 on one pixel of a legacy scene: two grey rgbf 0.5 layers over
+    /// background <0.2, 0.4, 0.6> give 0.388, 0.4, 0.412; a filter layer over a transmit
+    /// layer hides the background.
+    #[test]
+    fn legacy_sky_filter_layers_stack_as_measured() {
+        let grey_filter = crate::scene::Pigment::Solid(Colour::rgbft(0.5, 0.5, 0.5, 0.5, 0.0));
+        let grey_transmit = crate::scene::Pigment::Solid(Colour::rgbft(0.5, 0.5, 0.5, 0.0, 0.5));
+        let background = DVec3::new(0.2, 0.4, 0.6);
+        let sky = |pigments| SkySphere {
+            pigments,
+            emission: DVec3::ONE,
+            transform: Transform::IDENTITY,
+        };
+        let filters = sky(vec![grey_filter.clone(), grey_filter.clone()]);
+        let colour = legacy_sky_colour(&filters, DVec3::Y, background);
+        assert!((colour - DVec3::new(0.3875, 0.4, 0.4125)).length() < 1e-12);
+        let mixed = sky(vec![grey_transmit, grey_filter]);
+        let colour = legacy_sky_colour(&mixed, DVec3::Y, background);
+        assert!((colour - DVec3::splat(0.375)).length() < 1e-12);
     }
 }

@@ -186,6 +186,8 @@ impl CameraRays {
                 let direction = alpha.sin() * r + beta.sin() * up + alpha.cos() * beta.cos() * d;
                 (self.location, direction)
             }
+            // Mesh cameras shoot their rays from faces (`render::mesh_camera`).
+            Projection::Mesh => return None,
             Projection::Omnimax => (
                 self.location,
                 omnimax_direction(u, v, self.aspect, d, r, up)?,

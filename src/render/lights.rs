@@ -17,7 +17,8 @@
 //!   opaque surface gives zero. The number of surfaces is not limited by
 //!   `max_trace_level`. `shadowless` lights are never blocked. Surfaces closer than 1e-3 to
 //!   the lit point are ignored. Interiors with `fade_distance` fade the light over the
-//!   length the shadow ray runs inside them.
+//!   length the shadow ray runs inside them; interiors with `caustics` brighten it at each
+//!   crossing (fake caustics, see [`fake_caustics`]).
 //! - parallel lights: shadow rays run along the light's direction up to the plane through
 //!   the light perpendicular to it; points beyond that plane are lit but never shadowed.
 //!   Cylinder lights do the same along their axis (their shadows do not spread; measured
@@ -28,9 +29,10 @@
 //!   centre's unless `area_illumination` is on.
 
 use super::area_light::AreaArray;
+use super::normal::perturbed_normal;
 use super::reflection::interior_fade;
 use super::texture::surface_pigment;
-use crate::geometry::{Ray, World};
+use crate::geometry::{Material, Ray, SurfaceHit, World};
 use crate::scene::{Colour, LightSource, Scene, Spotlight};
 use glam::DVec3;
 
@@ -268,6 +270,9 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
         };
         let pigment = surface_pigment(&material.texture, hit.point);
         filter *= transmission(pigment);
+        if material.interior.caustics > 0.0 {
+            filter *= fake_caustics(material, &hit, direction);
+        }
         if direction.dot(hit.normal) < 0.0 {
             entered = Some((hit.material, hit.distance));
         } else {
@@ -287,6 +292,31 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
         start = hit.distance + SHADOW_EPSILON;
     }
     DVec3::ZERO
+}
+
+/// The exponent of fake caustics per unit of `caustics` (measured: see [`fake_caustics`]).
+const CAUSTICS_EXPONENT: f64 = 45.0;
+
+/// How much brighter light gets crossing a surface with interior `caustics` c:
+/// `1 + |cos a|^(45 c)`, a the angle between the shadow ray and the (perturbed) surface
+/// normal, turned towards the lit point before a `normal { }` perturbs it (with the
+/// other side, bumps under a light straight above come out darker than POV-Ray's; this
+/// way they match exactly). Measured in POV-Ray 3.7 with tilted discs, boxes and spheres
+/// under a light straight above: 1.502 at 10 degrees with c = 1 (0.842, 0.709, 0.252, 0.064 more for c =
+/// 0.25, 0.5, 2, 4), 1.0016 at 30 degrees, 2 when the ray runs along the normal; every
+/// crossed surface multiplies, filter and transmit alike.
+fn fake_caustics(material: &Material, hit: &SurfaceHit, direction: DVec3) -> f64 {
+    let mut normal = hit.normal;
+    if let Some(perturbation) = &material.texture.normal {
+        let facing = if direction.dot(normal) < 0.0 {
+            normal
+        } else {
+            -normal
+        };
+        normal = perturbed_normal(perturbation, hit.point, facing);
+    }
+    let cosine = direction.dot(normal).abs().min(1.0);
+    1.0 + cosine.powf(CAUSTICS_EXPONENT * material.interior.caustics)
 }
 
 #[cfg(test)]

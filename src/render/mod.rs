@@ -22,7 +22,9 @@ pub mod dispersion;
 pub mod encoding;
 pub mod focal_blur;
 pub mod image_map;
+pub mod iridescence;
 pub mod lights;
+pub mod mesh_camera;
 pub mod normal;
 pub mod output;
 pub mod pattern;
@@ -119,13 +121,22 @@ pub fn render(
         .focal_blur
         .as_ref()
         .filter(|_| camera.has_focal_blur());
-    let first = |column: u32, row: u32| match blur {
-        Some(blur) => focal_blur::blurred_pixel(column, row, &camera, blur, &|ray| {
+    let mesh = scene.camera.mesh.as_deref();
+    let first = |column: u32, row: u32| match (mesh, blur) {
+        (Some(mesh), _) => mesh_camera::mesh_pixel(mesh, width, height, column, row, &|ray| {
+            tracer.trace_camera_ray(ray)
+        })
+        .unwrap_or(DVec3::ZERO),
+        (None, Some(blur)) => focal_blur::blurred_pixel(column, row, &camera, blur, &|ray| {
             tracer.trace_camera_ray(ray)
         }),
-        None => point(f64::from(column) + 0.5, f64::from(row) + 0.5),
+        (None, None) => point(f64::from(column) + 0.5, f64::from(row) + 0.5),
     };
-    let colours = match options.antialias.filter(|_| blur.is_none()) {
+    // Mesh cameras and focal blur choose their own rays; anti-aliasing does not apply.
+    let colours = match options
+        .antialias
+        .filter(|_| blur.is_none() && mesh.is_none())
+    {
         None => map_rows(width, height, Some(progress), |column, row| {
             first(column, row)
         }),

@@ -12,11 +12,13 @@
 //! - specular: `specular · (N·H)^(1/roughness) · light`, H = normalize(L + V).
 //! - metallic m tints both highlights: `light · (1 + m (1 − F) (pigment − 1))` with
 //!   F = clamp(0.014567225 / (x − 1.12)² − 0.011612903, 0, 1), x = acos(N·L) / (π/2).
-//! - light here is the light colour after fading, the spotlight cone and shadow filtering.
+//! - light here is the light colour after fading, the spotlight cone and shadow filtering,
+//!   tinted by `irid` (see [`super::iridescence`]).
 //! - `shadowless` lights light diffusely but cause no highlights (as the manual says, and
 //!   renders confirm).
 
 use super::area_light::{point_random, AreaArray, Sampled};
+use super::iridescence::iridescence;
 use super::lights::{incoming, light_filter, Incoming, SceneLight};
 use crate::geometry::World;
 use crate::scene::{Colour, Finish};
@@ -121,6 +123,11 @@ pub fn local_light(
                     let Some(direction) = offset.try_normalize() else {
                         return LocalLight::default();
                     };
+                    // A point light behind the surface lights nothing: no shadow ray.
+                    let cosine = sample.normal.dot(direction);
+                    if !(cosine > 0.0 || (cosine < 0.0 && lights_back(sample))) {
+                        return LocalLight::default();
+                    }
                     let towards = Incoming {
                         direction,
                         distance,
@@ -173,6 +180,13 @@ fn lit_by(
         return lit;
     }
     let front = cosine > 0.0 || sample.double_illuminate;
+    let colour = match &finish.irid {
+        Some(irid) => {
+            let cos_view = sample.normal.dot(-sample.ray_direction).abs();
+            colour * iridescence(irid, sample.point, cosine.abs(), cos_view)
+        }
+        None => colour,
+    };
     let amount = if front {
         finish.diffuse
     } else {

@@ -5,6 +5,7 @@
 
 use super::texture::Normal;
 use glam::DVec3;
+use std::sync::Arc;
 
 /// The kind of projection a camera makes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -26,6 +27,8 @@ pub enum Projection {
     Cylinder(CylinderKind),
     /// Rectangular longitude/latitude coordinates on a sphere.
     Spherical,
+    /// `mesh_camera`: each pixel's rays start on faces of meshes (`Camera::mesh`).
+    Mesh,
 }
 
 /// The four cylindrical camera types of POV-Ray.
@@ -80,6 +83,8 @@ pub struct Camera {
     pub focal_blur: Option<FocalBlur>,
     /// Camera `normal { }`: bends every ray's direction as if it were a surface normal.
     pub normal: Option<Normal>,
+    /// The faces of a `mesh_camera` (with [`Projection::Mesh`]).
+    pub mesh: Option<Arc<MeshCamera>>,
 }
 
 impl Default for Camera {
@@ -94,6 +99,7 @@ impl Default for Camera {
             vertical_angle: DEFAULT_ANGLE / 2.0,
             focal_blur: None,
             normal: None,
+            mesh: None,
         }
     }
 }
@@ -117,4 +123,43 @@ pub struct FocalBlur {
     pub confidence: f64,
     /// Accepted variance of the samples' mean (default 1/128).
     pub variance: f64,
+}
+
+/// `mesh_camera { rays_per_pixel distribution [max_distance] mesh { .. } .. }`: rays start
+/// at the centres of mesh faces and run along the faces' normals.
+#[derive(Clone, Debug)]
+pub struct MeshCamera {
+    /// Rays shot into each pixel (at least 1); their colours are averaged.
+    pub rays_per_pixel: u32,
+    /// How pixels are assigned to faces.
+    pub distribution: MeshDistribution,
+    /// Rays do not see objects farther than this; 0 means no limit.
+    pub max_distance: f64,
+    /// The faces of each `mesh`, in the order written, in world space.
+    pub meshes: Vec<Vec<CameraFace>>,
+    /// How far ray origins move along the face normals (the camera's `location` z).
+    pub offset: f64,
+    /// Rays run against the face normals (the camera's `direction` z is negative).
+    pub reversed: bool,
+}
+
+/// POV-Ray's mesh camera distribution types.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MeshDistribution {
+    /// 0: ray r of a pixel uses mesh r; the pixel's number picks the face.
+    PerMesh,
+    /// 1: the meshes' faces are summed into one list; ray r of a pixel uses the face at
+    /// `r · width · height + pixel`.
+    Summed,
+    /// 2: the image is split into side-by-side columns, one per mesh.
+    SideBySide,
+}
+
+/// One face of a camera mesh: where its ray starts and where it points.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraFace {
+    /// The face's centroid.
+    pub centre: DVec3,
+    /// Unit normal: `(c − a) × (b − a)` for corners a, b, c.
+    pub normal: DVec3,
 }

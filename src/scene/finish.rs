@@ -106,7 +106,8 @@ pub struct Interior {
     pub fade_power: f64,
     /// `fade_color`: colour light fades to inside (default black).
     pub fade_colour: DVec3,
-    /// `caustics` (parsed; no effect yet).
+    /// `caustics`: fake caustics, brightening shadow rays that cross the surface nearly
+    /// along its normal (0 is off).
     pub caustics: f64,
 }
 

@@ -1,9 +1,10 @@
 //! Light sources as POV-Ray defines them.
 //!
 //! In: nothing (data definitions). Out: [`LightSource`], [`Spotlight`], [`AreaLight`].
-//! Holds: positions and directions in world space.
+//! Holds: positions and directions in world space (in the carrying object's space for the
+//! lights an object holds, `Object::lights`).
 
-use super::Object;
+use super::{Object, Transform};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -31,6 +32,12 @@ pub struct LightSource {
     /// `looks_like { object }`: the light's visible shape, already at the light's position
     /// and marked `no_shadow`; evaluation adds it to the scene's objects.
     pub looks_like: Option<Arc<Object>>,
+    /// `media_interaction` (default on): whether media scatter this light. durer has no
+    /// media, so this changes nothing yet.
+    pub media_interaction: bool,
+    /// `media_attenuation` (default off): whether media along shadow rays dim this light.
+    /// durer has no media, so this changes nothing yet.
+    pub media_attenuation: bool,
 }
 
 impl LightSource {
@@ -47,7 +54,31 @@ impl LightSource {
             area: None,
             projected_through: None,
             looks_like: None,
+            media_interaction: true,
+            media_attenuation: false,
         }
+    }
+
+    /// The light moved by `t`: its position, aim, area axes and `looks_like` shape; a
+    /// `projected_through` object stays where it was written.
+    pub fn transformed(&self, t: &Transform) -> LightSource {
+        let mut light = self.clone();
+        light.position = t.point_to_outer(light.position);
+        if let Some(spot) = &mut light.spotlight {
+            spot.point_at = t.point_to_outer(spot.point_at);
+        }
+        if let Some(target) = &mut light.parallel {
+            *target = t.point_to_outer(*target);
+        }
+        if let Some(area) = &mut light.area {
+            area.axis1 = t.vector_to_outer(area.axis1);
+            area.axis2 = t.vector_to_outer(area.axis2);
+        }
+        if let Some(object) = &mut light.looks_like {
+            let object = Arc::make_mut(object);
+            object.transform_by(t);
+        }
+        light
     }
 }
 

@@ -14,7 +14,10 @@ mod texture;
 mod transform;
 
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
-pub use camera::{Camera, CylinderKind, FocalBlur, Projection, DEFAULT_ANGLE};
+pub use camera::{
+    Camera, CameraFace, CylinderKind, FocalBlur, MeshCamera, MeshDistribution, Projection,
+    DEFAULT_ANGLE,
+};
 pub use colour::Colour;
 pub use finish::{Finish, Interior, Irid};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
@@ -63,6 +66,9 @@ pub struct GlobalSettings {
     pub ambient_light: DVec3,
     /// The noise generator patterns use unless they name their own (default 2).
     pub noise_generator: crate::noise::NoiseGenerator,
+    /// A `radiosity { }` block was given. durer computes no indirect light, but in 3.7
+    /// scenes radiosity sets every finish's ambient term to zero, and so does durer.
+    pub radiosity: bool,
 }
 
 impl Default for GlobalSettings {
@@ -75,6 +81,7 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
             noise_generator: crate::noise::NoiseGenerator::default(),
+            radiosity: false,
         }
     }
 }
@@ -110,6 +117,10 @@ pub struct Object {
     pub no_reflection: bool,
     /// `double_illuminate`: lit from both sides.
     pub double_illuminate: bool,
+    /// Light sources written inside this CSG object, in its local space: they move with
+    /// it, and evaluation adds them to the scene's lights wherever the object is placed
+    /// (boxed: almost no object has any).
+    pub lights: Option<Box<Vec<LightSource>>>,
 }
 
 impl Object {
@@ -128,6 +139,7 @@ impl Object {
             no_image: false,
             no_reflection: false,
             double_illuminate: false,
+            lights: None,
         }
     }
 

@@ -605,3 +605,26 @@ fn broken_density_file_is_refused() {
         ],
     );
 }
+
+#[test]
+fn mesh_camera_distribution_3_is_refused_with_its_reason() {
+    check(
+        "mesh_camera_distribution_3",
+        2,
+        26,
+        &[
+            "mesh camera distribution 3 is not supported yet",
+            "uv coordinates",
+        ],
+    );
+}
+
+#[test]
+fn mesh_camera_needs_a_mesh_per_ray() {
+    check(
+        "mesh_camera_too_few_meshes",
+        2,
+        24,
+        &["distribution 0 needs a mesh for each of the 2 rays per pixel, found 1 meshes"],
+    );
+}

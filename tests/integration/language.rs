@@ -34,3 +34,29 @@ fn language_cases_pass() {
         failures.join("\n")
     );
 }
+
+/// Lights keep `media_interaction` and `media_attenuation`, and lights written inside a
+/// declared union join the scene once per placed copy, moved with it.
+#[test]
+fn lights_keep_media_flags_and_follow_their_csg() {
+    let dir = crate::scratch("lights");
+    let path = dir.join("lights.pov");
+    std::fs::write(
+        &path,
+        "light_source { <1, 2, 3> rgb 1 media_interaction off media_attenuation on }\n\
+         #declare Lamp = union { light_source { <1, 0, 0> rgb 1 } sphere { 0, 1 } }\n\
+         object { Lamp translate <0, 5, 0> }\n\
+         object { Lamp rotate 90*z }\n",
+    )
+    .expect("write scene");
+    let evaluated = evaluate(&path);
+    let scene = evaluated.scene.expect("the scene evaluates");
+    assert_eq!(scene.lights.len(), 3);
+    assert!(!scene.lights[0].media_interaction);
+    assert!(scene.lights[0].media_attenuation);
+    assert!(scene.lights[1].media_interaction && !scene.lights[1].media_attenuation);
+    let moved = scene.lights[1].position;
+    assert!((moved - glam::DVec3::new(1.0, 5.0, 0.0)).length() < 1e-12);
+    let turned = scene.lights[2].position;
+    assert!((turned - glam::DVec3::new(0.0, 1.0, 0.0)).length() < 1e-12);
+}

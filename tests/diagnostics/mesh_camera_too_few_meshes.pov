@@ -1,0 +1,2 @@
+#declare M = mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } }
+camera { mesh_camera { 2, 0 mesh { M } } }

@@ -1,0 +1,14 @@
+// atmosphere_sky_sphere_legacy: the same layers in a #version 3.6 scene, which POV-Ray
+// stacks the legacy way (between layers filter passes light like transmit; a filter layer
+// above a transmit layer hides what is below both), as skysph2.pov's clouds need
+#version 3.6;
+global_settings { assumed_gamma 1.0 }
+background { rgb <0.5, 0.3, 0.2> }
+camera { location <0, 1, -5> look_at <0, 2.5, 2> angle 80 }
+light_source { <-5, 8, -6> rgb 1 }
+plane { y, 0 pigment { checker rgb 0.8 rgb 0.3 } }
+sky_sphere {
+  pigment { gradient y colour_map { [0 rgbf <0.9, 0.8, 0.6, 0.4>] [1 rgbf <0.1, 0.2, 0.6, 0.3>] } scale 2 translate -1 }
+  pigment { bozo colour_map { [0 rgbt <0.8, 0.8, 0.8, 0.2>] [0.5 rgbt <0.9, 0.9, 0.9, 0.8>] [1 rgbt <1, 1, 1, 0.9>] } scale 0.3 }
+  pigment { gradient x colour_map { [0 rgbf <1, 0.6, 0.6, 0.7>] [1 rgbf <0.6, 0.6, 1, 0.9>] } scale 2 translate -1 }
+}
