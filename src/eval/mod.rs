@@ -139,6 +139,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("shapes_old.inc", include_str!("stdlib/shapes_old.inc")),
     ("shapes2.inc", include_str!("stdlib/shapes2.inc")),
     ("shapesq.inc", include_str!("stdlib/shapesq.inc")),
+    ("ior.inc", include_str!("stdlib/ior.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

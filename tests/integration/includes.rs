@@ -179,6 +179,7 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         "stones2.inc",
         include_str!("../../src/eval/stdlib/stones2.inc"),
     ),
+    ("ior.inc", include_str!("../../src/eval/stdlib/ior.inc")),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
@@ -217,6 +218,10 @@ fn declared_names(text: &str) -> Vec<(String, Option<&'static str>)> {
             continue;
         }
         let value = value.trim_start();
+        // Functions (ior.inc's FnPovDispersion) are checked through the values using them.
+        if value.starts_with("function") {
+            continue;
+        }
         let kind = APPEARANCE_KINDS
             .iter()
             .copied()
