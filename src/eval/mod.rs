@@ -140,6 +140,9 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("shapes2.inc", include_str!("stdlib/shapes2.inc")),
     ("shapesq.inc", include_str!("stdlib/shapesq.inc")),
     ("ior.inc", include_str!("stdlib/ior.inc")),
+    ("debug.inc", include_str!("stdlib/debug.inc")),
+    ("stdinc.inc", include_str!("stdlib/stdinc.inc")),
+    ("stdcam.inc", include_str!("stdlib/stdcam.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
