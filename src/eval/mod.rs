@@ -143,6 +143,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("debug.inc", include_str!("stdlib/debug.inc")),
     ("stdinc.inc", include_str!("stdlib/stdinc.inc")),
     ("stdcam.inc", include_str!("stdlib/stdcam.inc")),
+    ("sunpos.inc", include_str!("stdlib/sunpos.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

@@ -584,6 +584,10 @@ const EMBEDDED_LIBRARIES: &[(&str, &str)] = &[
         include_str!("../../src/eval/stdlib/arrays.inc"),
     ),
     ("debug.inc", include_str!("../../src/eval/stdlib/debug.inc")),
+    (
+        "sunpos.inc",
+        include_str!("../../src/eval/stdlib/sunpos.inc"),
+    ),
 ];
 
 /// Whether two lines of probe output agree: the same words, numbers equal to a millionth of
