@@ -144,6 +144,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("stdinc.inc", include_str!("stdlib/stdinc.inc")),
     ("stdcam.inc", include_str!("stdlib/stdcam.inc")),
     ("sunpos.inc", include_str!("stdlib/sunpos.inc")),
+    ("screen.inc", include_str!("stdlib/screen.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

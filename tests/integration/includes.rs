@@ -588,6 +588,10 @@ const EMBEDDED_LIBRARIES: &[(&str, &str)] = &[
         "sunpos.inc",
         include_str!("../../src/eval/stdlib/sunpos.inc"),
     ),
+    (
+        "screen.inc",
+        include_str!("../../src/eval/stdlib/screen.inc"),
+    ),
 ];
 
 /// Whether two lines of probe output agree: the same words, numbers equal to a millionth of
