@@ -145,6 +145,8 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("stdcam.inc", include_str!("stdlib/stdcam.inc")),
     ("sunpos.inc", include_str!("stdlib/sunpos.inc")),
     ("screen.inc", include_str!("stdlib/screen.inc")),
+    ("stage1.inc", include_str!("stdlib/stage1.inc")),
+    ("stoneold.inc", include_str!("stdlib/stoneold.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

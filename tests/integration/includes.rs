@@ -188,6 +188,10 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         "stdcam.inc",
         include_str!("../../src/eval/stdlib/stdcam.inc"),
     ),
+    (
+        "stoneold.inc",
+        include_str!("../../src/eval/stdlib/stoneold.inc"),
+    ),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
@@ -1135,16 +1139,17 @@ fn embedded_stdinc_includes_the_everyday_files() {
     assert_eq!(found.trim(), "functions 1.000 1.000 1.000 1 1");
 }
 
-/// durer's stdcam.inc sets up the same camera, light and floor as POV-Ray's (which needs
-/// colors.inc first): a sphere in front of it renders pixel for pixel the same.
+/// durer's stdcam.inc and stage1.inc set up the same camera, light and floor or wall as
+/// POV-Ray's (whose stdcam.inc needs colors.inc first): a sphere in front of them renders
+/// pixel for pixel the same.
 #[test]
-fn embedded_stdcam_renders_like_povray() {
+fn embedded_stages_render_like_povray() {
     if povray_include_folder().is_none() {
         eprintln!("POV-Ray's include files are not installed; skipping");
         return;
     }
-    let render = |installed: bool| {
-        let dir = scratch(&format!("stdcam-{installed}"));
+    let render = |file: &str, installed: bool| {
+        let dir = scratch(&format!("stage-{file}-{installed}"));
         let path = dir.join("scene.pov");
         let colours = if installed {
             "#include \"colors.inc\"\n"
@@ -1152,7 +1157,7 @@ fn embedded_stdcam_renders_like_povray() {
             ""
         };
         let scene = format!(
-            "#version 3.7;\n{colours}#include \"stdcam.inc\"\n\
+            "#version 3.7;\n{colours}#include \"{file}\"\n\
              sphere {{ <-0.5, 0.6, 0>, 0.6 pigment {{ rgb <0.3, 0.6, 0.9> }} }}\n"
         );
         std::fs::write(&path, scene).expect("write scene");
@@ -1171,10 +1176,12 @@ fn embedded_stdcam_renders_like_povray() {
         };
         durer::render::render(&scene, &world, &options, &|_| {})
     };
-    assert!(
-        render(false) == render(true),
-        "stdcam.inc renders differently"
-    );
+    for file in ["stdcam.inc", "stage1.inc"] {
+        assert!(
+            render(file, false) == render(file, true),
+            "{file} renders differently"
+        );
+    }
 }
 
 /// debug.inc's Warning and Error macros raise a warning and an error with the given message
