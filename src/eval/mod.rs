@@ -147,6 +147,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("screen.inc", include_str!("stdlib/screen.inc")),
     ("stage1.inc", include_str!("stdlib/stage1.inc")),
     ("stoneold.inc", include_str!("stdlib/stoneold.inc")),
+    ("stars.inc", include_str!("stdlib/stars.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

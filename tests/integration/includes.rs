@@ -192,6 +192,7 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         "stoneold.inc",
         include_str!("../../src/eval/stdlib/stoneold.inc"),
     ),
+    ("stars.inc", include_str!("../../src/eval/stdlib/stars.inc")),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
