@@ -148,6 +148,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("stage1.inc", include_str!("stdlib/stage1.inc")),
     ("stoneold.inc", include_str!("stdlib/stoneold.inc")),
     ("stars.inc", include_str!("stdlib/stars.inc")),
+    ("rad_def.inc", include_str!("stdlib/rad_def.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

@@ -193,6 +193,10 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         include_str!("../../src/eval/stdlib/stoneold.inc"),
     ),
     ("stars.inc", include_str!("../../src/eval/stdlib/stars.inc")),
+    (
+        "rad_def.inc",
+        include_str!("../../src/eval/stdlib/rad_def.inc"),
+    ),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
