@@ -149,6 +149,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("stoneold.inc", include_str!("stdlib/stoneold.inc")),
     ("stars.inc", include_str!("stdlib/stars.inc")),
     ("rad_def.inc", include_str!("stdlib/rad_def.inc")),
+    ("logo.inc", include_str!("stdlib/logo.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

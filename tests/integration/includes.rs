@@ -197,6 +197,7 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         "rad_def.inc",
         include_str!("../../src/eval/stdlib/rad_def.inc"),
     ),
+    ("logo.inc", include_str!("../../src/eval/stdlib/logo.inc")),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
@@ -211,6 +212,7 @@ const APPEARANCE_KINDS: &[&str] = &[
     "sphere",
     "union",
     "color_map",
+    "merge",
 ];
 
 /// (name, kind) for each identifier an embedded file declares; the kind is one of
