@@ -140,6 +140,17 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("shapes_old.inc", include_str!("stdlib/shapes_old.inc")),
     ("shapes2.inc", include_str!("stdlib/shapes2.inc")),
     ("shapesq.inc", include_str!("stdlib/shapesq.inc")),
+    ("ior.inc", include_str!("stdlib/ior.inc")),
+    ("debug.inc", include_str!("stdlib/debug.inc")),
+    ("stdinc.inc", include_str!("stdlib/stdinc.inc")),
+    ("stdcam.inc", include_str!("stdlib/stdcam.inc")),
+    ("sunpos.inc", include_str!("stdlib/sunpos.inc")),
+    ("screen.inc", include_str!("stdlib/screen.inc")),
+    ("stage1.inc", include_str!("stdlib/stage1.inc")),
+    ("stoneold.inc", include_str!("stdlib/stoneold.inc")),
+    ("stars.inc", include_str!("stdlib/stars.inc")),
+    ("rad_def.inc", include_str!("stdlib/rad_def.inc")),
+    ("logo.inc", include_str!("stdlib/logo.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

@@ -179,6 +179,25 @@ const EMBEDDED_FILES: &[(&str, &str)] = &[
         "stones2.inc",
         include_str!("../../src/eval/stdlib/stones2.inc"),
     ),
+    ("ior.inc", include_str!("../../src/eval/stdlib/ior.inc")),
+    (
+        "stdinc.inc",
+        include_str!("../../src/eval/stdlib/stdinc.inc"),
+    ),
+    (
+        "stdcam.inc",
+        include_str!("../../src/eval/stdlib/stdcam.inc"),
+    ),
+    (
+        "stoneold.inc",
+        include_str!("../../src/eval/stdlib/stoneold.inc"),
+    ),
+    ("stars.inc", include_str!("../../src/eval/stdlib/stars.inc")),
+    (
+        "rad_def.inc",
+        include_str!("../../src/eval/stdlib/rad_def.inc"),
+    ),
+    ("logo.inc", include_str!("../../src/eval/stdlib/logo.inc")),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
@@ -193,6 +212,7 @@ const APPEARANCE_KINDS: &[&str] = &[
     "sphere",
     "union",
     "color_map",
+    "merge",
 ];
 
 /// (name, kind) for each identifier an embedded file declares; the kind is one of
@@ -217,6 +237,10 @@ fn declared_names(text: &str) -> Vec<(String, Option<&'static str>)> {
             continue;
         }
         let value = value.trim_start();
+        // Functions (ior.inc's FnPovDispersion) are checked through the values using them.
+        if value.starts_with("function") {
+            continue;
+        }
         let kind = APPEARANCE_KINDS
             .iter()
             .copied()
@@ -569,6 +593,15 @@ const EMBEDDED_LIBRARIES: &[(&str, &str)] = &[
     (
         "arrays.inc",
         include_str!("../../src/eval/stdlib/arrays.inc"),
+    ),
+    ("debug.inc", include_str!("../../src/eval/stdlib/debug.inc")),
+    (
+        "sunpos.inc",
+        include_str!("../../src/eval/stdlib/sunpos.inc"),
+    ),
+    (
+        "screen.inc",
+        include_str!("../../src/eval/stdlib/screen.inc"),
     ),
 ];
 
@@ -1089,5 +1122,107 @@ fn embedded_shape_files_set_the_version_like_povray() {
     assert!(
         ours == theirs,
         "a scene without #version renders differently"
+    );
+}
+
+/// durer's stdinc.inc alone brings in colors, shapes, transforms, consts, functions, math
+/// and rand.inc: something of each is there after including it without POV-Ray's files.
+#[test]
+fn embedded_stdinc_includes_the_everyday_files() {
+    let dir = scratch("embedded-stdinc");
+    let scene = dir.join("stdinc.pov");
+    std::fs::write(
+        &scene,
+        "#include \"stdinc.inc\"\n\
+         #fopen Out \"found.txt\" write\n\
+         #declare Sheared = transform { Shear_Trans(x, y, z) }\n\
+         #ifdef (f_algbr_cyl1) #write (Out, \"functions \") #end\n\
+         #write (Out, vstr(3, <Red.red, xy.y, sind(90)>, \" \", 0, 3), \" \", Align_Left, \" \", seed(RdmA) > 0, \"\\n\")\n\
+         #fclose Out\n",
+    )
+    .expect("write scene");
+    evaluate_cleanly(&scene, false, "stdinc.inc");
+    let found = std::fs::read_to_string(dir.join("found.txt")).expect("found written");
+    assert_eq!(found.trim(), "functions 1.000 1.000 1.000 1 1");
+}
+
+/// durer's stdcam.inc and stage1.inc set up the same camera, light and floor or wall as
+/// POV-Ray's (whose stdcam.inc needs colors.inc first): a sphere in front of them renders
+/// pixel for pixel the same.
+#[test]
+fn embedded_stages_render_like_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    let render = |file: &str, installed: bool| {
+        let dir = scratch(&format!("stage-{file}-{installed}"));
+        let path = dir.join("scene.pov");
+        let colours = if installed {
+            "#include \"colors.inc\"\n"
+        } else {
+            ""
+        };
+        let scene = format!(
+            "#version 3.7;\n{colours}#include \"{file}\"\n\
+             sphere {{ <-0.5, 0.6, 0>, 0.6 pigment {{ rgb <0.3, 0.6, 0.9> }} }}\n"
+        );
+        std::fs::write(&path, scene).expect("write scene");
+        let options = durer::eval::EvalOptions {
+            search_installed_povray: installed,
+            ..Default::default()
+        };
+        let mut scene = evaluate_with(&path, options)
+            .scene
+            .expect("the scene evaluates");
+        let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+        let options = durer::render::RenderOptions {
+            width: 32,
+            height: 24,
+            antialias: None,
+        };
+        durer::render::render(&scene, &world, &options, &|_| {})
+    };
+    for file in ["stdcam.inc", "stage1.inc"] {
+        assert!(
+            render(file, false) == render(file, true),
+            "{file} renders differently"
+        );
+    }
+}
+
+/// debug.inc's Warning and Error macros raise a warning and an error with the given message
+/// when their condition holds.
+#[test]
+fn embedded_debug_macros_warn_and_stop() {
+    let dir = scratch("embedded-debug");
+    let scene = dir.join("debug.pov");
+    std::fs::write(
+        &scene,
+        "#include \"debug.inc\"\n\
+         Warning(1 < 2, \"careful\")\n\
+         Error(yes, \"stopped here\")\n",
+    )
+    .expect("write scene");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: false,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(&scene, options);
+    let find = |severity: Severity, text: &str| {
+        evaluated
+            .diagnostics
+            .iter()
+            .any(|d| d.severity == severity && d.message.contains(text))
+    };
+    assert!(
+        find(Severity::Warning, "careful"),
+        "{:?}",
+        evaluated.diagnostics
+    );
+    assert!(
+        find(Severity::Error, "stopped here"),
+        "{:?}",
+        evaluated.diagnostics
     );
 }
