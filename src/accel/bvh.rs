@@ -59,11 +59,7 @@ impl Bvh {
         let mut records: Vec<Record> = bounds
             .iter()
             .enumerate()
-            .map(|(index, bounds)| Record {
-                bounds: *bounds,
-                centroid: bounds.centre(),
-                index: index as u32,
-            })
+            .map(|(index, bounds)| Record::new(bounds, index as u32))
             .collect();
         // Leaves hold a few primitives each, so a tree has about as many nodes as primitives.
         let mut nodes = Vec::with_capacity(bounds.len().max(1));
@@ -71,6 +67,11 @@ impl Bvh {
             build_node(&mut records, 0, 0, &mut nodes);
         }
         nodes.shrink_to_fit();
+        // The records' boxes are slightly wide; the whole tree's box, which callers read
+        // (`min_extent`), is the exact union.
+        if let Some(root) = nodes.first_mut() {
+            root.bounds = bounds.iter().fold(Aabb::EMPTY, |all, b| all.union(b));
+        }
         let order = records.iter().map(|record| record.index).collect();
         (Bvh { nodes }, order)
     }
@@ -246,12 +247,54 @@ impl Bvh {
 }
 
 /// What every part of one build shares (read only, so subtrees can be built in parallel).
-/// A primitive as the builder sorts it: its box, the box's centre and its caller's index.
+/// A primitive as the builder sorts it: its box in single precision, rounded outwards so it
+/// still contains the primitive (28 bytes, so large builds stream little memory), and the
+/// caller's index.
 #[derive(Clone, Copy)]
 struct Record {
-    bounds: Aabb,
-    centroid: DVec3,
+    min: [f32; 3],
+    max: [f32; 3],
     index: u32,
+}
+
+impl Record {
+    fn new(bounds: &Aabb, index: u32) -> Record {
+        let down = |x: f64| {
+            let rounded = x as f32;
+            if f64::from(rounded) > x {
+                rounded.next_down()
+            } else {
+                rounded
+            }
+        };
+        let up = |x: f64| {
+            let rounded = x as f32;
+            if f64::from(rounded) < x {
+                rounded.next_up()
+            } else {
+                rounded
+            }
+        };
+        Record {
+            min: bounds.min.to_array().map(down),
+            max: bounds.max.to_array().map(up),
+            index,
+        }
+    }
+
+    /// The (slightly widened) box.
+    fn bounds(&self) -> Aabb {
+        Aabb {
+            min: DVec3::from_array(self.min.map(f64::from)),
+            max: DVec3::from_array(self.max.map(f64::from)),
+        }
+    }
+
+    /// The centre of the box.
+    fn centroid(&self) -> DVec3 {
+        (DVec3::from_array(self.min.map(f64::from)) + DVec3::from_array(self.max.map(f64::from)))
+            * 0.5
+    }
 }
 
 /// Ranges at least this large build their two halves on parallel threads.
@@ -271,8 +314,8 @@ fn build_node(records: &mut [Record], offset: usize, depth: usize, nodes: &mut V
     let mut bounds = Aabb::EMPTY;
     let mut centroid_bounds = Aabb::EMPTY;
     for record in records.iter() {
-        bounds = bounds.union(&record.bounds);
-        centroid_bounds = centroid_bounds.grown_to(record.centroid);
+        bounds = bounds.union(&record.bounds());
+        centroid_bounds = centroid_bounds.grown_to(record.centroid());
     }
     let count = records.len();
     nodes.push(Node {
@@ -336,8 +379,8 @@ fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Aabb) -
         count: 0,
     }; BIN_COUNT];
     for record in records.iter() {
-        let bin = &mut bins[bin_of(record.centroid)];
-        bin.bounds = bin.bounds.union(&record.bounds);
+        let bin = &mut bins[bin_of(record.centroid())];
+        bin.bounds = bin.bounds.union(&record.bounds());
         bin.count += 1;
     }
     // Sweep from the right to get the cost of every right-hand side.
@@ -376,7 +419,7 @@ fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Aabb) -
     }
     let mut boundary = 0;
     for index in 0..count {
-        if bin_of(records[index].centroid) < best_split {
+        if bin_of(records[index].centroid()) < best_split {
             records.swap(index, boundary);
             boundary += 1;
         }

@@ -9,13 +9,13 @@ use crate::diag::Span;
 use crate::scene::{
     BlendMap, Colour, CompoundTexture, Pattern, Pigment, PigmentMap, Texture, Transform,
 };
-use crate::syntax::ast::{BlockHead, Item};
+use crate::syntax::ast::{BlockHead, Expr, Item};
 use glam::DVec3;
 use std::rc::Rc;
 use std::sync::Arc;
 
 /// Patterns POV-Ray has that durer does not render yet (they fall back to their first colour).
-pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &["density_file", "function"];
+pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &["function"];
 
 impl Evaluator {
     /// `texture { [Ident] pigment normal finish transforms }`, or a pattern of whole
@@ -300,10 +300,12 @@ impl Evaluator {
         let mut earlier_item = None;
         let mut uv_mapping = false;
         while let Some(item) = self.next_item(stream)? {
-            // `uv_mapping` may precede the pattern; nothing else may (POV-Ray).
+            // `uv_mapping` and a first pigment identifier (`pigment { P bozo .. }`) may
+            // precede the pattern; nothing else may (POV-Ray).
             let earlier = match &item {
                 Item::Comma(_) => earlier_item,
                 Item::Keyword(word, _) if &**word == "uv_mapping" => earlier_item,
+                Item::Expr(Expr::Ident(..)) if earlier_item.is_none() => None,
                 _ => earlier_item.replace(item.span()),
             };
             // A uv-mapped pigment named here is modified unwrapped and wrapped again at the end.

@@ -179,8 +179,11 @@ impl Evaluator {
             offset: 0.0,
             reversed: false,
         };
-        if let Some((distance, _)) = self.optional_second_value(&mut stream)? {
+        if let Some((distance, span)) = self.optional_second_value(&mut stream)? {
             camera.max_distance = distance.max(0.0);
+            if camera.max_distance > 0.0 {
+                self.warn(span, "a mesh camera's `max_distance` is not applied yet");
+            }
         }
         while let Some(item) = self.next_item(&mut stream)? {
             match &item {

@@ -410,7 +410,7 @@ impl PatternSpec {
             PatternKind::Aoi => surface::angle_of_incidence(surface.normal, surface.ray_direction),
             PatternKind::PigmentPattern(pigment) => {
                 let [red, green, blue, _, _] =
-                    crate::render::pattern::pigment_colour(pigment, p).to_array();
+                    crate::render::pattern::pigment_colour_at(pigment, p, surface).to_array();
                 0.297 * red + 0.589 * green + 0.114 * blue
             }
             PatternKind::Spherical => geometric::spherical(p),

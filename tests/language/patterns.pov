@@ -58,3 +58,12 @@ global_settings { assumed_gamma 1.0 noise_generator 3 }
   warp { planar y, 1 }
   translate x
 }
+
+// A pigment identifier may come before the pattern (POV-Ray reads it first); value printed
+// by povray 3.7.
+#declare Base = pigment { rgb <1, 0, 0> }
+#declare Stirred = pigment { Base gradient x color_map { [0 rgb 0] [1 rgb 1] } }
+#declare StirredFn = function { pigment { Stirred } }
+#if (abs(StirredFn(0.25, 0, 0).red - 0.25) > 1e-6)
+  #error "failed: a pigment identifier before a pattern"
+#end
