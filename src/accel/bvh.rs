@@ -247,18 +247,21 @@ impl Bvh {
 }
 
 /// What every part of one build shares (read only, so subtrees can be built in parallel).
-/// A primitive as the builder sorts it: its box in single precision, rounded outwards so it
-/// still contains the primitive (28 bytes, so large builds stream little memory), and the
-/// caller's index.
+/// A box in single precision, as the builder bins them.
 #[derive(Clone, Copy)]
-struct Record {
+struct Box32 {
     min: [f32; 3],
     max: [f32; 3],
-    index: u32,
 }
 
-impl Record {
-    fn new(bounds: &Aabb, index: u32) -> Record {
+impl Box32 {
+    const EMPTY: Box32 = Box32 {
+        min: [f32::INFINITY; 3],
+        max: [f32::NEG_INFINITY; 3],
+    };
+
+    /// `bounds` rounded outwards, so the result still contains it.
+    fn enclosing(bounds: &Aabb) -> Box32 {
         let down = |x: f64| {
             let rounded = x as f32;
             if f64::from(rounded) > x {
@@ -275,25 +278,53 @@ impl Record {
                 rounded
             }
         };
-        Record {
+        Box32 {
             min: bounds.min.to_array().map(down),
             max: bounds.max.to_array().map(up),
-            index,
         }
     }
 
-    /// The (slightly widened) box.
-    fn bounds(&self) -> Aabb {
+    fn union(&self, other: &Box32) -> Box32 {
+        Box32 {
+            min: std::array::from_fn(|i| self.min[i].min(other.min[i])),
+            max: std::array::from_fn(|i| self.max[i].max(other.max[i])),
+        }
+    }
+
+    fn grown_to(&self, point: [f32; 3]) -> Box32 {
+        Box32 {
+            min: std::array::from_fn(|i| self.min[i].min(point[i])),
+            max: std::array::from_fn(|i| self.max[i].max(point[i])),
+        }
+    }
+
+    fn centre(&self) -> [f32; 3] {
+        std::array::from_fn(|i| (self.min[i] + self.max[i]) * 0.5)
+    }
+
+    fn to_aabb(self) -> Aabb {
         Aabb {
             min: DVec3::from_array(self.min.map(f64::from)),
             max: DVec3::from_array(self.max.map(f64::from)),
         }
     }
+}
 
-    /// The centre of the box.
-    fn centroid(&self) -> DVec3 {
-        (DVec3::from_array(self.min.map(f64::from)) + DVec3::from_array(self.max.map(f64::from)))
-            * 0.5
+/// A primitive as the builder sorts it: its box in single precision, rounded outwards so it
+/// still contains the primitive (28 bytes, so large builds stream little memory), and the
+/// caller's index.
+#[derive(Clone, Copy)]
+struct Record {
+    bounds: Box32,
+    index: u32,
+}
+
+impl Record {
+    fn new(bounds: &Aabb, index: u32) -> Record {
+        Record {
+            bounds: Box32::enclosing(bounds),
+            index,
+        }
     }
 }
 
@@ -303,7 +334,7 @@ const PARALLEL_RANGE: usize = 16_384;
 /// One bin of the SAH sweep.
 #[derive(Clone, Copy)]
 struct Bin {
-    bounds: Aabb,
+    bounds: Box32,
     count: usize,
 }
 
@@ -311,13 +342,14 @@ struct Bin {
 /// to `nodes`; returns the index of its root.
 fn build_node(records: &mut [Record], offset: usize, depth: usize, nodes: &mut Vec<Node>) -> usize {
     let node_index = nodes.len();
-    let mut bounds = Aabb::EMPTY;
-    let mut centroid_bounds = Aabb::EMPTY;
+    let mut bounds = Box32::EMPTY;
+    let mut centroid_bounds = Box32::EMPTY;
     for record in records.iter() {
-        bounds = bounds.union(&record.bounds());
-        centroid_bounds = centroid_bounds.grown_to(record.centroid());
+        bounds = bounds.union(&record.bounds);
+        centroid_bounds = centroid_bounds.grown_to(record.bounds.centre());
     }
     let count = records.len();
+    let bounds = bounds.to_aabb();
     nodes.push(Node {
         bounds,
         first: offset as u32,
@@ -353,12 +385,12 @@ fn build_node(records: &mut [Record], offset: usize, depth: usize, nodes: &mut V
 
 /// Reorders `records` for the best split and returns the split position within them, or
 /// `None` when a leaf is better.
-fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Aabb) -> Option<usize> {
+fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Box32) -> Option<usize> {
     let count = records.len();
-    let extent = centroid_bounds.extent();
-    let axis = if extent.x >= extent.y && extent.x >= extent.z {
+    let extent: [f32; 3] = std::array::from_fn(|i| centroid_bounds.max[i] - centroid_bounds.min[i]);
+    let axis = if extent[0] >= extent[1] && extent[0] >= extent[2] {
         0
-    } else if extent.y >= extent.z {
+    } else if extent[1] >= extent[2] {
         1
     } else {
         2
@@ -369,34 +401,35 @@ fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Aabb) -
         // Every centroid coincides: bins cannot separate them, so halve large ranges.
         return (count > LARGE_LEAF).then_some(count / 2);
     }
-    let scale = BIN_COUNT as f64 / axis_extent;
-    let bin_of = |centroid: DVec3| -> usize {
+    let scale = BIN_COUNT as f32 / axis_extent;
+    let bin_of = |record: &Record| -> usize {
+        let centre = (record.bounds.min[axis] + record.bounds.max[axis]) * 0.5;
         // NaN converts to 0 and overflow saturates, so the index always stays in range.
-        (((centroid[axis] - axis_min) * scale) as usize).min(BIN_COUNT - 1)
+        (((centre - axis_min) * scale) as usize).min(BIN_COUNT - 1)
     };
     let mut bins = [Bin {
-        bounds: Aabb::EMPTY,
+        bounds: Box32::EMPTY,
         count: 0,
     }; BIN_COUNT];
     for record in records.iter() {
-        let bin = &mut bins[bin_of(record.centroid())];
-        bin.bounds = bin.bounds.union(&record.bounds());
+        let bin = &mut bins[bin_of(record)];
+        bin.bounds = bin.bounds.union(&record.bounds);
         bin.count += 1;
     }
     // Sweep from the right to get the cost of every right-hand side.
     let mut right_area = [0.0; BIN_COUNT];
     let mut right_count = [0usize; BIN_COUNT];
-    let mut accumulated = Aabb::EMPTY;
+    let mut accumulated = Box32::EMPTY;
     let mut accumulated_count = 0;
     for split in (1..BIN_COUNT).rev() {
         accumulated = accumulated.union(&bins[split].bounds);
         accumulated_count += bins[split].count;
-        right_area[split] = accumulated.surface_area();
+        right_area[split] = accumulated.to_aabb().surface_area();
         right_count[split] = accumulated_count;
     }
     let mut best_split = 0;
     let mut best_cost = f64::INFINITY;
-    let mut left = Aabb::EMPTY;
+    let mut left = Box32::EMPTY;
     let mut left_count = 0;
     for split in 1..BIN_COUNT {
         left = left.union(&bins[split - 1].bounds);
@@ -404,8 +437,8 @@ fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Aabb) -
         if left_count == 0 || right_count[split] == 0 {
             continue;
         }
-        let cost =
-            left.surface_area() * left_count as f64 + right_area[split] * right_count[split] as f64;
+        let cost = left.to_aabb().surface_area() * left_count as f64
+            + right_area[split] * right_count[split] as f64;
         if cost < best_cost {
             best_cost = cost;
             best_split = split;
@@ -419,7 +452,7 @@ fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Aabb) -
     }
     let mut boundary = 0;
     for index in 0..count {
-        if bin_of(records[index].centroid()) < best_split {
+        if bin_of(&records[index]) < best_split {
             records.swap(index, boundary);
             boundary += 1;
         }

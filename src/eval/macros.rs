@@ -3,8 +3,7 @@
 
 use super::stream::Stream;
 use super::value::Value;
-use super::{EvalResult, Evaluator, Scope};
-use crate::diag::TraceEntry;
+use super::{Entered, Entering, EvalResult, Evaluator};
 use crate::syntax::ast::{Call, Expr, Item};
 use std::rc::Rc;
 
@@ -46,13 +45,15 @@ impl Evaluator {
                 )
                 .into());
         }
-        let mut scope = Scope::with_capacity_and_hasher(values.len(), Default::default());
-        for (parameter, value) in definition.parameters.iter().zip(values) {
-            scope.insert(parameter.name.clone(), value);
-        }
+        let scope: Vec<(Rc<str>, Value)> = definition
+            .parameters
+            .iter()
+            .map(|parameter| parameter.name.clone())
+            .zip(values)
+            .collect();
         self.enter_nesting(call.span)?;
-        self.trace.push(TraceEntry {
-            what: format!("macro `{}`", definition.name),
+        self.trace.push(Entered {
+            what: Entering::Macro(definition.name.clone()),
             span: call.span,
         });
         self.scopes.push(scope);

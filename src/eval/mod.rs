@@ -156,6 +156,37 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
 /// Folder name under which embedded include files appear in diagnostics.
 const EMBEDDED_FOLDER: &str = "<durer standard library>";
 
+/// What an entry of the live call trace entered.
+#[derive(Clone, Debug)]
+pub(crate) enum Entering {
+    /// A call of the named macro.
+    Macro(Rc<str>),
+    /// An include of the named file.
+    File(Rc<str>),
+}
+
+/// One entry of the live call trace: kept cheap (no text is formatted per macro call) and
+/// turned into a [`TraceEntry`] only when a diagnostic needs it.
+#[derive(Clone, Debug)]
+pub(crate) struct Entered {
+    pub(crate) what: Entering,
+    /// Where it was entered from.
+    pub(crate) span: Span,
+}
+
+impl Entered {
+    fn to_trace(&self) -> TraceEntry {
+        let what = match &self.what {
+            Entering::Macro(name) => format!("macro `{name}`"),
+            Entering::File(name) => format!("file `{name}`"),
+        };
+        TraceEntry {
+            what,
+            span: self.span,
+        }
+    }
+}
+
 /// One symbol table: the global one, an include file's or a macro call's.
 pub(crate) type Scope = HashMap<Rc<str>, Value, FastHash>;
 
@@ -167,7 +198,7 @@ pub(crate) struct Evaluator {
     pub(crate) scene_folder: PathBuf,
     /// The scene file's name, for `input_file_name`.
     pub(crate) input_file_name: String,
-    pub(crate) trace: Vec<TraceEntry>,
+    pub(crate) trace: Vec<Entered>,
     pub(crate) warnings: Vec<Diagnostic>,
     pub(crate) nesting: usize,
     pub(crate) version: f64,
@@ -221,7 +252,7 @@ impl Evaluator {
     /// An error at `span` carrying the current macro/include trace.
     pub(crate) fn error(&self, span: Span, message: impl Into<String>) -> Diagnostic {
         let mut d = Diagnostic::error(span, message);
-        d.trace = self.trace.iter().rev().cloned().collect();
+        d.trace = self.trace_for_diagnostic();
         d
     }
 
@@ -230,7 +261,7 @@ impl Evaluator {
         let message = message.into();
         if self.warned_once.insert(message.clone()) {
             let mut d = Diagnostic::warning(span, message);
-            d.trace = self.trace.iter().rev().cloned().collect();
+            d.trace = self.trace_for_diagnostic();
             self.warnings.push(d);
         }
     }
@@ -286,7 +317,7 @@ impl Evaluator {
         let text: Arc<str> = Arc::from(String::from_utf8_lossy(&bytes).into_owned());
         let file = self.sources.add(path, text.clone());
         let items = crate::syntax::parse(&text, file).map_err(|mut d| {
-            d.trace = self.trace.iter().rev().cloned().collect();
+            d.trace = self.trace_for_diagnostic();
             d
         })?;
         self.parsed.insert(key, (file, items.clone()));
@@ -356,8 +387,8 @@ impl Evaluator {
     ) -> EvalResult<()> {
         let path = self.find_file(name, span, "include file", "included here")?;
         self.enter_nesting(span)?;
-        self.trace.push(TraceEntry {
-            what: format!("file `{name}`"),
+        self.trace.push(Entered {
+            what: Entering::File(Rc::from(name)),
             span,
         });
         let items = match self.load_file(&path, Some(span)) {
@@ -383,6 +414,11 @@ impl Evaluator {
         }
         self.nesting += 1;
         Ok(())
+    }
+
+    /// The call trace for a diagnostic, innermost first.
+    pub(crate) fn trace_for_diagnostic(&self) -> Vec<TraceEntry> {
+        self.trace.iter().rev().map(Entered::to_trace).collect()
     }
 
     /// Looks an identifier up, innermost scope first, following references.

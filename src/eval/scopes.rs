@@ -7,7 +7,6 @@
 //! `tables[i]` lists the names table `i` holds, so popping it is quick.
 
 use super::value::Value;
-use super::Scope;
 use crate::hash::FastHash;
 use std::collections::HashMap;
 use std::rc::Rc;
@@ -35,13 +34,20 @@ impl ScopeStack {
         self.tables.len()
     }
 
-    /// Pushes a table (its names become visible, shadowing outer ones).
-    pub(crate) fn push(&mut self, table: Scope) {
+    /// Pushes a table of names and values (its names become visible, shadowing outer ones);
+    /// a name given twice keeps its last value.
+    pub(crate) fn push(&mut self, table: impl IntoIterator<Item = (Rc<str>, Value)>) {
         let index = self.tables.len();
-        let mut names = Vec::with_capacity(table.len());
+        let mut names = Vec::new();
         for (name, value) in table {
             // Every other table is below `index`, so the binding goes last.
             match self.bindings.get_mut(&name) {
+                Some(stack) if stack.last().is_some_and(|(i, _)| *i == index) => {
+                    if let Some(last) = stack.last_mut() {
+                        last.1 = value;
+                    }
+                    continue;
+                }
                 Some(stack) => stack.push((index, value)),
                 None => {
                     self.bindings.insert(name.clone(), vec![(index, value)]);
@@ -145,6 +151,7 @@ impl ScopeStack {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::eval::Scope;
 
     fn name(s: &str) -> Rc<str> {
         Rc::from(s)

@@ -370,7 +370,7 @@ impl Evaluator {
                     MessageLevel::Warning => {
                         let mut d =
                             crate::diag::Diagnostic::warning(span, text.trim_end().to_string());
-                        d.trace = self.trace.iter().rev().cloned().collect();
+                        d.trace = self.trace_for_diagnostic();
                         self.warnings.push(d);
                     }
                     MessageLevel::Error => {
