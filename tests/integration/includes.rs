@@ -94,6 +94,41 @@ fn evaluate_cleanly(path: &std::path::Path, installed: bool, context: &str) {
     assert!(errors.is_empty(), "{context}: {}", errors.join("\n"));
 }
 
+/// Writes `text` to `path`, evaluates it (embedded include files only unless `installed`)
+/// and renders it at `width` x `height`: the image, or the messages of its errors.
+fn render_scene(
+    path: &std::path::Path,
+    text: &str,
+    installed: bool,
+    (width, height): (u32, u32),
+) -> Result<durer::render::Image, Vec<String>> {
+    std::fs::write(path, text).expect("write scene");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: installed,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(path, options);
+    let errors: Vec<String> = evaluated
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Error)
+        .map(|d| d.message.clone())
+        .collect();
+    match evaluated.scene {
+        Some(mut scene) if errors.is_empty() => {
+            let world =
+                durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+            let options = durer::render::RenderOptions {
+                width,
+                height,
+                antialias: None,
+            };
+            Ok(durer::render::render(&scene, &world, &options, &|_| {}))
+        }
+        _ => Err(errors),
+    }
+}
+
 /// Evaluates a scene that includes colors.inc and writes every colour's components to a file.
 fn dump_colours(dir: &std::path::Path, installed: bool) -> String {
     let mut scene = String::from("#include \"colors.inc\"\n#fopen Out \"colours.txt\" write\n");
@@ -368,25 +403,9 @@ fn render_showcases(file: &str, installed: bool) -> Vec<(String, durer::render::
             "#version 3.7;\n{colours}#include \"{file}\"\n{}",
             showcase(&name, kind)
         );
-        std::fs::write(&path, scene).expect("write scene");
-        let options = durer::eval::EvalOptions {
-            search_installed_povray: installed,
-            ..Default::default()
-        };
-        let evaluated = evaluate_with(&path, options);
-        let Some(mut scene) = evaluated.scene else {
-            panic!("{file}: {name} does not evaluate");
-        };
-        let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
-        let options = durer::render::RenderOptions {
-            width: 24,
-            height: 18,
-            antialias: None,
-        };
-        images.push((
-            name,
-            durer::render::render(&scene, &world, &options, &|_| {}),
-        ));
+        let image = render_scene(&path, &scene, installed, (24, 18))
+            .unwrap_or_else(|e| panic!("{file}: {name} does not evaluate: {}", e.join("\n")));
+        images.push((name, image));
     }
     images
 }
@@ -441,31 +460,7 @@ fn render_texture_macro(
            finish {{ ambient 1 diffuse 0 }}\n\
          }}\n"
     );
-    std::fs::write(&path, scene).expect("write scene");
-    let options = durer::eval::EvalOptions {
-        search_installed_povray: installed,
-        ..Default::default()
-    };
-    let evaluated = evaluate_with(&path, options);
-    let errors: Vec<String> = evaluated
-        .diagnostics
-        .iter()
-        .filter(|d| d.severity == Severity::Error)
-        .map(|d| d.message.clone())
-        .collect();
-    match evaluated.scene {
-        Some(mut scene) if errors.is_empty() => {
-            let world =
-                durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
-            let options = durer::render::RenderOptions {
-                width: 40,
-                height: 30,
-                antialias: None,
-            };
-            Ok(durer::render::render(&scene, &world, &options, &|_| {}))
-        }
-        _ => Err(errors),
-    }
+    render_scene(&path, &scene, installed, (40, 30))
 }
 
 /// The pattern macros of durer's textures.inc give what POV-Ray's give: the same image, or
@@ -513,20 +508,7 @@ fn embedded_files_set_the_version_like_povray() {
                  light_source {{ <2, 4, -5>, rgb 1 }}\n\
                  sphere {{ 0, 1 pigment {{ rgb <0.5, 0.3, 0.2> }} }}\n"
             );
-            std::fs::write(&path, scene).expect("write scene");
-            let options = durer::eval::EvalOptions {
-                search_installed_povray: installed,
-                ..Default::default()
-            };
-            let mut scene = evaluate_with(&path, options).scene?;
-            let world =
-                durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
-            let options = durer::render::RenderOptions {
-                width: 16,
-                height: 12,
-                antialias: None,
-            };
-            Some(durer::render::render(&scene, &world, &options, &|_| {}))
+            render_scene(&path, &scene, installed, (16, 12)).ok()
         };
         // Some of POV-Ray's files (skies.inc, stones1.inc) do not load on their own: they
         // need colors.inc first. durer's do.
@@ -791,28 +773,8 @@ fn render_shape_scene(
          background {{ rgb <0.2, 0.3, 0.5> }}\n\
          {body}\n"
     );
-    std::fs::write(&path, scene).expect("write scene");
-    let options = durer::eval::EvalOptions {
-        search_installed_povray: installed,
-        ..Default::default()
-    };
-    let evaluated = evaluate_with(&path, options);
-    let errors: Vec<String> = evaluated
-        .diagnostics
-        .iter()
-        .filter(|d| d.severity == Severity::Error)
-        .map(|d| durer::report::render_plain(d, &evaluated.sources))
-        .collect();
-    let Some(mut scene) = evaluated.scene.filter(|_| errors.is_empty()) else {
-        panic!("{name} does not evaluate:\n{}", errors.join("\n"));
-    };
-    let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
-    let options = durer::render::RenderOptions {
-        width: 40,
-        height: 30,
-        antialias: None,
-    };
-    durer::render::render(&scene, &world, &options, &|_| {})
+    render_scene(&path, &scene, installed, (40, 30))
+        .unwrap_or_else(|e| panic!("{name} does not evaluate:\n{}", e.join("\n")))
 }
 
 /// The statement showing a declared shape, tinted so that its shading shows.
@@ -1167,21 +1129,8 @@ fn embedded_stages_render_like_povray() {
             "#version 3.7;\n{colours}#include \"{file}\"\n\
              sphere {{ <-0.5, 0.6, 0>, 0.6 pigment {{ rgb <0.3, 0.6, 0.9> }} }}\n"
         );
-        std::fs::write(&path, scene).expect("write scene");
-        let options = durer::eval::EvalOptions {
-            search_installed_povray: installed,
-            ..Default::default()
-        };
-        let mut scene = evaluate_with(&path, options)
-            .scene
-            .expect("the scene evaluates");
-        let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
-        let options = durer::render::RenderOptions {
-            width: 32,
-            height: 24,
-            antialias: None,
-        };
-        durer::render::render(&scene, &world, &options, &|_| {})
+        render_scene(&path, &scene, installed, (32, 24))
+            .unwrap_or_else(|e| panic!("{file} does not evaluate: {}", e.join("\n")))
     };
     for file in ["stdcam.inc", "stage1.inc"] {
         assert!(
