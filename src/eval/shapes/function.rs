@@ -366,21 +366,7 @@ impl Evaluator {
             return Ok(None);
         };
         let callee = callee.clone();
-        let compiled = self.compiled_for_call(&callee, call)?;
-        if call.arguments.len() != compiled.arity() {
-            return Err(self
-                .error(
-                    call.span,
-                    format!(
-                        "function `{}` takes {} arguments, found {}",
-                        call.name,
-                        compiled.arity(),
-                        call.arguments.len()
-                    ),
-                )
-                .with_secondary(callee.literal.span, "the function is declared here")
-                .into());
-        }
+        let compiled = self.checked_callee(&callee, call)?;
         if compiled.call_depth() >= CALL_DEPTH_LIMIT {
             return Err(self
                 .error(call.span, "functions call each other too deeply")
@@ -560,13 +546,13 @@ fn output_name(output: Output) -> &'static str {
 }
 
 impl Evaluator {
-    /// Calls a user function from scene code: float arguments, and the compiled function's
-    /// float, colour or vector. A function that could not be compiled is reported here.
-    pub(crate) fn call_user_function(
+    /// The compiled form of `function` for `call`, which must pass as many arguments as the
+    /// function takes.
+    fn checked_callee(
         &mut self,
         function: &Rc<UserFunction>,
         call: &Call,
-    ) -> EvalResult<Value> {
+    ) -> EvalResult<Arc<Function>> {
         let compiled = self.compiled_for_call(function, call)?;
         if call.arguments.len() != compiled.arity() {
             return Err(self
@@ -582,6 +568,17 @@ impl Evaluator {
                 .with_secondary(function.literal.span, "the function is declared here")
                 .into());
         }
+        Ok(compiled)
+    }
+
+    /// Calls a user function from scene code: float arguments, and the compiled function's
+    /// float, colour or vector. A function that could not be compiled is reported here.
+    pub(crate) fn call_user_function(
+        &mut self,
+        function: &Rc<UserFunction>,
+        call: &Call,
+    ) -> EvalResult<Value> {
+        let compiled = self.checked_callee(function, call)?;
         let mut arguments = [0.0; MAX_PARAMETERS];
         for (index, slot) in arguments.iter_mut().enumerate().take(compiled.arity()) {
             *slot = self.argument_float(call, index)?;
