@@ -746,6 +746,7 @@ const SHAPE_FILES: &[(&str, &str)] = &[
         "shapesq.inc",
         include_str!("../../src/eval/stdlib/shapesq.inc"),
     ),
+    ("chars.inc", include_str!("../../src/eval/stdlib/chars.inc")),
 ];
 
 /// The identifiers a shape file declares (`#declare Name = ...` at the start of a line),
