@@ -151,6 +151,9 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("stars.inc", include_str!("stdlib/stars.inc")),
     ("rad_def.inc", include_str!("stdlib/rad_def.inc")),
     ("logo.inc", include_str!("stdlib/logo.inc")),
+    ("chars.inc", include_str!("stdlib/chars.inc")),
+    ("shapes3.inc", include_str!("stdlib/shapes3.inc")),
+    ("makegrass.inc", include_str!("stdlib/makegrass.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.

@@ -728,6 +728,11 @@ const SHAPE_FILES: &[(&str, &str)] = &[
         "shapesq.inc",
         include_str!("../../src/eval/stdlib/shapesq.inc"),
     ),
+    ("chars.inc", include_str!("../../src/eval/stdlib/chars.inc")),
+    (
+        "shapes3.inc",
+        include_str!("../../src/eval/stdlib/shapes3.inc"),
+    ),
 ];
 
 /// The identifiers a shape file declares (`#declare Name = ...` at the start of a line),
@@ -1173,5 +1178,198 @@ fn embedded_debug_macros_warn_and_stop() {
         find(Severity::Error, "stopped here"),
         "{:?}",
         evaluated.diagnostics
+    );
+}
+
+/// Calls of shapes3.inc's object macros that durer can also run from POV-Ray's file, each
+/// with a few argument sets, some of them out of range (which the macros correct).
+const SHAPES3_MACRO_CALLS: &[&str] = &[
+    "Pyramid_N(5, 1, 0.5, 1.5)",
+    "Pyramid_N_AB(6, <-1, 0, 0>, 1, <1, 1, 0.5>, 0.3)",
+    "Column_N(8, 1, 2)",
+    "Column_N_AB(5, <0, 0, 0>, <1, 1.5, 0>, 0.5)",
+    "Egg_Shape(1, 2)",
+    "Facetted_Sphere(4, 8)",
+    "Facetted_Egg_Shape(3, 7, 1, 1.5)",
+    "Facetted_Egg(5, 12)",
+    "Ring_Sphere(1.2, 1, 0.05, 0, 3, 6)",
+    "Round_Pyramid_N_out(5, <0, 0, 0>, 1, <0, 1.5, 0>, 0.4, 0.1, 1, 0)",
+    "Round_Pyramid_N_out(4, <0, 0, 0>, 0.4, <0.5, 1.5, 0>, 1, 0.08, 0, 1)",
+    "Round_Pyramid_N_out(3, <0, 0, 0>, 1, <0, 1.5, 0>, 0.1, 0.1, 1, 1)",
+    "Round_Pyramid_N_in(6, <0, 0, 0>, 1, <0, 1, 0>, 0.6, 0.1, 1, 0)",
+    "Rounded_Tube(1, 0.6, 0.1, 1.5, 0)",
+    "Rounded_Tube(0.5, 1, 0.5, 1, 1)",
+    "Rounded_Tube_AB(<-1, 0, 0>, <1, 1, 0>, 0.8, 0.5, 0.1, 0)",
+    "Round_Conic_Torus(1.5, 0.8, 0.4, 0.1, 0)",
+    "Round_Conic_Torus(1.5, 0.4, 0.8, 0.1, 1)",
+    "Round_Conic_Torus(-1, 0.5, 0.5, 0, 0)",
+    "Round_Conic_Prism(1.5, 0.8, 0.4, 1.2, 0.1, 0)",
+    "Round_Conic_Prism(1.5, 0.4, 0.8, 1, 0.1, 1)",
+    "Round_Conic_Prism(1, 0.5, 0.3, 1, 0, 0)",
+    "Half_Hollowed_Rounded_Cylinder1(3, 0.8, 0.1, 1, 0)",
+    "Half_Hollowed_Rounded_Cylinder1(1, 0.8, 0.1, 0.5, 1)",
+    "Half_Hollowed_Rounded_Cylinder1(3, 0.1, 0.8, 0, 0)",
+    "Half_Hollowed_Rounded_Cylinder2(3, 0.8, 0.3, 0.1, 1, 0)",
+    "Half_Hollowed_Rounded_Cylinder2(2, 0.8, 1.5, 0.1, 0.5, 1)",
+];
+
+/// Each of those makes an object rendering the same with durer's shapes3.inc and with
+/// POV-Ray's, and durer's file declares exactly POV-Ray's macros and objects.
+#[test]
+fn embedded_shapes3_macros_render_like_povray() {
+    let Some(folder) = povray_include_folder() else {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    };
+    let ours = scratch("shapes3-macros-ours");
+    let theirs = scratch("shapes3-macros-theirs");
+    let includes = "#version 3.7;\n#include \"shapes3.inc\"\n";
+    for (index, call) in SHAPES3_MACRO_CALLS.iter().enumerate() {
+        let body = format!("object {{ {call} pigment {{ rgb <1, 0.6, 0.3> }} }}");
+        let name = format!("call{index}");
+        let a = render_shape_scene(&ours, &name, includes, &body, false);
+        let b = render_shape_scene(&theirs, &name, includes, &body, true);
+        assert!(
+            a == b,
+            "{call} renders differently from POV-Ray's shapes3.inc"
+        );
+    }
+    let bytes = std::fs::read(folder.join("shapes3.inc")).expect("POV-Ray's file");
+    let text = SHAPE_FILES
+        .iter()
+        .find(|(file, _)| *file == "shapes3.inc")
+        .map(|(_, text)| *text)
+        .expect("embedded shapes3.inc");
+    assert_eq!(
+        library_names(text),
+        library_names(&String::from_utf8_lossy(&bytes))
+    );
+}
+
+/// The shapes3.inc macros durer cannot run from POV-Ray's file render
+/// tests/stdlib/shapes3.pov with durer's file like POV-Ray did with its own.
+#[test]
+fn embedded_shapes3_segments_and_tubes_render_like_povray() {
+    let path = crate::tests_folder().join("stdlib/shapes3.pov");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: false,
+        ..Default::default()
+    };
+    let evaluated = evaluate_with(&path, options);
+    let Some(mut scene) = evaluated.scene else {
+        panic!("shapes3.pov does not evaluate");
+    };
+    let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+    let reference = image::open(path.with_extension("png"))
+        .expect("shapes3.png")
+        .to_rgb8();
+    let options = durer::render::RenderOptions {
+        width: reference.width(),
+        height: reference.height(),
+        antialias: None,
+    };
+    let ours = durer::render::render(&scene, &world, &options, &|_| {});
+    let over = reference
+        .enumerate_pixels()
+        .filter(|(column, row, pixel)| {
+            let mine = ours.pixel(*column, *row).expect("same size");
+            (0..3).any(|c| mine[c].abs_diff(pixel[c]) > 24)
+        })
+        .count();
+    let total = (reference.width() * reference.height()) as usize;
+    assert!(
+        over * 50 <= total,
+        "{over} of {total} pixels differ from POV-Ray's render"
+    );
+}
+
+/// Calls of makegrass.inc's MakeBlade (inside a mesh) and MakePrairie, plain and smooth,
+/// folded and flat.
+const MAKEGRASS_CALLS: &[&str] = &[
+    "mesh { MakeBlade(false, <0, 0, 0>, 100, 20, 3, 0.3, 0.03, 0.15, <0, 1, 0>, <0, 0, 1>, 1, false, false) }",
+    "mesh { MakeBlade(true, <0.2, 0, 0>, 30, 8, 3, 0.4, 0.05, 0.2, <0, 1, 0.3>, <0, -1, 2>, 3, true, false) }",
+    "mesh { MakeBlade(true, <0, 0, 0>, 0, 5, 2.5, 0.5, 0.1, 0.3, <0.2, 1, 0>, <1, 0, 1>, 2, false, false) }",
+    "mesh { MakeBlade(false, <0, 0, 0>, 60, 6, 2.5, 0.5, 0.1, 0.3, <0, 1, 0>, <0, 0, 1>, 1, true, false) }",
+    "MakePrairie(1, 2, 1, 3, box { <-0.4, 0, -0.4>, <0.4, 0.3, 0.4> }, 779, 1, 1, false)",
+    "MakePrairie(0.8, 3, 0.5, 2, cone { 0, 0.4, y, 0 }, 12, 0.5, 0.2, false)",
+];
+
+/// MakeBlade and MakePrairie make objects rendering the same with durer's makegrass.inc
+/// and with POV-Ray's.
+#[test]
+fn embedded_makegrass_blades_render_like_povray() {
+    if povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping");
+        return;
+    }
+    let ours = scratch("makegrass-ours");
+    let theirs = scratch("makegrass-theirs");
+    let includes = "#version 3.7;\n#include \"makegrass.inc\"\n";
+    for (index, call) in MAKEGRASS_CALLS.iter().enumerate() {
+        let body = format!("object {{ {call} pigment {{ rgb <1, 0.6, 0.3> }} }}");
+        let name = format!("call{index}");
+        let a = render_shape_scene(&ours, &name, includes, &body, false);
+        let b = render_shape_scene(&theirs, &name, includes, &body, true);
+        assert!(
+            a == b,
+            "{call} renders differently from POV-Ray's makegrass.inc"
+        );
+    }
+}
+
+/// MakeGrassPatch writes the mesh files POV-Ray wrote for tests/stdlib/makegrass.pov (same
+/// random blades, numbers equal to the printed precision), and without a file it makes the
+/// mesh it would have written.
+#[test]
+fn embedded_makegrass_patches_match_povray() {
+    let folder = crate::tests_folder().join("stdlib");
+    let probe = scratch("makegrass-probe");
+    let scene = probe.join("makegrass.pov");
+    std::fs::copy(folder.join("makegrass.pov"), &scene).expect("copy probe scene");
+    evaluate_cleanly(&scene, false, "makegrass.inc");
+    let words = |text: &str| -> Vec<String> {
+        text.lines()
+            .map(|line| line.replace([',', '<', '>', '{', '}'], " "))
+            .collect()
+    };
+    for (file, recorded) in [
+        ("probe.txt", "makegrass.txt"),
+        ("smooth.txt", "makegrass_smooth.txt"),
+    ] {
+        let written = std::fs::read_to_string(probe.join(file)).expect("patch written");
+        let theirs = std::fs::read_to_string(folder.join(recorded)).expect("POV-Ray's mesh");
+        let (a, b) = (words(&written), words(&theirs));
+        assert_eq!(a.len(), b.len(), "{recorded}");
+        for (p, q) in a.iter().zip(&b) {
+            assert!(
+                probe_lines_agree(p, q),
+                "{recorded}: durer wrote `{p}`, POV-Ray `{q}`"
+            );
+        }
+    }
+
+    let dir = scratch("makegrass-patch");
+    let includes = "#version 3.7;\n#include \"makegrass.inc\"\n";
+    let call = "MakeGrassPatch(2, 4, 60, 5, 1.5, 0.1, 0.03, true, <0, 1, 0.3>, <0, -1, 2>, 3, 459, 1, 360, 3, 0.5, true, FILE, NAME)";
+    let direct = format!(
+        "object {{ {} pigment {{ rgb <1, 0.6, 0.3> }} }}",
+        call.replace("FILE", "false").replace("NAME", "\"\"")
+    );
+    let written = format!(
+        "{}\nobject {{ #include \"patch.inc\" pigment {{ rgb <1, 0.6, 0.3> }} }}",
+        call.replace("FILE", "true")
+            .replace("NAME", "\"patch.inc\"")
+    );
+    let a = render_shape_scene(&dir, "direct", includes, &direct, false);
+    let b = render_shape_scene(&dir, "written", includes, &written, false);
+    let differing = a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .filter(|(p, q)| (0..3).any(|c| p[c].abs_diff(q[c]) > 24))
+        .count();
+    assert!(
+        differing * 50 <= a.pixels.len(),
+        "the written patch renders unlike the direct one"
     );
 }
