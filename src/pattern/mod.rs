@@ -24,6 +24,7 @@ mod normals;
 mod surface;
 mod warp;
 mod wave;
+mod waves;
 
 use glam::DVec3;
 
@@ -324,8 +325,8 @@ impl PatternSpec {
             PatternKind::Bumps => normals::bumps(p, generator),
             PatternKind::Dents => normals::dents(p, generator),
             PatternKind::Wrinkles => normals::wrinkles(p, generator),
-            PatternKind::Ripples => normals::ripples(p, &self.wave, generator),
-            PatternKind::Waves => normals::waves(p, &self.wave, generator),
+            PatternKind::Ripples => normals::ripples(p, &self.wave),
+            PatternKind::Waves => normals::waves(p, &self.wave),
             PatternKind::Quilted { control0, control1 } => normals::quilted(p, control0, control1),
             _ => return None,
         };
@@ -405,7 +406,7 @@ impl PatternSpec {
                 normals::quilted_value(p, *control0, *control1)
             }
             PatternKind::Radial => geometric::radial(p),
-            PatternKind::Ripples => noise_based::ripples(p, generator),
+            PatternKind::Ripples => noise_based::ripples(p, &self.wave),
             PatternKind::Slope(slope) => slope.value(p, surface),
             PatternKind::Aoi => surface::angle_of_incidence(surface.normal, surface.ray_direction),
             PatternKind::PigmentPattern(pigment) => {
@@ -421,7 +422,7 @@ impl PatternSpec {
             PatternKind::Spiral2(arms) => {
                 geometric::spiral2(p, arms.trunc(), self.scalar_turbulence(p))
             }
-            PatternKind::Waves => noise_based::waves(p, generator),
+            PatternKind::Waves => noise_based::waves(p, &self.wave),
             PatternKind::Wood => noise_based::wood(p, turbulence, generator),
             PatternKind::Wrinkles => noise_based::wrinkles(p, generator),
             PatternKind::ImagePattern(image) => crate::render::image_map::image_value(image, p),
