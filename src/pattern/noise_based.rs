@@ -27,7 +27,7 @@ use std::f64::consts::PI;
 use glam::DVec3;
 
 use super::wave::Wave;
-use super::waves::{distance_to_centre, wave_sources, WAVE_COUNT};
+use super::waves::{distance_to_centre, WaveSource};
 use crate::noise::{noise, turbulence, NoiseGenerator, TurbulenceShape};
 
 /// The classic turbulence of a pattern, for the patterns that use it internally.
@@ -153,28 +153,29 @@ fn cycloidal(x: f64) -> f64 {
     (2.0 * PI * x).sin()
 }
 
-/// `ripples`: the mean of sine waves spreading from the wave sources, in [0, 1]. `wave`'s
+/// `ripples`: the mean of sine waves spreading from the wave sources (never empty), in
+/// [0, 1]. `wave`'s
 /// frequency scales the distances and its phase shifts them (POV-Ray applies both here and
 /// again to the result).
-pub fn ripples(point: DVec3, wave: &Wave) -> f64 {
-    let sum: f64 = wave_sources()
+pub fn ripples(point: DVec3, wave: &Wave, sources: &[WaveSource]) -> f64 {
+    let sum: f64 = sources
         .iter()
         .map(|source| cycloidal(distance_to_centre(point, source) * wave.frequency + wave.phase))
         .sum();
-    0.5 + sum / (2.0 * WAVE_COUNT as f64)
+    0.5 + sum / (2.0 * sources.len() as f64)
 }
 
 /// `waves`: like ripples, but every source has its own frequency, and its wave an
 /// amplitude inversely proportional to it.
-pub fn waves(point: DVec3, wave: &Wave) -> f64 {
-    let sum: f64 = wave_sources()
+pub fn waves(point: DVec3, wave: &Wave, sources: &[WaveSource]) -> f64 {
+    let sum: f64 = sources
         .iter()
         .map(|source| {
             let distance = distance_to_centre(point, source);
             cycloidal(distance * wave.frequency * source.frequency + wave.phase) / source.frequency
         })
         .sum();
-    0.5 + sum / (5.0 * WAVE_COUNT as f64)
+    0.5 + sum / (5.0 * sources.len() as f64)
 }
 
 /// The integer cell of a point (coordinates clamped so the conversion cannot overflow).
@@ -305,8 +306,8 @@ mod tests {
             "wrinkles" => PatternSpec::new(PatternKind::Wrinkles),
             "agate" => PatternSpec::new(PatternKind::Agate { agate_turb: 1.0 }),
             "agate_turb" => PatternSpec::new(PatternKind::Agate { agate_turb: 0.4 }),
-            "waves" => PatternSpec::new(PatternKind::Waves),
-            "ripples" => PatternSpec::new(PatternKind::Ripples),
+            "waves" => PatternSpec::new(PatternKind::Waves(Default::default())),
+            "ripples" => PatternSpec::new(PatternKind::Ripples(Default::default())),
             "cells" => PatternSpec::new(PatternKind::Cells),
             "crackle" => PatternSpec::new(PatternKind::Crackle(Crackle::default())),
             "crackle_form_metric" => {
@@ -350,8 +351,10 @@ mod tests {
                 spec.noise_generator = NoiseGenerator::Original;
                 spec
             }
-            "ripples_frequency_phase" => with_wave(PatternKind::Ripples, 3.0, 0.25),
-            "waves_frequency_phase" => with_wave(PatternKind::Waves, 0.5, 0.7),
+            "ripples_frequency_phase" => {
+                with_wave(PatternKind::Ripples(Default::default()), 3.0, 0.25)
+            }
+            "waves_frequency_phase" => with_wave(PatternKind::Waves(Default::default()), 0.5, 0.7),
             other => panic!("known_answers.txt names an unknown pattern {other}"),
         }
     }

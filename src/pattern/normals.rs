@@ -16,7 +16,7 @@ use std::f64::consts::PI;
 use glam::DVec3;
 
 use super::wave::Wave;
-use super::waves::{distance_to_centre, wave_sources, WAVE_COUNT};
+use super::waves::{distance_to_centre, WaveSource};
 use crate::noise::{noise, vector_noise, NoiseGenerator};
 
 /// `bumps`: the vector noise at the point.
@@ -46,17 +46,17 @@ pub fn wrinkles(point: DVec3, generator: NoiseGenerator) -> DVec3 {
 }
 
 /// `ripples`: the unit directions from the wave centres to the point, each weighted by
-/// `sin(2π·(d·frequency + phase))` at its distance `d`, over ten (measured).
-pub fn ripples(point: DVec3, wave: &Wave) -> DVec3 {
-    radial_waves(point, |distance, _| {
+/// `sin(2π·(d·frequency + phase))` at its distance `d` (measured).
+pub fn ripples(point: DVec3, wave: &Wave, sources: &[WaveSource]) -> DVec3 {
+    radial_waves(point, sources, |distance, _| {
         (2.0 * PI * (distance * wave.frequency + wave.phase)).sin()
     })
 }
 
 /// `waves`: like ripples with every source's own frequency `fᵢ`: weights
 /// `sin(2π·(d·fᵢ·frequency + phase)) / fᵢ` (measured).
-pub fn waves(point: DVec3, wave: &Wave) -> DVec3 {
-    radial_waves(point, |distance, source_frequency| {
+pub fn waves(point: DVec3, wave: &Wave, sources: &[WaveSource]) -> DVec3 {
+    radial_waves(point, sources, |distance, source_frequency| {
         (2.0 * PI * (distance * source_frequency * wave.frequency + wave.phase)).sin()
             / source_frequency
     })
@@ -64,14 +64,14 @@ pub fn waves(point: DVec3, wave: &Wave) -> DVec3 {
 
 /// The mean over the wave sources of the unit direction from the centre to the point times
 /// `weight(distance, source frequency)`. A point at a centre gets nothing from that source.
-fn radial_waves(point: DVec3, weight: impl Fn(f64, f64) -> f64) -> DVec3 {
+fn radial_waves(point: DVec3, sources: &[WaveSource], weight: impl Fn(f64, f64) -> f64) -> DVec3 {
     let mut sum = DVec3::ZERO;
-    for source in wave_sources() {
+    for source in sources {
         let offset = point - source.centre;
         let distance = distance_to_centre(point, source);
         sum += offset * (weight(distance, source.frequency) / distance);
     }
-    sum / WAVE_COUNT as f64
+    sum / sources.len() as f64
 }
 
 /// The cubic Bézier from 0 to 1 with control values `control0` and `control1`.
@@ -148,12 +148,14 @@ mod tests {
         let wave = Wave::new(super::super::WaveShape::Ramp);
         let generator = NoiseGenerator::default();
         let p = DVec3::new(0.3, -2.0, 5.5);
-        assert!(ripples(p, &wave).is_finite());
-        assert!(waves(p, &wave).is_finite());
+        let sources = super::super::waves::WaveSources::default();
+        let sources = sources.as_slice();
+        assert!(ripples(p, &wave, sources).is_finite());
+        assert!(waves(p, &wave, sources).is_finite());
         // A point at a wave centre gets nothing from that source.
-        let centre = super::super::waves::wave_sources()[0].centre;
-        assert!(ripples(centre, &wave).is_finite());
-        assert!(waves(centre, &wave).is_finite());
+        let centre = sources[0].centre;
+        assert!(ripples(centre, &wave, sources).is_finite());
+        assert!(waves(centre, &wave, sources).is_finite());
         assert!(quilted(p, 1.0, 1.0).is_finite());
         assert!(wrinkles(p, generator).is_finite());
     }
