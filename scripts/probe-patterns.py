@@ -40,6 +40,8 @@ PATTERNS = [
     ("gradient_turbulence_shape", "gradient x turbulence <0.8, 0.1, 0> octaves 3 omega 0.7 lambda 3"),
     ("spiral1_turbulence", "spiral1 2 turbulence 0.3"),
     ("crackle_solid_generator1", "crackle solid noise_generator 1"),
+    ("ripples_frequency_phase", "ripples frequency 3 phase 0.25"),
+    ("waves_frequency_phase", "waves frequency 0.5 phase 0.7"),
 ]
 
 

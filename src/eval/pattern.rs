@@ -5,7 +5,8 @@
 //! [`PatternSpec`] or a modification of one. Holds: the owner (appearance.rs) parses maps,
 //! block lists and transforms; everything specific to one pattern is parsed here. A
 //! pattern without its own noise generator gets the global one in force when it is parsed
-//! (`PatternSpec::use_global_noise_generator` can apply a later one).
+//! (`PatternSpec::use_global_noise_generator` can apply a later one); `ripples` and `waves`
+//! share the scene's wave sources, fixed from the last `number_of_waves` when parsing ends.
 
 use glam::{DVec2, DVec3};
 use std::sync::Arc;
@@ -86,7 +87,7 @@ impl Evaluator {
                 control1: 1.0,
             },
             "radial" => PatternKind::Radial,
-            "ripples" => PatternKind::Ripples,
+            "ripples" => PatternKind::Ripples(self.settings.wave_sources.clone()),
             "spherical" => PatternKind::Spherical,
             "spiral1" => PatternKind::Spiral1(self.expect_float(stream, "a number of arms")?),
             "spiral2" => PatternKind::Spiral2(self.expect_float(stream, "a number of arms")?),
@@ -103,7 +104,7 @@ impl Evaluator {
                 PatternKind::SquareTiles
             }
             "triangular" => PatternKind::Triangular,
-            "waves" => PatternKind::Waves,
+            "waves" => PatternKind::Waves(self.settings.wave_sources.clone()),
             "wood" => PatternKind::Wood,
             "wrinkles" => PatternKind::Wrinkles,
             _ => return Ok(None),
@@ -709,5 +710,31 @@ impl Evaluator {
                 .error(span, "the noise generator must be 0, 1, 2 or 3")
                 .into()),
         }
+    }
+}
+
+impl Evaluator {
+    /// `global_settings { number_of_waves N }`: how many wave sources the scene's `ripples`
+    /// and `waves` patterns use. As povray, N is truncated and a value
+    /// below 1 becomes 1 with a warning; durer also limits it to
+    /// [`crate::pattern::MAX_WAVE_COUNT`] (with a warning).
+    pub(crate) fn number_of_waves(&mut self, stream: &mut Stream) -> EvalResult<()> {
+        let (value, span) = self.expect_value(stream, "a number of waves")?;
+        let requested = self.to_float(value, span)?.trunc();
+        let limit = crate::pattern::MAX_WAVE_COUNT;
+        let count = if requested.is_nan() || requested < 1.0 {
+            self.warn(span, "number_of_waves must be greater than 0; 1 is used");
+            1
+        } else if requested > limit as f64 {
+            self.warn(
+                span,
+                format!("number_of_waves above {limit} is limited to {limit}"),
+            );
+            limit
+        } else {
+            requested as usize
+        };
+        self.settings.number_of_waves = count;
+        Ok(())
     }
 }

@@ -501,8 +501,9 @@ impl Evaluator {
                         self.settings.noise_generator =
                             self.expect_noise_generator(stream)?.unwrap_or_default()
                     }
-                    "charset" | "max_intersections" | "number_of_waves" | "hf_gray_16"
-                    | "irid_wavelength" | "mm_per_unit" | "subsurface" => {
+                    "number_of_waves" => self.number_of_waves(stream)?,
+                    "charset" | "max_intersections" | "hf_gray_16" | "irid_wavelength"
+                    | "mm_per_unit" | "subsurface" => {
                         self.warn(
                             *span,
                             format!("global setting `{word}` is not supported yet; it is ignored"),

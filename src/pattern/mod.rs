@@ -24,6 +24,7 @@ mod normals;
 mod surface;
 mod warp;
 mod wave;
+mod waves;
 
 use glam::DVec3;
 
@@ -38,6 +39,7 @@ pub use noise_based::{ClassicTurbulence, Crackle};
 pub use surface::{Altitude, Slope, SurfaceContext};
 pub use warp::{BlackHole, Mapping, MappingKind, Repeat, Warp};
 pub use wave::{Wave, WaveShape};
+pub use waves::{SceneWaveSources, WaveSources, MAX_WAVE_COUNT};
 
 /// A pattern with its modifiers.
 #[derive(Clone, Debug)]
@@ -150,7 +152,7 @@ pub enum PatternKind {
     /// Angle around the y axis.
     Radial,
     /// Ripples from the wave centres.
-    Ripples,
+    Ripples(SceneWaveSources),
     /// `slope { .. }`: the surface normal against a direction (needs the surface).
     Slope(Slope),
     /// `aoi`: the angle between the ray and the surface (needs the surface).
@@ -174,7 +176,7 @@ pub enum PatternKind {
     /// Triangles in the x-z plane; six blocks.
     Triangular,
     /// Broad waves from the wave centres.
-    Waves,
+    Waves(SceneWaveSources),
     /// Rings around the z axis with a triangle wave.
     Wood,
     /// Sharp 1/f noise.
@@ -324,8 +326,10 @@ impl PatternSpec {
             PatternKind::Bumps => normals::bumps(p, generator),
             PatternKind::Dents => normals::dents(p, generator),
             PatternKind::Wrinkles => normals::wrinkles(p, generator),
-            PatternKind::Ripples => normals::ripples(p, &self.wave, generator),
-            PatternKind::Waves => normals::waves(p, &self.wave, generator),
+            PatternKind::Ripples(ref sources) => {
+                normals::ripples(p, &self.wave, sources.as_slice())
+            }
+            PatternKind::Waves(ref sources) => normals::waves(p, &self.wave, sources.as_slice()),
             PatternKind::Quilted { control0, control1 } => normals::quilted(p, control0, control1),
             _ => return None,
         };
@@ -405,7 +409,9 @@ impl PatternSpec {
                 normals::quilted_value(p, *control0, *control1)
             }
             PatternKind::Radial => geometric::radial(p),
-            PatternKind::Ripples => noise_based::ripples(p, generator),
+            PatternKind::Ripples(sources) => {
+                noise_based::ripples(p, &self.wave, sources.as_slice())
+            }
             PatternKind::Slope(slope) => slope.value(p, surface),
             PatternKind::Aoi => surface::angle_of_incidence(surface.normal, surface.ray_direction),
             PatternKind::PigmentPattern(pigment) => {
@@ -421,7 +427,7 @@ impl PatternSpec {
             PatternKind::Spiral2(arms) => {
                 geometric::spiral2(p, arms.trunc(), self.scalar_turbulence(p))
             }
-            PatternKind::Waves => noise_based::waves(p, generator),
+            PatternKind::Waves(sources) => noise_based::waves(p, &self.wave, sources.as_slice()),
             PatternKind::Wood => noise_based::wood(p, turbulence, generator),
             PatternKind::Wrinkles => noise_based::wrinkles(p, generator),
             PatternKind::ImagePattern(image) => crate::render::image_map::image_value(image, p),
@@ -506,14 +512,14 @@ mod tests {
                 control1: 1.0,
             },
             PatternKind::Radial,
-            PatternKind::Ripples,
+            PatternKind::Ripples(SceneWaveSources::default()),
             PatternKind::Spherical,
             PatternKind::Spiral1(3.0),
             PatternKind::Spiral2(1e300),
             PatternKind::Square,
             PatternKind::SquareTiles,
             PatternKind::Triangular,
-            PatternKind::Waves,
+            PatternKind::Waves(SceneWaveSources::default()),
             PatternKind::Wood,
             PatternKind::Wrinkles,
         ];

@@ -17,19 +17,18 @@
 //!   27 cubes around, with `offset` a fourth coordinate of every distance
 //!   (`(Σ|dᵢ|^m + |offset|^m)^(1/m)`), the `form` combination clamped to [0, 1]; `solid`: N
 //!   at the nearest feature point (with the pattern's generator). Exact to the last bit.
-//! - ripples and waves are NOT yet exact: povray's values fit `0.5 + Σ sin(2π·dᵢ)/20` over
-//!   ten wave centres at unit distance from the origin (frequency 1, equal amplitudes), but
-//!   the centres themselves (not the normalised vector noise along z used here) are still
-//!   to be identified.
+//! - ripples: `0.5 + Σ sin(2π·(dᵢ·f + φ))/20`, waves: `0.5 + Σ sin(2π·(fᵢ·dᵢ·f + φ))/(50·fᵢ)`
+//!   over the ten sources of `waves.rs` (dᵢ the distance to centre i, fᵢ its frequency);
+//!   the pattern's `frequency` f and `phase` φ act inside the sum and then again as the
+//!   usual output wave. Exact to ~1e-15.
 
 use std::f64::consts::PI;
 
 use glam::DVec3;
 
-use crate::noise::{noise, turbulence, vector_noise, NoiseGenerator, TurbulenceShape};
-
-/// How many wave centres `ripples` and `waves` use (POV-Ray's `number_of_waves` default).
-pub const WAVE_COUNT: usize = 10;
+use super::wave::Wave;
+use super::waves::{distance_to_centre, WaveSource};
+use crate::noise::{noise, turbulence, NoiseGenerator, TurbulenceShape};
 
 /// The classic turbulence of a pattern, for the patterns that use it internally.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -154,31 +153,29 @@ fn cycloidal(x: f64) -> f64 {
     (2.0 * PI * x).sin()
 }
 
-/// The centre of wave `index` for `ripples` and `waves`: a direction taken from the vector
-/// noise along the z axis.
-fn wave_centre(index: usize, generator: NoiseGenerator) -> DVec3 {
-    let direction = vector_noise(DVec3::new(0.0, 0.0, index as f64), generator);
-    direction.try_normalize().unwrap_or(DVec3::ZERO)
+/// `ripples`: the mean of sine waves spreading from the wave sources (never empty), in
+/// [0, 1]. `wave`'s
+/// frequency scales the distances and its phase shifts them (POV-Ray applies both here and
+/// again to the result).
+pub fn ripples(point: DVec3, wave: &Wave, sources: &[WaveSource]) -> f64 {
+    let sum: f64 = sources
+        .iter()
+        .map(|source| cycloidal(distance_to_centre(point, source) * wave.frequency + wave.phase))
+        .sum();
+    0.5 + sum / (2.0 * sources.len() as f64)
 }
 
-/// `ripples`: the mean of sine waves spreading from the wave centres, in [0, 1].
-pub fn ripples(point: DVec3, generator: NoiseGenerator) -> f64 {
-    let mut sum = 0.0;
-    for index in 0..WAVE_COUNT {
-        let distance = point.distance(wave_centre(index, generator));
-        sum += cycloidal(distance);
-    }
-    0.5 + sum / (2.0 * WAVE_COUNT as f64)
-}
-
-/// `waves`: like ripples with broader crests (cosine waves, weighted by distance).
-pub fn waves(point: DVec3, generator: NoiseGenerator) -> f64 {
-    let mut sum = 0.0;
-    for index in 0..WAVE_COUNT {
-        let distance = point.distance(wave_centre(index, generator));
-        sum += (2.0 * PI * distance).cos() / (1.0 + distance);
-    }
-    0.5 + sum / (2.0 * WAVE_COUNT as f64)
+/// `waves`: like ripples, but every source has its own frequency, and its wave an
+/// amplitude inversely proportional to it.
+pub fn waves(point: DVec3, wave: &Wave, sources: &[WaveSource]) -> f64 {
+    let sum: f64 = sources
+        .iter()
+        .map(|source| {
+            let distance = distance_to_centre(point, source);
+            cycloidal(distance * wave.frequency * source.frequency + wave.phase) / source.frequency
+        })
+        .sum();
+    0.5 + sum / (5.0 * sources.len() as f64)
 }
 
 /// The integer cell of a point (coordinates clamped so the conversion cannot overflow).
@@ -295,6 +292,12 @@ mod tests {
             spec.turbulence = ClassicTurbulence { amount, shape };
             spec
         };
+        let with_wave = |kind: PatternKind, frequency: f64, phase: f64| {
+            let mut spec = PatternSpec::new(kind);
+            spec.wave.frequency = frequency;
+            spec.wave.phase = phase;
+            spec
+        };
         let default_shape = TurbulenceShape::default();
         match name {
             "bozo" => PatternSpec::new(PatternKind::Bozo),
@@ -303,8 +306,8 @@ mod tests {
             "wrinkles" => PatternSpec::new(PatternKind::Wrinkles),
             "agate" => PatternSpec::new(PatternKind::Agate { agate_turb: 1.0 }),
             "agate_turb" => PatternSpec::new(PatternKind::Agate { agate_turb: 0.4 }),
-            "waves" => PatternSpec::new(PatternKind::Waves),
-            "ripples" => PatternSpec::new(PatternKind::Ripples),
+            "waves" => PatternSpec::new(PatternKind::Waves(Default::default())),
+            "ripples" => PatternSpec::new(PatternKind::Ripples(Default::default())),
             "cells" => PatternSpec::new(PatternKind::Cells),
             "crackle" => PatternSpec::new(PatternKind::Crackle(Crackle::default())),
             "crackle_form_metric" => {
@@ -348,6 +351,10 @@ mod tests {
                 spec.noise_generator = NoiseGenerator::Original;
                 spec
             }
+            "ripples_frequency_phase" => {
+                with_wave(PatternKind::Ripples(Default::default()), 3.0, 0.25)
+            }
+            "waves_frequency_phase" => with_wave(PatternKind::Waves(Default::default()), 0.5, 0.7),
             other => panic!("known_answers.txt names an unknown pattern {other}"),
         }
     }
@@ -358,9 +365,6 @@ mod tests {
             // The spiral's own angle differs from povray's by up to 4e-5 (a constant of the
             // spiral formula in geometric.rs, not the turbulence).
             "spiral1_turbulence" => 1e-4,
-            // The wave centres of ripples and waves are not yet measured (see the header):
-            // only the [0, 1] range is checked.
-            "waves" | "ripples" => 1.0,
             _ => 1e-6,
         }
     }

@@ -8,15 +8,15 @@
 //! that, times the bump size, is added to the unflipped surface normal before normalising).
 //! bumps, dents and wrinkles are measured too (renders of `normal { PATTERN }` on a plane
 //! match povray pixel for pixel; reference scene `normal_noise_patterns`). ripples and
-//! waves follow the manual; they wait for the measured wave centres (see
-//! `noise_based.rs`).
+//! waves are measured (`scripts/probe-waves.py`: 16-bit linear renders of a plane lit from
+//! five directions match to 8e-6; reference scene `normal_waves`).
 
 use std::f64::consts::PI;
 
 use glam::DVec3;
 
-use super::noise_based::WAVE_COUNT;
 use super::wave::Wave;
+use super::waves::{distance_to_centre, WaveSource};
 use crate::noise::{noise, vector_noise, NoiseGenerator};
 
 /// `bumps`: the vector noise at the point.
@@ -45,45 +45,33 @@ pub fn wrinkles(point: DVec3, generator: NoiseGenerator) -> DVec3 {
     sum
 }
 
-/// The centre of wave `index` (shared with the ripples and waves values).
-fn wave_centre(index: usize, generator: NoiseGenerator) -> DVec3 {
-    vector_noise(DVec3::new(0.0, 0.0, index as f64), generator)
-        .try_normalize()
-        .unwrap_or(DVec3::ZERO)
-}
-
-/// `ripples`: the slopes of sine waves spreading from the wave centres (`frequency` sets
-/// their spacing, `phase` moves them outwards).
-pub fn ripples(point: DVec3, wave: &Wave, generator: NoiseGenerator) -> DVec3 {
-    radial_waves(point, wave, generator, |distance| {
-        (2.0 * PI * distance).cos()
+/// `ripples`: the unit directions from the wave centres to the point, each weighted by
+/// `sin(2π·(d·frequency + phase))` at its distance `d` (measured).
+pub fn ripples(point: DVec3, wave: &Wave, sources: &[WaveSource]) -> DVec3 {
+    radial_waves(point, sources, |distance, _| {
+        (2.0 * PI * (distance * wave.frequency + wave.phase)).sin()
     })
 }
 
-/// `waves`: like ripples with broader crests.
-pub fn waves(point: DVec3, wave: &Wave, generator: NoiseGenerator) -> DVec3 {
-    radial_waves(point, wave, generator, |distance| {
-        -(2.0 * PI * distance).sin() / (1.0 + distance)
+/// `waves`: like ripples with every source's own frequency `fᵢ`: weights
+/// `sin(2π·(d·fᵢ·frequency + phase)) / fᵢ` (measured).
+pub fn waves(point: DVec3, wave: &Wave, sources: &[WaveSource]) -> DVec3 {
+    radial_waves(point, sources, |distance, source_frequency| {
+        (2.0 * PI * (distance * source_frequency * wave.frequency + wave.phase)).sin()
+            / source_frequency
     })
 }
 
-/// Sums `slope(distance)` along the directions from the wave centres to the point.
-fn radial_waves(
-    point: DVec3,
-    wave: &Wave,
-    generator: NoiseGenerator,
-    slope: impl Fn(f64) -> f64,
-) -> DVec3 {
+/// The mean over the wave sources of the unit direction from the centre to the point times
+/// `weight(distance, source frequency)`. A point at a centre gets nothing from that source.
+fn radial_waves(point: DVec3, sources: &[WaveSource], weight: impl Fn(f64, f64) -> f64) -> DVec3 {
     let mut sum = DVec3::ZERO;
-    for index in 0..WAVE_COUNT {
-        let offset = point - wave_centre(index, generator);
-        let distance = offset.length();
-        let Some(direction) = offset.try_normalize() else {
-            continue;
-        };
-        sum += direction * slope(distance * wave.frequency + wave.phase);
+    for source in sources {
+        let offset = point - source.centre;
+        let distance = distance_to_centre(point, source);
+        sum += offset * (weight(distance, source.frequency) / distance);
     }
-    sum / WAVE_COUNT as f64
+    sum / sources.len() as f64
 }
 
 /// The cubic Bézier from 0 to 1 with control values `control0` and `control1`.
@@ -160,8 +148,14 @@ mod tests {
         let wave = Wave::new(super::super::WaveShape::Ramp);
         let generator = NoiseGenerator::default();
         let p = DVec3::new(0.3, -2.0, 5.5);
-        assert!(ripples(p, &wave, generator).is_finite());
-        assert!(waves(p, &wave, generator).is_finite());
+        let sources = super::super::waves::WaveSources::default();
+        let sources = sources.as_slice();
+        assert!(ripples(p, &wave, sources).is_finite());
+        assert!(waves(p, &wave, sources).is_finite());
+        // A point at a wave centre gets nothing from that source.
+        let centre = sources[0].centre;
+        assert!(ripples(centre, &wave, sources).is_finite());
+        assert!(waves(centre, &wave, sources).is_finite());
         assert!(quilted(p, 1.0, 1.0).is_finite());
         assert!(wrinkles(p, generator).is_finite());
     }

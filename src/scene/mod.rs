@@ -66,6 +66,11 @@ pub struct GlobalSettings {
     pub ambient_light: DVec3,
     /// The noise generator patterns use unless they name their own (default 2).
     pub noise_generator: crate::noise::NoiseGenerator,
+    /// `number_of_waves` (default 10): how many wave sources `ripples` and `waves` use.
+    pub number_of_waves: usize,
+    /// The wave sources every `ripples` and `waves` pattern of the scene shares (fixed
+    /// from `number_of_waves` when parsing ends).
+    pub wave_sources: crate::pattern::SceneWaveSources,
     /// A `radiosity { }` block was given. durer computes no indirect light, but in 3.7
     /// scenes radiosity sets every finish's ambient term to zero, and so does durer.
     pub radiosity: bool,
@@ -81,6 +86,8 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
             noise_generator: crate::noise::NoiseGenerator::default(),
+            number_of_waves: 10,
+            wave_sources: crate::pattern::SceneWaveSources::default(),
             radiosity: false,
         }
     }

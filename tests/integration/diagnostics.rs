@@ -628,3 +628,24 @@ fn mesh_camera_needs_a_mesh_per_ray() {
         &["distribution 0 needs a mesh for each of the 2 rays per pixel, found 1 meshes"],
     );
 }
+
+/// `number_of_waves` below 1 is a warning at the value (povray's rule: 1 is used).
+#[test]
+fn number_of_waves_below_one_warns_at_the_value() {
+    let path = tests_folder()
+        .join("diagnostics")
+        .join("number_of_waves_zero.pov");
+    let evaluated = evaluate(&path);
+    let warning = evaluated
+        .diagnostics
+        .iter()
+        .find(|d| d.severity == Severity::Warning && d.message.contains("number_of_waves"))
+        .unwrap_or_else(|| panic!("expected a warning, got {:?}", evaluated.diagnostics));
+    assert!(warning
+        .message
+        .contains("must be greater than 0; 1 is used"));
+    let position = evaluated
+        .sources
+        .line_column(warning.span.file, warning.span.start);
+    assert_eq!(position, (2, 35));
+}

@@ -1,0 +1,2 @@
+#version 3.7;
+global_settings { number_of_waves 0 }
