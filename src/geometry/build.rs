@@ -100,6 +100,7 @@ struct Flags {
     no_image: bool,
     no_reflection: bool,
     double_illuminate: bool,
+    light_group: Option<crate::scene::LightGroup>,
 }
 
 /// Working state of one build.
@@ -292,6 +293,10 @@ impl Builder {
         appearance.flags.no_image |= object.no_image;
         appearance.flags.no_reflection |= object.no_reflection;
         appearance.flags.double_illuminate |= object.double_illuminate;
+        // The innermost light group an object sits in decides which lights light it.
+        if object.light_group.is_some() {
+            appearance.flags.light_group = object.light_group;
+        }
         appearance
     }
 
@@ -314,6 +319,7 @@ impl Builder {
             no_reflection: appearance.flags.no_reflection,
             double_illuminate: appearance.flags.double_illuminate,
             uses_uv: texture_uses_uv(&appearance.texture),
+            light_group: appearance.flags.light_group,
         });
         self.material_of.insert(key, index);
         index

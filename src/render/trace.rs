@@ -362,6 +362,7 @@ impl<'a> Tracer<'a> {
             pigment,
             finish: &texture.finish,
             double_illuminate: material.double_illuminate,
+            light_group: material.light_group,
         };
         let settings = &self.scene.settings;
         let local = local_light(&sample, &self.lights, settings.ambient_light, self.world);

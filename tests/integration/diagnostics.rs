@@ -628,3 +628,13 @@ fn mesh_camera_needs_a_mesh_per_ray() {
         &["distribution 0 needs a mesh for each of the 2 rays per pixel, found 1 meshes"],
     );
 }
+
+#[test]
+fn global_lights_outside_a_light_group_is_refused() {
+    check(
+        "global_lights_outside_light_group",
+        2,
+        25,
+        &["`global_lights` is not allowed inside `union`"],
+    );
+}
