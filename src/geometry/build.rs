@@ -4,7 +4,8 @@
 //! their world bounds, the [`Material`] table, and the number of leaf shapes.
 //! Holds: transforms compose down the tree (a child's transform maps into its parent's local
 //! space); texture, interior and `no_shadow` are inherited from the nearest ancestor that sets
-//! them; each owning object's texture is converted to world space once and shared by every leaf
+//! them (a material's light group: the innermost group's lights, the outermost group's
+//! `global_lights`); each owning object's texture is converted to world space once and shared by every leaf
 //! that inherits it; top-level unions that are not inverted are flattened into their children,
 //! other CSG objects become trees. Inversion (by `inverse`, an inverted ancestor or being
 //! subtracted) is pushed down to the leaves and changes the kind of each CSG node on the way, as
@@ -293,9 +294,17 @@ impl Builder {
         appearance.flags.no_image |= object.no_image;
         appearance.flags.no_reflection |= object.no_reflection;
         appearance.flags.double_illuminate |= object.double_illuminate;
-        // The innermost light group an object sits in decides which lights light it.
-        if object.light_group.is_some() {
-            appearance.flags.light_group = object.light_group;
+        // Nested light groups (measured): the innermost group's lights light an object,
+        // the outermost group's `global_lights` decides whether scene lights do.
+        if let Some(group) = object.light_group {
+            let global_lights = appearance
+                .flags
+                .light_group
+                .map_or(group.global_lights, |outer| outer.global_lights);
+            appearance.flags.light_group = Some(crate::scene::LightGroup {
+                global_lights,
+                ..group
+            });
         }
         appearance
     }
