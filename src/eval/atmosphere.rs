@@ -2,7 +2,7 @@
 //!
 //! In: the items of one block. Out: an [`AtmosphericEffect`] with POV-Ray's defaults filled
 //! in. Holds: transformations are folded into the effect (fog `up` and rainbow vectors are
-//! transformed; the sky sphere and fog keep their transform for pattern lookups).
+//! transformed; the sky sphere keeps its transform for pattern lookups).
 
 use super::stream::Stream;
 use super::value::Value;
@@ -36,7 +36,6 @@ impl Evaluator {
             colour: Colour::BLACK,
             up: DVec3::Y,
             turbulence: None,
-            transform: Transform::IDENTITY,
         };
         let mut fog_type = 1.0;
         let (mut offset, mut altitude) = (0.0, 0.0);
@@ -60,13 +59,7 @@ impl Evaluator {
                     "fog_offset" => offset = self.expect_float(stream, "a float")?,
                     "fog_alt" => altitude = self.expect_float(stream, "a float")?,
                     "turb_depth" => depth = self.expect_float(stream, "a float")?,
-                    "turbulence" => {
-                        self.warn(
-                            *span,
-                            "fog `turbulence` is not applied yet; the fog is even",
-                        );
-                        turbulence = Some(self.expect_vector(stream, "a vector")?);
-                    }
+                    "turbulence" => turbulence = Some(self.expect_vector(stream, "a vector")?),
                     "octaves" => {
                         let octaves = self.expect_float(stream, "a float")?;
                         shape.octaves = octaves.clamp(1.0, 10.0) as u32;
@@ -224,10 +217,10 @@ impl Evaluator {
     }
 }
 
-/// Applies a transformation to a fog: `up` turns with it, turbulence follows it.
+/// Applies a transformation to a fog: `up` turns with it (the turbulence stays in world
+/// space, as POV-Ray's does).
 fn transform_fog(fog: &mut Fog, t: &Transform) {
     fog.up = t.vector_to_outer(fog.up);
-    fog.transform = fog.transform.then(t);
 }
 
 /// Applies a transformation to a rainbow's direction and up vectors.

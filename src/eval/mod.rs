@@ -210,6 +210,8 @@ pub(crate) struct Evaluator {
     default_texture_set: bool,
     camera: Option<Camera>,
     lights: Vec<LightSource>,
+    /// How many `light_group`s have been evaluated (the next group's id).
+    pub(crate) light_groups: u32,
     objects: Vec<Object>,
     background: Colour,
     atmosphere: Atmosphere,
@@ -241,6 +243,7 @@ impl Evaluator {
             default_texture_set: false,
             camera: None,
             lights: Vec::new(),
+            light_groups: 0,
             objects: Vec::new(),
             background: Colour::BLACK,
             atmosphere: Atmosphere::default(),

@@ -6,7 +6,7 @@ use super::texture_maps::{change_top_layer, layered, top_layer_finish};
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{CsgOperation, Interior, Object, Shape, Texture, Transform};
+use crate::scene::{CsgOperation, Interior, LightGroup, Object, Shape, Texture, Transform};
 use crate::syntax::ast::{Block, Item};
 use glam::{DAffine3, DMat3, DVec3};
 use std::rc::Rc;
@@ -38,9 +38,9 @@ impl Evaluator {
                     }
                 }
             }
-            "union" | "intersection" | "difference" | "merge" => {
+            "union" | "intersection" | "difference" | "merge" | "light_group" => {
                 let operation = match head {
-                    "union" => CsgOperation::Union,
+                    "union" | "light_group" => CsgOperation::Union,
                     "intersection" => CsgOperation::Intersection,
                     "difference" => CsgOperation::Difference,
                     _ => CsgOperation::Merge,
@@ -49,8 +49,24 @@ impl Evaluator {
                     operation,
                     children: Vec::new(),
                 });
+                // A light group is a union whose lights light only its objects.
+                let group = (head == "light_group").then(|| {
+                    self.light_groups += 1;
+                    LightGroup {
+                        id: self.light_groups,
+                        global_lights: false,
+                    }
+                });
+                object.light_group = group;
                 while let Some(item) = self.next_item(stream)? {
                     let child = match &item {
+                        Item::Keyword(word, _) if group.is_some() && &**word == "global_lights" => {
+                            let global_lights = self.optional_bool(stream)?;
+                            if let Some(group) = &mut object.light_group {
+                                group.global_lights = global_lights;
+                            }
+                            None
+                        }
                         Item::Block(b)
                             if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
                                 if &**w == "clipped_by" || &**w == "bounded_by") =>
@@ -62,11 +78,16 @@ impl Evaluator {
                             Value::Object(o) => Some(o),
                             Value::Light(light) => {
                                 // The light moves with the CSG and joins the scene where
-                                // the CSG is placed.
+                                // the CSG is placed; in a light group it lights only the
+                                // group.
+                                let mut light = Rc::unwrap_or_clone(light);
+                                if let Some(group) = group {
+                                    light.group = Some(group.id);
+                                }
                                 object
                                     .lights
                                     .get_or_insert_with(Default::default)
-                                    .push(Rc::unwrap_or_clone(light));
+                                    .push(light);
                                 None
                             }
                             other => {

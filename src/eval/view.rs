@@ -30,6 +30,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "global_settings",
     "interior",
     "intersection",
+    "light_group",
     "light_source",
     "material",
     "merge",
@@ -129,7 +130,7 @@ impl Evaluator {
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
             | "isosurface" | "height_field" | "sphere_sweep" | "bicubic_patch" | "object"
-            | "union" | "intersection" | "difference" | "merge" => {
+            | "union" | "intersection" | "difference" | "merge" | "light_group" => {
                 Ok(match self.eval_object(head, block, stream)? {
                     Some(object) => Value::Object(std::sync::Arc::new(object)),
                     None => Value::Nothing,

@@ -4,7 +4,8 @@
 //! their world bounds, the [`Material`] table, and the number of leaf shapes.
 //! Holds: transforms compose down the tree (a child's transform maps into its parent's local
 //! space); texture, interior and `no_shadow` are inherited from the nearest ancestor that sets
-//! them; each owning object's texture is converted to world space once and shared by every leaf
+//! them (a material's light group: the innermost group's lights, the outermost group's
+//! `global_lights`); each owning object's texture is converted to world space once and shared by every leaf
 //! that inherits it; top-level unions that are not inverted are flattened into their children,
 //! other CSG objects become trees. Inversion (by `inverse`, an inverted ancestor or being
 //! subtracted) is pushed down to the leaves and changes the kind of each CSG node on the way, as
@@ -100,6 +101,7 @@ struct Flags {
     no_image: bool,
     no_reflection: bool,
     double_illuminate: bool,
+    light_group: Option<crate::scene::LightGroup>,
 }
 
 /// Working state of one build.
@@ -292,6 +294,18 @@ impl Builder {
         appearance.flags.no_image |= object.no_image;
         appearance.flags.no_reflection |= object.no_reflection;
         appearance.flags.double_illuminate |= object.double_illuminate;
+        // Nested light groups (measured): the innermost group's lights light an object,
+        // the outermost group's `global_lights` decides whether scene lights do.
+        if let Some(group) = object.light_group {
+            let global_lights = appearance
+                .flags
+                .light_group
+                .map_or(group.global_lights, |outer| outer.global_lights);
+            appearance.flags.light_group = Some(crate::scene::LightGroup {
+                global_lights,
+                ..group
+            });
+        }
         appearance
     }
 
@@ -314,6 +328,7 @@ impl Builder {
             no_reflection: appearance.flags.no_reflection,
             double_illuminate: appearance.flags.double_illuminate,
             uses_uv: texture_uses_uv(&appearance.texture),
+            light_group: appearance.flags.light_group,
         });
         self.material_of.insert(key, index);
         index

@@ -115,4 +115,6 @@ pub struct Material {
     pub double_illuminate: bool,
     /// The texture evaluates a pigment at uv coordinates (`uv_mapping`), so hits need them.
     pub uses_uv: bool,
+    /// The `light_group` the material's object sits in (its lights and `global_lights`).
+    pub light_group: Option<crate::scene::LightGroup>,
 }

@@ -21,7 +21,7 @@ use super::area_light::{point_random, AreaArray, Sampled};
 use super::iridescence::iridescence;
 use super::lights::{incoming, light_filter, Incoming, SceneLight};
 use crate::geometry::World;
-use crate::scene::{Colour, Finish};
+use crate::scene::{Colour, Finish, LightGroup};
 use glam::DVec3;
 use std::f64::consts::FRAC_PI_2;
 use std::ops::{Add, Div};
@@ -44,6 +44,8 @@ pub struct SurfaceSample<'a> {
     pub finish: &'a Finish,
     /// `double_illuminate`: lights behind the surface light it as if in front.
     pub double_illuminate: bool,
+    /// The light group of the surface: which lights light it.
+    pub light_group: Option<LightGroup>,
 }
 
 /// Light leaving a surface point towards the viewer, before transparency and reflection.
@@ -104,6 +106,9 @@ pub fn local_light(
         0.0
     };
     for light in lights {
+        if !LightGroup::lights(light.source.group, sample.light_group) {
+            continue;
+        }
         let Some(arriving) = incoming(&light.source, sample.point) else {
             continue;
         };

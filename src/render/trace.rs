@@ -167,7 +167,8 @@ impl<'a> Tracer<'a> {
             max_trace_level: settings.max_trace_level.clamp(1, TRACE_LEVEL_LIMIT),
             adc_bailout,
             atmosphere: AtmosphereShader::new(&scene.atmosphere, scene.background.rgb_vec())
-                .with_legacy_sky_layers(super::encoding::is_legacy_scene(&scene.settings)),
+                .with_legacy_sky_layers(super::encoding::is_legacy_scene(&scene.settings))
+                .with_noise_generator(settings.noise_generator),
             legacy_opacity: is_legacy_scene(settings),
             lights: prepare_lights(scene),
             any_no_image: world.materials.iter().any(|m| m.no_image),
@@ -361,6 +362,7 @@ impl<'a> Tracer<'a> {
             pigment,
             finish: &texture.finish,
             double_illuminate: material.double_illuminate,
+            light_group: material.light_group,
         };
         let settings = &self.scene.settings;
         let local = local_light(&sample, &self.lights, settings.ambient_light, self.world);

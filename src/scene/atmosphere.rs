@@ -51,10 +51,9 @@ pub struct Fog {
     pub colour: Colour,
     /// The direction heights are measured along (transformed, not normalised).
     pub up: DVec3,
-    /// Turbulence stirring the fog's density, if any.
+    /// Turbulence stirring the fog's density, if any (looked up in world space: measured,
+    /// POV-Ray's fog transformations turn `up` but do not move the turbulence).
     pub turbulence: Option<FogTurbulence>,
-    /// Maps fog space (where turbulence is looked up) into world space.
-    pub transform: Transform,
 }
 
 /// A fog's `turbulence` with its parameters.
@@ -62,7 +61,7 @@ pub struct Fog {
 pub struct FogTurbulence {
     /// The turbulence amount per axis.
     pub amount: DVec3,
-    /// `turb_depth`: where along the ray (as a fraction of the distance) turbulence is read.
+    /// `turb_depth`: scales the turbulence value before it thins the fog.
     pub depth: f64,
     /// Octaves, omega and lambda.
     pub shape: TurbulenceShape,

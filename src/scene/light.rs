@@ -38,6 +38,9 @@ pub struct LightSource {
     /// `media_attenuation` (default off): whether media along shadow rays dim this light.
     /// durer has no media, so this changes nothing yet.
     pub media_attenuation: bool,
+    /// The id of the `light_group` the light was written in (it lights only that group's
+    /// objects); `None` for a scene light.
+    pub group: Option<u32>,
 }
 
 impl LightSource {
@@ -56,6 +59,7 @@ impl LightSource {
             looks_like: None,
             media_interaction: true,
             media_attenuation: false,
+            group: None,
         }
     }
 

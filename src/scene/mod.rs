@@ -9,6 +9,7 @@ mod colour;
 mod finish;
 mod implicit;
 mod light;
+mod light_group;
 mod mesh;
 mod texture;
 mod transform;
@@ -22,6 +23,7 @@ pub use colour::Colour;
 pub use finish::{Finish, Interior, Irid};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
 pub use light::{AreaLight, LightSource, Spotlight};
+pub use light_group::LightGroup;
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
@@ -128,6 +130,9 @@ pub struct Object {
     /// it, and evaluation adds them to the scene's lights wherever the object is placed
     /// (boxed: almost no object has any).
     pub lights: Option<Box<Vec<LightSource>>>,
+    /// The `light_group` this object is (the root of every object written in the group):
+    /// only the group's lights, and with `global_lights on` the scene's, light it.
+    pub light_group: Option<LightGroup>,
 }
 
 impl Object {
@@ -147,6 +152,7 @@ impl Object {
             no_reflection: false,
             double_illuminate: false,
             lights: None,
+            light_group: None,
         }
     }
 

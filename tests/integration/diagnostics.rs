@@ -649,3 +649,13 @@ fn number_of_waves_below_one_warns_at_the_value() {
         .line_column(warning.span.file, warning.span.start);
     assert_eq!(position, (2, 35));
 }
+
+#[test]
+fn global_lights_outside_a_light_group_is_refused() {
+    check(
+        "global_lights_outside_light_group",
+        2,
+        25,
+        &["`global_lights` is not allowed inside `union`"],
+    );
+}

@@ -1,0 +1,2 @@
+// global_lights belongs to light_group only
+union { sphere { 0, 1 } global_lights }
