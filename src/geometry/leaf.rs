@@ -2,7 +2,8 @@
 //!
 //! In: a [`Shape`] (not CSG), the object's world-from-local transform, a material index
 //! and the inverse flag. Out: a compact [`Leaf`] answering ray intersections, inside tests and
-//! world-space outward normals, plus its world bounds.
+//! hit details (world-space outward normal, uv coordinates, a mesh triangle's corner blend),
+//! plus its world bounds.
 //! Holds: transforms that a shape can absorb (any affine map for planes and triangles, a
 //! similarity for spheres, an axis scaling plus translation for boxes) are baked into the shape
 //! at build time; otherwise the leaf keeps only the world-to-local map. A degenerate shape or
