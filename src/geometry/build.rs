@@ -278,13 +278,8 @@ impl Builder {
     ) -> Appearance {
         let mut appearance = inherited.clone();
         if let Some(texture) = &object.texture {
-            if texture.depends_on_position() && *world_from_local != Transform::IDENTITY {
-                appearance.texture = Arc::new(texture_to_world(texture, world_from_local));
-                appearance.texture_key = TextureKey::Owned(self.new_owner());
-            } else {
-                appearance.texture = Arc::clone(texture);
-                appearance.texture_key = TextureKey::Shared(Arc::as_ptr(texture) as usize);
-            }
+            (appearance.texture, appearance.texture_key) =
+                self.placed_texture(texture, world_from_local);
         }
         if let Some(interior) = &object.interior {
             appearance.interior = Arc::new(Interior::clone(interior));
@@ -307,6 +302,23 @@ impl Builder {
             });
         }
         appearance
+    }
+
+    /// `texture` as used by an object placed with `world_from_local`, and the key materials
+    /// share it by: one that depends on position and is moved gets its own world-space copy;
+    /// any other is shared by every object that uses the same texture.
+    fn placed_texture(
+        &mut self,
+        texture: &Arc<Texture>,
+        world_from_local: &Transform,
+    ) -> (Arc<Texture>, TextureKey) {
+        if texture.depends_on_position() && *world_from_local != Transform::IDENTITY {
+            let placed = Arc::new(texture_to_world(texture, world_from_local));
+            (placed, TextureKey::Owned(self.new_owner()))
+        } else {
+            let key = TextureKey::Shared(Arc::as_ptr(texture) as usize);
+            (Arc::clone(texture), key)
+        }
     }
 
     /// The material index for an appearance, creating the material on first use.
@@ -345,7 +357,7 @@ impl Builder {
     }
 
     /// The material of each texture slot of a mesh placed with `appearance`: the object's
-    /// own first, then one per triangle texture (converted to world space like the object's).
+    /// own first, then one per triangle texture (placed like the object's, so shared alike).
     fn mesh_materials(
         &mut self,
         mesh: &Mesh,
@@ -355,8 +367,7 @@ impl Builder {
         let mut materials = vec![self.material(appearance)];
         for texture in &mesh.textures {
             let mut own = appearance.clone();
-            own.texture = Arc::new(texture_to_world(texture, world_from_local));
-            own.texture_key = TextureKey::Owned(self.new_owner());
+            (own.texture, own.texture_key) = self.placed_texture(texture, world_from_local);
             materials.push(self.material(&own));
         }
         materials.into_boxed_slice()
@@ -552,17 +563,11 @@ impl Builder {
             }
             shape => {
                 let material = self.material(&appearance);
-                // A mesh's textured triangles keep their own (first corner's) texture here.
+                // A mesh's triangles keep their corners' uv coordinates and materials.
                 let pieces: Vec<(LocalShape, u32)> = match shape {
-                    Shape::Mesh(mesh) if !mesh.face_textures.is_empty() => {
+                    Shape::Mesh(mesh) => {
                         let materials = self.mesh_materials(mesh, &appearance, &world_from_local);
-                        LocalShape::mesh_pieces(mesh)
-                            .into_iter()
-                            .map(|(piece, slot)| {
-                                let own = materials.get(slot as usize).copied();
-                                (piece, own.unwrap_or(material))
-                            })
-                            .collect()
+                        LocalShape::mesh_pieces(mesh, &materials)
                     }
                     _ => LocalShape::pieces(shape)
                         .into_iter()

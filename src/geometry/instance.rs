@@ -14,7 +14,7 @@
 use super::flat::triangle_crossing;
 use super::polygon::interpolated_normal;
 use super::uv::{barycentric, corner_weighted};
-use super::{CornerBlend, Ray};
+use super::{HitDetails, Ray};
 use crate::accel::{Aabb, Bvh};
 use crate::scene::{Mesh, Transform, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 use glam::{DAffine3, DVec2, DVec3};
@@ -41,17 +41,6 @@ pub struct MeshGeometry {
     corner_uvs: Vec<[[f32; 2]; 3]>,
     /// Empty, or for each triangle the texture slots of its corners (0: the object's texture).
     corner_slots: Vec<[u32; 3]>,
-}
-
-/// What a hit on a mesh adds to the bare hit: uv coordinates and blended corner textures.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct MeshSurface {
-    /// The uv coordinates at the point (`None` when no material uses them).
-    pub uv: Option<DVec2>,
-    /// The material at the point (the first corner's when the corners differ).
-    pub material: u32,
-    /// The corners' materials and weights, when they differ.
-    pub corner_blend: Option<CornerBlend>,
 }
 
 impl MeshGeometry {
@@ -136,10 +125,17 @@ impl MeshGeometry {
         triangle_crossing(a, b - a, c - a, origin, direction)
     }
 
-    /// The local normal (any length) of triangle `index` at the local `point`: interpolated
-    /// for a smooth triangle (a zero corner normal stands for the flat one).
-    fn normal(&self, index: usize, point: DVec3) -> DVec3 {
-        let corners = self.corners(index);
+    /// True when triangle `index` interpolates corner normals.
+    fn is_smooth(&self, index: usize) -> bool {
+        self.smooth
+            .get(index)
+            .is_some_and(|indices| indices[0] != FLAT_FACE)
+    }
+
+    /// The local normal (any length) of triangle `index` with `corners` at the point with
+    /// barycentric `weights`: interpolated for a smooth triangle (a zero corner normal stands
+    /// for the flat one).
+    fn normal(&self, index: usize, corners: [DVec3; 3], weights: [f64; 3]) -> DVec3 {
         let [a, b, c] = corners;
         let flat = (b - a).cross(c - a);
         match self.smooth.get(index) {
@@ -153,7 +149,7 @@ impl MeshGeometry {
                         normal
                     }
                 });
-                interpolated_normal(corners, normals, point)
+                interpolated_normal(normals, weights, flat)
             }
             _ => flat,
         }
@@ -208,44 +204,44 @@ impl MeshInstance {
         self.materials[0]
     }
 
-    /// The material, uv coordinates and corner blend at the world `point` on triangle
-    /// `triangle` (as [`MeshInstance::nearest`] returned it).
-    pub fn surface(&self, triangle: u32, point: DVec3) -> MeshSurface {
+    /// The unit outward world normal, material, uv coordinates and corner blend at the
+    /// world `point` on triangle `triangle` (as [`MeshInstance::nearest`] returned it): the
+    /// point is mapped and the barycentric weights computed once, and only when needed.
+    pub fn hit_details(&self, triangle: u32, point: DVec3) -> HitDetails {
         let geometry = &*self.geometry;
         let index = triangle as usize;
-        let plain = MeshSurface {
-            uv: None,
-            material: self.materials[0],
-            corner_blend: None,
-        };
-        if (geometry.corner_slots.is_empty() && !self.needs_uv) || index >= geometry.len() {
-            return plain;
+        if index >= geometry.len() {
+            return HitDetails::plain(DVec3::Z, self.materials[0]);
         }
-        let local = self.local_from_world.transform_point3(point);
-        let weights = barycentric(geometry.corners(index), local);
-        let uv = if !self.needs_uv {
-            None
-        } else if let Some(uvs) = geometry.corner_uvs.get(index) {
-            let corner_uvs = uvs.map(|[u, v]| DVec2::new(f64::from(u), f64::from(v)));
-            Some(corner_weighted(corner_uvs, weights))
+        let corners = geometry.corners(index);
+        let needs_weights =
+            self.needs_uv || !geometry.corner_slots.is_empty() || geometry.is_smooth(index);
+        let weights = if needs_weights {
+            barycentric(corners, self.local_from_world.transform_point3(point))
         } else {
-            Some(corner_weighted(DEFAULT_TRIANGLE_UVS, weights))
+            [1.0, 0.0, 0.0]
         };
+        let local_normal = geometry.normal(index, corners, weights);
+        let normal = (self.local_from_world.matrix3.transpose() * local_normal)
+            .try_normalize()
+            .unwrap_or(DVec3::Z);
+        let uv = self.needs_uv.then(|| {
+            let corner_uvs = geometry
+                .corner_uvs
+                .get(index)
+                .map_or(DEFAULT_TRIANGLE_UVS, |uvs| {
+                    uvs.map(|[u, v]| DVec2::new(f64::from(u), f64::from(v)))
+                });
+            corner_weighted(corner_uvs, weights)
+        });
         let slots = geometry.corner_slots.get(index).copied().unwrap_or([0; 3]);
-        let slot_material = |slot: u32| -> u32 {
+        let materials = slots.map(|slot| {
             self.materials
                 .get(slot as usize)
                 .copied()
                 .unwrap_or(self.materials[0])
-        };
-        let materials = slots.map(slot_material);
-        let corner_blend = (materials[0] != materials[1] || materials[0] != materials[2])
-            .then_some(CornerBlend { materials, weights });
-        MeshSurface {
-            uv,
-            material: materials[0],
-            corner_blend,
-        }
+        });
+        HitDetails::blended(normal, materials, weights, uv)
     }
 
     /// True when the world `point` is inside the mesh: a mesh with an `inside_vector` is
@@ -287,13 +283,5 @@ impl MeshInstance {
                 (distance > min_distance && distance < limit).then_some((distance, at as u32))
             },
         )
-    }
-
-    /// The unit outward world normal at the world `point` on triangle `triangle`.
-    pub fn normal(&self, triangle: u32, point: DVec3) -> DVec3 {
-        let local = self.local_from_world.transform_point3(point);
-        let normal = self.local_from_world.matrix3.transpose()
-            * self.geometry.normal(triangle as usize, local);
-        normal.try_normalize().unwrap_or(DVec3::Z)
     }
 }

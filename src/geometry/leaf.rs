@@ -2,7 +2,8 @@
 //!
 //! In: a [`Shape`] (not CSG), the object's world-from-local transform, a material index
 //! and the inverse flag. Out: a compact [`Leaf`] answering ray intersections, inside tests and
-//! world-space outward normals, plus its world bounds.
+//! hit details (world-space outward normal, uv coordinates, a mesh triangle's corner blend),
+//! plus its world bounds.
 //! Holds: transforms that a shape can absorb (any affine map for planes and triangles, a
 //! similarity for spheres, an axis scaling plus translation for boxes) are baked into the shape
 //! at build time; otherwise the leaf keeps only the world-to-local map. A degenerate shape or
@@ -23,8 +24,8 @@ use super::sor::Sor;
 use super::sphere_sweep::SphereSweep;
 use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
-use super::uv::shape_uv;
-use super::Ray;
+use super::uv::{barycentric, corner_weighted, shape_uv};
+use super::{HitDetails, Ray};
 use crate::accel::Aabb;
 use crate::scene::{Mesh, MeshTriangle, Shape, Transform};
 use glam::{DAffine3, DVec2, DVec3};
@@ -52,6 +53,8 @@ pub enum LocalShape {
     Triangle(Triangle),
     /// A triangle with interpolated normals.
     SmoothTriangle(Box<SmoothTriangle>),
+    /// A mesh triangle with its corners' uv coordinates and materials.
+    MeshFace(Box<MeshFace>),
     /// A polygon.
     Polygon(Box<Polygon>),
     /// A polynomial surface.
@@ -72,6 +75,39 @@ pub enum LocalShape {
     HeightField(Box<HeightField>),
     /// A sphere sweep.
     SphereSweep(Box<SphereSweep>),
+}
+
+/// A triangle of a mesh (or bicubic patch) placed on its own, as in CSG: it keeps the uv
+/// coordinates and materials of its corners, so uv mapping and corner texture blending work
+/// as on a whole mesh.
+#[derive(Clone, Debug)]
+pub struct MeshFace {
+    /// The triangle: [`LocalShape::Triangle`] or [`LocalShape::SmoothTriangle`].
+    triangle: LocalShape,
+    /// The uv coordinates of the corners.
+    corner_uvs: [DVec2; 3],
+    /// The material of each corner.
+    corner_materials: [u32; 3],
+}
+
+impl MeshFace {
+    /// The corners of the triangle.
+    fn corners(&self) -> [DVec3; 3] {
+        match &self.triangle {
+            LocalShape::SmoothTriangle(triangle) => triangle.corners(),
+            LocalShape::Triangle(triangle) => triangle.corners(),
+            _ => [DVec3::ZERO; 3],
+        }
+    }
+
+    /// The normal (any length) at the point with barycentric `weights`.
+    fn normal_at_weights(&self, weights: [f64; 3]) -> DVec3 {
+        match &self.triangle {
+            LocalShape::SmoothTriangle(triangle) => triangle.normal_at_weights(weights),
+            LocalShape::Triangle(triangle) => triangle.normal(),
+            _ => DVec3::Z,
+        }
+    }
 }
 
 /// Which points count as inside a shape, beyond its surface bounds.
@@ -170,24 +206,38 @@ impl LocalShape {
         shape.unwrap_or(LocalShape::Empty)
     }
 
-    /// The triangles of a mesh that are not degenerate, each with its texture slot (that of
-    /// its first corner; 0 is the mesh object's own texture).
-    pub fn mesh_pieces(mesh: &Mesh) -> Vec<(LocalShape, u32)> {
+    /// The triangles of a mesh that are not degenerate, as [`LocalShape::MeshFace`]s, each
+    /// with the material of its first corner. `slot_materials` holds the material of each
+    /// texture slot (0: the mesh object's own; a missing slot falls back to it).
+    pub fn mesh_pieces(mesh: &Mesh, slot_materials: &[u32]) -> Vec<(LocalShape, u32)> {
+        let Some(&own) = slot_materials.first() else {
+            return Vec::new();
+        };
+        let material = |slot: u32| slot_materials.get(slot as usize).copied().unwrap_or(own);
         (0..mesh.len())
-            .map(|face| {
-                let piece = Self::from_mesh_triangle(&mesh.triangle(face));
-                (piece, mesh.corner_textures(face)[0])
+            .filter_map(|face| {
+                let triangle = Self::from_mesh_triangle(&mesh.triangle(face));
+                if matches!(triangle, LocalShape::Empty) {
+                    return None;
+                }
+                let corner_materials = mesh.corner_textures(face).map(material);
+                let piece = LocalShape::MeshFace(Box::new(MeshFace {
+                    triangle,
+                    corner_uvs: mesh.corner_uvs(face),
+                    corner_materials,
+                }));
+                Some((piece, corner_materials[0]))
             })
-            .filter(|(piece, _)| !matches!(piece, LocalShape::Empty))
             .collect()
     }
 
     /// The leaf shapes a scene shape becomes: one per mesh triangle, else one.
     pub fn pieces(shape: &Shape) -> Vec<LocalShape> {
         match shape {
-            Shape::Mesh(mesh) => Self::mesh_pieces(mesh)
-                .into_iter()
-                .map(|(piece, _)| piece)
+            Shape::Mesh(mesh) => mesh
+                .triangles()
+                .map(|triangle| Self::from_mesh_triangle(&triangle))
+                .filter(|piece| !matches!(piece, LocalShape::Empty))
                 .collect(),
             Shape::Text(glyphs) => glyphs
                 .iter()
@@ -204,7 +254,10 @@ impl LocalShape {
     pub fn has_no_inside(&self) -> bool {
         matches!(
             self,
-            LocalShape::Triangle(_) | LocalShape::SmoothTriangle(_) | LocalShape::Polygon(_)
+            LocalShape::Triangle(_)
+                | LocalShape::SmoothTriangle(_)
+                | LocalShape::MeshFace(_)
+                | LocalShape::Polygon(_)
         )
     }
 
@@ -222,6 +275,7 @@ impl LocalShape {
             LocalShape::Quadric(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Triangle(shape) => shape.intersect(origin, direction, roots),
             LocalShape::SmoothTriangle(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::MeshFace(face) => face.triangle.intersect(origin, direction, roots),
             LocalShape::Polygon(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Poly(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Extrusion(shape) => shape.intersect(origin, direction, roots),
@@ -238,7 +292,7 @@ impl LocalShape {
     /// True when the local `point` is inside the shape.
     pub fn inside(&self, point: DVec3) -> bool {
         match self {
-            LocalShape::Empty => false,
+            LocalShape::Empty | LocalShape::MeshFace(_) => false,
             LocalShape::Sphere(shape) => shape.inside(point),
             LocalShape::Cuboid(shape) => shape.inside(point),
             LocalShape::Plane(shape) => shape.inside(point),
@@ -273,6 +327,7 @@ impl LocalShape {
             LocalShape::Quadric(shape) => shape.normal(point),
             LocalShape::Triangle(shape) => shape.normal(),
             LocalShape::SmoothTriangle(shape) => shape.normal(point),
+            LocalShape::MeshFace(face) => face.triangle.normal(point, part),
             LocalShape::Polygon(shape) => shape.normal(),
             LocalShape::Poly(shape) => shape.normal(point),
             LocalShape::Extrusion(shape) => shape.normal(point, part),
@@ -298,6 +353,7 @@ impl LocalShape {
             LocalShape::Disc(shape) => Some(shape.bounds()),
             LocalShape::Triangle(shape) => Some(shape.bounds()),
             LocalShape::SmoothTriangle(shape) => Some(shape.bounds()),
+            LocalShape::MeshFace(face) => face.triangle.bounds(),
             LocalShape::Polygon(shape) => Some(shape.bounds()),
             LocalShape::Extrusion(shape) => Some(shape.bounds()),
             LocalShape::Lathe(shape) => Some(shape.bounds()),
@@ -323,6 +379,7 @@ impl LocalShape {
             LocalShape::SmoothTriangle(triangle) => {
                 Some(Aabb::from_points(triangle.corners().map(map)))
             }
+            LocalShape::MeshFace(face) => face.triangle.pov_bounds(world_from_local),
             // POV-Ray leaves a height field out of the box of a CSG intersection (measured with
             // min_extent): its inside reaches down without limit.
             LocalShape::HeightField(_) => None,
@@ -338,6 +395,7 @@ impl LocalShape {
             LocalShape::Empty
             | LocalShape::Triangle(_)
             | LocalShape::SmoothTriangle(_)
+            | LocalShape::MeshFace(_)
             | LocalShape::Polygon(_) => InsideReach::Nowhere,
             LocalShape::Plane(_)
             | LocalShape::Quadric(_)
@@ -369,6 +427,14 @@ impl LocalShape {
                     .transformed(world_from_local)
                     .map_or(LocalShape::Empty, |t| Self::SmoothTriangle(Box::new(t))),
             ),
+            LocalShape::MeshFace(face) => {
+                let triangle = face.triangle.absorbing(world_from_local)?;
+                Some(if matches!(triangle, LocalShape::Empty) {
+                    LocalShape::Empty
+                } else {
+                    LocalShape::MeshFace(Box::new(MeshFace { triangle, ..**face }))
+                })
+            }
             LocalShape::Sphere(sphere) => {
                 let gram = matrix.transpose() * matrix;
                 let scale_squared = gram.x_axis.x;
@@ -558,21 +624,24 @@ impl Leaf {
     /// True when the world `point` is inside the leaf (inverse applied).
     #[inline]
     pub fn inside(&self, point: DVec3) -> bool {
-        let local = match &self.local_from_world {
-            None => point,
-            Some(map) => map.transform_point3(point),
-        };
-        self.shape.inside(local) != self.inverse
+        self.shape.inside(self.local_point(point)) != self.inverse
     }
 
-    /// The unit outward world normal at the world surface `point` (flipped when inverse).
-    pub fn normal(&self, point: DVec3, part: u8) -> DVec3 {
+    /// The world `point` in the shape's own space.
+    #[inline]
+    fn local_point(&self, point: DVec3) -> DVec3 {
+        match &self.local_from_world {
+            None => point,
+            Some(map) => map.transform_point3(point),
+        }
+    }
+
+    /// The unit outward world normal for the shape's own `local` normal (flipped when
+    /// inverse).
+    fn world_normal(&self, local: DVec3) -> DVec3 {
         let normal = match &self.local_from_world {
-            None => self.shape.normal(point, part),
-            Some(map) => {
-                let local = self.shape.normal(map.transform_point3(point), part);
-                map.matrix3.transpose() * local
-            }
+            None => local,
+            Some(map) => map.matrix3.transpose() * local,
         };
         let normal = normal.try_normalize().unwrap_or(DVec3::Z);
         if self.inverse {
@@ -582,14 +651,37 @@ impl Leaf {
         }
     }
 
-    /// The uv coordinates at the world surface `point` (surface part `part`); `None` for
-    /// shapes without uv coordinates.
-    pub fn uv(&self, point: DVec3, part: u8) -> Option<DVec2> {
-        let local = match &self.local_from_world {
-            None => point,
-            Some(map) => map.transform_point3(point),
-        };
-        shape_uv(&self.shape, local, part)
+    #[cfg(test)]
+    /// The unit outward world normal at the world surface `point` (flipped when inverse).
+    pub fn normal(&self, point: DVec3, part: u8) -> DVec3 {
+        self.world_normal(self.shape.normal(self.local_point(point), part))
+    }
+
+    /// The normal, material, uv coordinates and corner blend at the world surface `point`
+    /// (surface part `part`); uv coordinates only when `uses_uv` says a material the point
+    /// shows needs them, and only for shapes that have them.
+    pub fn hit_details(&self, point: DVec3, part: u8, uses_uv: impl Fn(u32) -> bool) -> HitDetails {
+        let local = self.local_point(point);
+        match &self.shape {
+            LocalShape::MeshFace(face) => {
+                let weights = barycentric(face.corners(), local);
+                let normal = self.world_normal(face.normal_at_weights(weights));
+                let materials = face.corner_materials;
+                let uv = materials
+                    .iter()
+                    .any(|&material| uses_uv(material))
+                    .then(|| corner_weighted(face.corner_uvs, weights));
+                HitDetails::blended(normal, materials, weights, uv)
+            }
+            shape => {
+                let normal = self.world_normal(shape.normal(local, part));
+                let mut details = HitDetails::plain(normal, self.material);
+                if uses_uv(self.material) {
+                    details.uv = shape_uv(shape, local, part);
+                }
+                details
+            }
+        }
     }
 
     /// True for a leaf that nothing can hit.

@@ -98,6 +98,47 @@ pub struct CornerBlend {
     pub weights: [f64; 3],
 }
 
+/// What a hit adds to its distance and point: the normal and the surface's appearance there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HitDetails {
+    /// The unit outward world normal.
+    pub normal: DVec3,
+    /// The material at the point (the first corner's when a triangle's corners differ).
+    pub material: u32,
+    /// The uv coordinates (`None` when no material uses them or the shape has none).
+    pub uv: Option<DVec2>,
+    /// The corners' materials and weights, when a triangle's corners differ.
+    pub corner_blend: Option<CornerBlend>,
+}
+
+impl HitDetails {
+    /// A hit with one material and no uv coordinates.
+    pub fn plain(normal: DVec3, material: u32) -> HitDetails {
+        HitDetails {
+            normal,
+            material,
+            uv: None,
+            corner_blend: None,
+        }
+    }
+
+    /// A hit on a triangle whose corners have `materials`, at barycentric `weights`.
+    pub fn blended(
+        normal: DVec3,
+        materials: [u32; 3],
+        weights: [f64; 3],
+        uv: Option<DVec2>,
+    ) -> HitDetails {
+        let differ = materials[0] != materials[1] || materials[0] != materials[2];
+        HitDetails {
+            normal,
+            material: materials[0],
+            uv,
+            corner_blend: differ.then_some(CornerBlend { materials, weights }),
+        }
+    }
+}
+
 /// The appearance and interior shared by the leaves that inherit them from one object.
 #[derive(Clone, Debug)]
 pub struct Material {

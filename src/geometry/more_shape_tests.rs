@@ -163,3 +163,69 @@ fn mesh_instances_share_geometry_and_keep_their_transforms() {
     assert_eq!(found.len(), 1);
     assert!((found[0] - 8.0).abs() < 1e-9);
 }
+
+/// A one-triangle mesh in the z = 0 plane whose corners have uv coordinates and the texture
+/// slots 1, 2, 1 (two marked textures), with a uv-mapped texture of its own.
+fn textured_triangle_mesh() -> Arc<Mesh> {
+    use super::test_support::marked_texture;
+    use crate::scene::{Colour, Pigment, Texture};
+    let mut mesh = Mesh::from_triangles(&[MeshTriangle {
+        corners: [
+            DVec3::new(-1.0, -1.0, 0.0),
+            DVec3::new(1.0, -1.0, 0.0),
+            DVec3::new(-1.0, 1.0, 0.0),
+        ],
+        normals: None,
+    }]);
+    mesh.uvs = vec![DVec2::ZERO, DVec2::new(4.0, 0.0), DVec2::new(0.0, 2.0)];
+    mesh.face_uvs = vec![[0, 1, 2]];
+    mesh.face_textures = vec![[1, 2, 1]];
+    let uv_mapped = Arc::new(Texture {
+        pigment: Pigment::UvMapped(Box::new(Pigment::Solid(Colour::rgb(0.5, 0.0, 0.0)))),
+        ..Texture::default()
+    });
+    mesh.textures = vec![uv_mapped, marked_texture(0.25)];
+    Arc::new(mesh)
+}
+
+#[test]
+fn mesh_triangles_in_csg_keep_corner_uvs_and_textures() {
+    let mesh = Object::new(Shape::Mesh(textured_triangle_mesh()));
+    let in_csg = csg(CsgOperation::Intersection, vec![mesh, slab(-5.0, 5.0)]);
+    let world = World::build(&scene_of(vec![in_csg]));
+    // At the point with barycentric weights (0.5, 0.25, 0.25).
+    let ray = Ray::new(DVec3::new(-0.5, -0.5, -5.0), DVec3::Z);
+    let hit = world.first_hit(&ray, 0.0, f64::INFINITY).expect("a hit");
+    let uv = hit.uv.expect("uv coordinates in CSG");
+    assert!((uv - DVec2::new(1.0, 0.5)).length() < 1e-12, "{uv}");
+    let blend = hit.corner_blend.expect("corner textures blend in CSG");
+    assert_eq!(blend.materials[0], blend.materials[2]);
+    assert_ne!(blend.materials[0], blend.materials[1]);
+    let expected = [0.5, 0.25, 0.25];
+    assert!(blend
+        .weights
+        .iter()
+        .zip(expected)
+        .all(|(found, wanted)| (found - wanted).abs() < 1e-12));
+}
+
+#[test]
+fn mesh_textures_are_shared_between_placements() {
+    let mesh = textured_triangle_mesh();
+    let placed = |z: f64| {
+        let mut object = Object::new(Shape::Mesh(Arc::clone(&mesh)));
+        object.set_transform(crate::scene::Transform::translation(DVec3::new(
+            0.0, 0.0, z,
+        )));
+        object
+    };
+    let in_csg = csg(
+        CsgOperation::Intersection,
+        vec![placed(3.0), slab(-5.0, 5.0)],
+    );
+    let world = World::build(&scene_of(vec![placed(1.0), placed(2.0), in_csg]));
+    // The default texture (the meshes' own and the slab's) and the solid triangle texture
+    // do not depend on position, so every placement shares them; the uv-mapped one does, so
+    // each moved placement has its own copy: 2 + 3 materials.
+    assert_eq!(world.materials.len(), 5);
+}

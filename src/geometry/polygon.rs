@@ -7,6 +7,7 @@
 
 use super::flat::Triangle;
 use super::roots::Roots;
+use super::uv::barycentric;
 use crate::accel::Aabb;
 use glam::{DAffine3, DVec2, DVec3};
 
@@ -49,7 +50,12 @@ impl SmoothTriangle {
 
     /// The normal interpolated at `point` from the corner normals (barycentric weights).
     pub fn normal(&self, point: DVec3) -> DVec3 {
-        interpolated_normal(self.triangle.corners(), self.normals, point)
+        self.normal_at_weights(barycentric(self.corners(), point))
+    }
+
+    /// The normal interpolated at the point with barycentric `weights`.
+    pub fn normal_at_weights(&self, weights: [f64; 3]) -> DVec3 {
+        interpolated_normal(self.normals, weights, self.triangle.normal())
     }
 
     /// Bounding box of the corners.
@@ -58,29 +64,17 @@ impl SmoothTriangle {
     }
 }
 
-/// The normal at `point` of a triangle with `corners`, interpolated from the unit `normals`
-/// at the corners by barycentric weights; the flat normal where that fails.
-pub fn interpolated_normal(corners: [DVec3; 3], normals: [DVec3; 3], point: DVec3) -> DVec3 {
-    let [a, b, c] = corners;
-    let flat = || (b - a).cross(c - a);
-    let (edge_one, edge_two, offset) = (b - a, c - a, point - a);
-    let (d11, d12, d22) = (
-        edge_one.dot(edge_one),
-        edge_one.dot(edge_two),
-        edge_two.dot(edge_two),
-    );
-    let (p1, p2) = (offset.dot(edge_one), offset.dot(edge_two));
-    let determinant = d11 * d22 - d12 * d12;
-    if determinant == 0.0 || !determinant.is_finite() {
-        return flat();
-    }
-    let u = ((d22 * p1 - d12 * p2) / determinant).clamp(0.0, 1.0);
-    let v = ((d11 * p2 - d12 * p1) / determinant).clamp(0.0, 1.0 - u);
+/// The normal of a triangle at the point with barycentric `weights` (see
+/// [`barycentric`]), interpolated from the unit corner `normals` with the weights clamped
+/// onto the triangle; `flat` where that gives no direction.
+pub fn interpolated_normal(normals: [DVec3; 3], weights: [f64; 3], flat: DVec3) -> DVec3 {
+    let u = weights[1].clamp(0.0, 1.0);
+    let v = weights[2].clamp(0.0, 1.0 - u);
     let normal = normals[0] * (1.0 - u - v) + normals[1] * u + normals[2] * v;
     if normal.length_squared() > 0.0 {
         normal
     } else {
-        flat()
+        flat
     }
 }
 

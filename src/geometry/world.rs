@@ -266,31 +266,20 @@ fn finish(
 ) -> Option<SurfaceHit> {
     let (distance, pending) = nearest?;
     let point = ray.at(distance);
-    let (normal, material, uv, corner_blend) = match pending {
-        PendingHit::MeshTriangle(instance, triangle) => {
-            let surface = instance.surface(triangle, point);
-            (
-                instance.normal(triangle, point),
-                surface.material,
-                surface.uv,
-                surface.corner_blend,
-            )
-        }
-        PendingHit::Leaf(leaf, part) => {
-            let material = leaf.material();
-            let uses_uv = materials
+    let details = match pending {
+        PendingHit::MeshTriangle(instance, triangle) => instance.hit_details(triangle, point),
+        PendingHit::Leaf(leaf, part) => leaf.hit_details(point, part, |material| {
+            materials
                 .get(material as usize)
-                .is_some_and(|material| material.uses_uv);
-            let uv = if uses_uv { leaf.uv(point, part) } else { None };
-            (leaf.normal(point, part), material, uv, None)
-        }
+                .is_some_and(|material| material.uses_uv)
+        }),
     };
     Some(SurfaceHit {
         distance,
         point,
-        normal,
-        material,
-        uv,
-        corner_blend,
+        normal: details.normal,
+        material: details.material,
+        uv: details.uv,
+        corner_blend: details.corner_blend,
     })
 }

@@ -22,17 +22,22 @@ use std::f64::consts::TAU;
 /// POV-Ray's default `irid_wavelength` (measured from the interference phases).
 pub const IRID_WAVELENGTHS: DVec3 = DVec3::new(0.70, 0.52, 0.48);
 
-/// The factor on a light's colour for `irid` at world `point`, with `cos_light` and
-/// `cos_view` the (non-negative) cosines between the surface normal and the directions to
-/// the light and to the viewer.
-pub fn iridescence(irid: &Irid, point: DVec3, cos_light: f64, cos_view: f64) -> DVec3 {
-    let thickness = if irid.turbulence != 0.0 {
+/// The film thickness of `irid` at world `point`: its `thickness`, varied by `turbulence`.
+/// It depends only on the point, so shading computes it once per surface sample.
+pub fn irid_thickness(irid: &Irid, point: DVec3) -> f64 {
+    if irid.turbulence != 0.0 {
         let shape = TurbulenceShape::default();
         let stir = turbulence(point, &shape, NoiseGenerator::default());
         irid.thickness * (1.0 + irid.turbulence * stir)
     } else {
         irid.thickness
-    };
+    }
+}
+
+/// The factor on a light's colour for `irid` with film `thickness` (see [`irid_thickness`]),
+/// with `cos_light` and `cos_view` the (non-negative) cosines between the surface normal and
+/// the directions to the light and to the viewer.
+pub fn iridescence(irid: &Irid, thickness: f64, cos_light: f64, cos_view: f64) -> DVec3 {
     let path = TAU * thickness * (cos_light + cos_view);
     let phase = DVec3::splat(path) / IRID_WAVELENGTHS;
     let factor = DVec3::ONE + irid.amount * DVec3::new(phase.x.cos(), phase.y.cos(), phase.z.cos());
@@ -60,21 +65,21 @@ mod tests {
     #[test]
     fn matches_povray_measurements() {
         let close = |a: DVec3, b: DVec3| (a - b).abs().max_element() < 1e-4;
-        let head_on = iridescence(&irid(1.0, 0.5), DVec3::ZERO, 1.0, 1.0);
+        let head_on = iridescence(&irid(1.0, 0.5), 0.5, 1.0, 1.0);
         assert!(
             close(head_on, DVec3::new(0.09903, 1.88546, 1.86603)),
             "{head_on}"
         );
-        let half = iridescence(&irid(0.5, 0.5), DVec3::ZERO, 1.0, 1.0);
+        let half = iridescence(&irid(0.5, 0.5), 0.5, 1.0, 1.0);
         assert!(close(half, DVec3::new(0.54953, 1.44274, 1.43303)), "{half}");
         let cos30 = 30f64.to_radians().cos();
-        let slanted = iridescence(&irid(1.0, 0.5), DVec3::ZERO, 0.5, cos30);
+        let slanted = iridescence(&irid(1.0, 0.5), 0.5, 0.5, cos30);
         assert!(
             close(slanted, DVec3::new(1.98835, 0.61158, 0.11495)),
             "{slanted}"
         );
         assert_eq!(
-            iridescence(&irid(1.0, 0.0), DVec3::ZERO, 0.3, 0.9),
+            iridescence(&irid(1.0, 0.0), 0.0, 0.3, 0.9),
             DVec3::splat(2.0)
         );
     }

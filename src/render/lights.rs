@@ -30,6 +30,7 @@
 
 use super::area_light::AreaArray;
 use super::normal::perturbed_normal;
+use super::pattern::hit_surface;
 use super::reflection::interior_fade;
 use super::texture::surface_pigment;
 use crate::geometry::{Material, Ray, SurfaceHit, World};
@@ -268,8 +269,7 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
         let Some(material) = world.materials.get(hit.material as usize) else {
             return DVec3::ZERO;
         };
-        let pigment = surface_pigment(&material.texture, hit.point);
-        filter *= transmission(pigment);
+        filter *= hit_transmission(world, &hit, direction);
         if material.interior.caustics > 0.0 {
             filter *= fake_caustics(material, &hit, direction);
         }
@@ -292,6 +292,30 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
         start = hit.distance + SHADOW_EPSILON;
     }
     DVec3::ZERO
+}
+
+/// The part of the light along `direction` that passes the surface at `hit`: through its
+/// pigment there (uv-mapped pigments at the hit's uv coordinates), blended over the corner
+/// textures of a mesh triangle whose corners differ.
+fn hit_transmission(world: &World, hit: &SurfaceHit, direction: DVec3) -> DVec3 {
+    let surface = hit_surface(hit.point, direction, hit.normal);
+    let through = |material: u32| {
+        world
+            .materials
+            .get(material as usize)
+            .map_or(DVec3::ZERO, |material| {
+                transmission(surface_pigment(&material.texture, hit, &surface))
+            })
+    };
+    match &hit.corner_blend {
+        Some(blend) => blend
+            .materials
+            .iter()
+            .zip(blend.weights)
+            .map(|(&material, weight)| through(material) * weight.max(0.0))
+            .sum(),
+        None => through(hit.material),
+    }
 }
 
 /// The exponent of fake caustics per unit of `caustics` (measured: see [`fake_caustics`]).

@@ -18,7 +18,7 @@
 //!   renders confirm).
 
 use super::area_light::{point_random, AreaArray, Sampled};
-use super::iridescence::iridescence;
+use super::iridescence::{irid_thickness, iridescence};
 use super::lights::{incoming, light_filter, Incoming, SceneLight};
 use crate::geometry::World;
 use crate::scene::{Colour, Finish, LightGroup};
@@ -100,11 +100,7 @@ pub fn local_light(
     if finish.diffuse == 0.0 && finish.diffuse_back == 0.0 && !has_highlights {
         return total;
     }
-    let grain = if finish.crand != 0.0 {
-        finish.crand * point_random(sample.point, CRAND_SALT)
-    } else {
-        0.0
-    };
+    let terms = PointTerms::at(sample);
     for light in lights {
         if !LightGroup::lights(light.source.group, sample.light_group) {
             continue;
@@ -140,7 +136,7 @@ pub fn local_light(
                         can_be_shadowed: arriving.can_be_shadowed,
                     };
                     let filter = light_filter(light, world, sample.point, &towards, None);
-                    lit_by(sample, pigment, grain, direction, share * filter, light)
+                    lit_by(sample, pigment, &terms, direction, share * filter, light)
                 });
             continue;
         }
@@ -158,9 +154,38 @@ pub fn local_light(
         if colour == DVec3::ZERO {
             continue;
         }
-        total = total + lit_by(sample, pigment, grain, arriving.direction, colour, light);
+        total = total + lit_by(sample, pigment, &terms, arriving.direction, colour, light);
     }
     total
+}
+
+/// The parts of the lighting that depend only on the surface point, computed once per
+/// sample rather than per light or per area-light sample.
+struct PointTerms {
+    /// What `crand` takes off the diffuse light.
+    grain: f64,
+    /// The `irid` film thickness (0 without `irid`).
+    irid_thickness: f64,
+}
+
+impl PointTerms {
+    /// The terms at `sample`'s point.
+    fn at(sample: &SurfaceSample) -> PointTerms {
+        let finish = sample.finish;
+        let grain = if finish.crand != 0.0 {
+            finish.crand * point_random(sample.point, CRAND_SALT)
+        } else {
+            0.0
+        };
+        let irid_thickness = finish
+            .irid
+            .as_ref()
+            .map_or(0.0, |irid| irid_thickness(irid, sample.point));
+        PointTerms {
+            grain,
+            irid_thickness,
+        }
+    }
 }
 
 /// Whether light from behind the surface lights it.
@@ -173,7 +198,7 @@ fn lights_back(sample: &SurfaceSample) -> bool {
 fn lit_by(
     sample: &SurfaceSample,
     pigment: DVec3,
-    grain: f64,
+    terms: &PointTerms,
     to_light: DVec3,
     colour: DVec3,
     light: &SceneLight,
@@ -188,7 +213,7 @@ fn lit_by(
     let colour = match &finish.irid {
         Some(irid) => {
             let cos_view = sample.normal.dot(-sample.ray_direction).abs();
-            colour * iridescence(irid, sample.point, cosine.abs(), cos_view)
+            colour * iridescence(irid, terms.irid_thickness, cosine.abs(), cos_view)
         }
         None => colour,
     };
@@ -204,7 +229,7 @@ fn lit_by(
         } else {
             cosine.powf(finish.brilliance)
         };
-        lit.body = (amount * falloff - grain) * pigment * colour;
+        lit.body = (amount * falloff - terms.grain) * pigment * colour;
     }
     // POV-Ray: shadowless lights cause no highlights; nor does light from behind.
     let has_highlights = finish.phong != 0.0 || finish.specular != 0.0;

@@ -1,6 +1,6 @@
 //! Compound textures: which plain textures a point shows, and with what weight.
 //!
-//! In: a [`Texture`] whose transforms map world space to pattern space, and a world point.
+//! In: a [`Texture`] whose transforms map world space to pattern space, and a surface hit.
 //! Out: calls to a visitor with each plain texture (one without `compound`), the colour
 //! weight of its shaded result, and whether light may pass through it. Holds: no allocation
 //! (the visitor is called recursively), nesting is bounded.
@@ -26,52 +26,40 @@ use glam::DVec3;
 const MAX_TEXTURE_NESTING: u32 = 32;
 
 /// Calls `visit(texture, weight, passes_light)` for every plain texture that contributes
-/// at `world_point` on the surface `surface` (world space; the default when unknown).
+/// at `hit` on the surface `surface` (world space; see `hit_surface`).
 pub fn for_each_component(
     texture: &Texture,
-    world_point: DVec3,
+    hit: &SurfaceHit,
     surface: &SurfaceContext,
     visit: &mut dyn FnMut(&Texture, DVec3, bool),
 ) {
-    let place = Place {
-        point: world_point,
-        surface,
-    };
+    let place = Place { hit, surface };
     components(texture, &place, DVec3::ONE, true, 0, visit);
 }
 
-/// Where textures are evaluated: the world point and the surface there.
+/// Where textures are evaluated: the hit (point and uv coordinates) and the surface there.
 struct Place<'a> {
-    point: DVec3,
+    hit: &'a SurfaceHit,
     surface: &'a SurfaceContext,
 }
 
-/// The pigment colour the surface shows at `world_point` (the blend of its components'
-/// pigments), for what shadow rays see.
-pub fn surface_pigment(texture: &Texture, world_point: DVec3) -> Colour {
-    surface_pigment_at(texture, world_point, &SurfaceContext::default())
-}
-
-/// [`surface_pigment`] on the surface `surface` (world space).
-fn surface_pigment_at(texture: &Texture, world_point: DVec3, surface: &SurfaceContext) -> Colour {
+/// The pigment colour the surface shows at `hit` (the blend of its components' pigments,
+/// uv-mapped ones at the hit's uv coordinates), for what shadow rays and the layers below
+/// a layer see.
+pub fn surface_pigment(texture: &Texture, hit: &SurfaceHit, surface: &SurfaceContext) -> Colour {
     if texture.compound.is_none() {
-        return pigment_colour_at(&texture.pigment, world_point, surface);
+        return pigment_at_hit(&texture.pigment, hit, surface);
     }
     let mut sum = [0.0; 5];
-    for_each_component(
-        texture,
-        world_point,
-        surface,
-        &mut |plain, weight, passes_light| {
-            if passes_light {
-                let colour = pigment_colour_at(&plain.pigment, world_point, surface).to_array();
-                let weight = weight.dot(DVec3::splat(1.0 / 3.0));
-                for (acc, component) in sum.iter_mut().zip(colour) {
-                    *acc += weight * component;
-                }
+    for_each_component(texture, hit, surface, &mut |plain, weight, passes_light| {
+        if passes_light {
+            let colour = pigment_at_hit(&plain.pigment, hit, surface).to_array();
+            let weight = weight.dot(DVec3::splat(1.0 / 3.0));
+            for (acc, component) in sum.iter_mut().zip(colour) {
+                *acc += weight * component;
             }
-        },
-    );
+        }
+    });
     Colour::from_array(sum)
 }
 
@@ -114,7 +102,7 @@ fn components(
                 if bottom {
                     break;
                 }
-                seen *= transmission(surface_pigment_at(layer, place.point, place.surface));
+                seen *= transmission(surface_pigment(layer, place.hit, place.surface));
                 if seen == DVec3::ZERO {
                     break;
                 }
@@ -125,7 +113,7 @@ fn components(
             map,
             transform,
         } => {
-            let point = transform.point_to_inner(place.point);
+            let point = transform.point_to_inner(place.hit.point);
             if !point.is_finite() {
                 return;
             }
@@ -154,7 +142,7 @@ fn components(
             textures,
             transform,
         } => {
-            let point = transform.point_to_inner(place.point);
+            let point = transform.point_to_inner(place.hit.point);
             let chosen = material_choice(image, point, textures.len());
             if let Some(texture) = chosen.and_then(|index| textures.get(index)) {
                 recurse(texture, DVec3::ONE, passes_light);

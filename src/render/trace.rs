@@ -48,7 +48,6 @@ use super::reflection::{apply_exponent, interior_fade, reflection_colour};
 use super::shading::{local_light, mirror, SurfaceSample};
 use super::texture::{for_each_component, pigment_at_hit};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
-use crate::pattern::SurfaceContext;
 use crate::scene::{Scene, Texture};
 use glam::DVec3;
 
@@ -156,6 +155,7 @@ impl<'a> Tracer<'a> {
     /// A tracer for `scene`, whose objects `world` holds.
     pub fn new(scene: &'a Scene, world: &'a World) -> Tracer<'a> {
         let settings = &scene.settings;
+        let legacy = is_legacy_scene(settings);
         let adc_bailout = if settings.adc_bailout.is_nan() {
             0.0
         } else {
@@ -167,9 +167,9 @@ impl<'a> Tracer<'a> {
             max_trace_level: settings.max_trace_level.clamp(1, TRACE_LEVEL_LIMIT),
             adc_bailout,
             atmosphere: AtmosphereShader::new(&scene.atmosphere, scene.background.rgb_vec())
-                .with_legacy_sky_layers(super::encoding::is_legacy_scene(&scene.settings))
+                .with_legacy_sky_layers(legacy)
                 .with_noise_generator(settings.noise_generator),
-            legacy_opacity: is_legacy_scene(settings),
+            legacy_opacity: legacy,
             lights: prepare_lights(scene),
             any_no_image: world.materials.iter().any(|m| m.no_image),
             any_no_reflection: world.materials.iter().any(|m| m.no_reflection),
@@ -307,24 +307,19 @@ impl<'a> Tracer<'a> {
             continued: None,
         };
         let surface = hit_surface(hit.point, ray.direction, hit.normal);
-        for_each_component(
-            texture,
-            hit.point,
-            &surface,
-            &mut |plain, share, passes_light| {
-                let part = self.shade_plain(
-                    ray,
-                    hit,
-                    material,
-                    plain,
-                    passes_light,
-                    level,
-                    weight,
-                    media,
-                );
-                total.add(share, part);
-            },
-        );
+        for_each_component(texture, hit, &surface, &mut |plain, share, passes_light| {
+            let part = self.shade_plain(
+                ray,
+                hit,
+                material,
+                plain,
+                passes_light,
+                level,
+                weight,
+                media,
+            );
+            total.add(share, part);
+        });
         total
     }
 
@@ -345,16 +340,10 @@ impl<'a> Tracer<'a> {
         let surface = hit_surface(hit.point, ray.direction, hit.normal);
         let pigment = pigment_at_hit(&texture.pigment, hit, &surface);
         let entering = ray.direction.dot(hit.normal) <= 0.0;
-        let facing = if entering { hit.normal } else { -hit.normal };
-        let mut normal = if facing.is_finite() {
-            facing
-        } else {
-            -ray.direction
+        let normal = match &texture.normal {
+            Some(perturbation) => perturbed_normal_at(perturbation, hit.point, &surface),
+            None => surface.normal,
         };
-        if let Some(perturbation) = &texture.normal {
-            let surface = SurfaceContext { normal, ..surface };
-            normal = perturbed_normal_at(perturbation, hit.point, &surface);
-        }
         let sample = SurfaceSample {
             point: hit.point,
             normal,
@@ -438,7 +427,7 @@ impl<'a> Tracer<'a> {
 
         // Mirror reflection.
         if reflection_weight.0 > 0.0 && reflection_weight.0 >= self.adc_bailout {
-            if let Some(direction) = reflected_direction(ray.direction, normal, facing) {
+            if let Some(direction) = reflected_direction(ray.direction, normal, surface.normal) {
                 let reflected = Ray {
                     origin: hit.point,
                     direction,

@@ -345,7 +345,7 @@ mod tests {
             std::mem::size_of::<Shape>()
         );
         assert!(
-            std::mem::size_of::<Object>() <= 160,
+            std::mem::size_of::<Object>() <= 168,
             "{}",
             std::mem::size_of::<Object>()
         );
