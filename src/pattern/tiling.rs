@@ -106,12 +106,70 @@ const TRIANGLES: Layout = Layout {
     ],
 };
 
+/// Half of √3: the height of an equilateral triangle of side 1.
+const H: f64 = SQRT_3 / 2.0;
+
+/// `tiling 4`: rhombi of side 1 with 60° corners at the origin, edges along x and at 60°.
+const LOZENGES: Layout = Layout {
+    period: (1.0, SQRT_3),
+    types: 1,
+    bevel: SQRT_3 / 4.0,
+    tiles: &[
+        Tile {
+            kind: 0,
+            corners: &[(0.0, 0.0), (1.0, 0.0), (1.5, H), (0.5, H)],
+        },
+        Tile {
+            kind: 0,
+            corners: &[(0.5, H), (1.5, H), (2.0, SQRT_3), (1.0, SQRT_3)],
+        },
+    ],
+};
+
+/// `tiling 5`: the hexagons of `tiling 2` each cut into three rhombi (a stack of cubes):
+/// type 0 the lower right, type 1 the left (long axis along z), type 2 the upper right.
+const CUBES: Layout = Layout {
+    period: (3.0, SQRT_3),
+    types: 3,
+    bevel: SQRT_3 / 4.0,
+    tiles: &[
+        // The hexagon centred at (0.5, √3/2).
+        Tile {
+            kind: 0,
+            corners: &[(0.0, 0.0), (1.0, 0.0), (1.5, H), (0.5, H)],
+        },
+        Tile {
+            kind: 1,
+            corners: &[(0.0, 0.0), (0.5, H), (0.0, SQRT_3), (-0.5, H)],
+        },
+        Tile {
+            kind: 2,
+            corners: &[(0.5, H), (1.5, H), (1.0, SQRT_3), (0.0, SQRT_3)],
+        },
+        // The hexagon centred at (-1, 0).
+        Tile {
+            kind: 0,
+            corners: &[(0.0, 0.0), (-1.0, 0.0), (-1.5, -H), (-0.5, -H)],
+        },
+        Tile {
+            kind: 1,
+            corners: &[(-1.0, 0.0), (-1.5, H), (-2.0, 0.0), (-1.5, -H)],
+        },
+        Tile {
+            kind: 2,
+            corners: &[(0.0, 0.0), (-0.5, H), (-1.5, H), (-1.0, 0.0)],
+        },
+    ],
+};
+
 /// The layout of a tiling number, `None` for numbers not (yet) supported.
 fn layout(number: u8) -> Option<&'static Layout> {
     match number {
         1 => Some(&SQUARES),
         2 => Some(&HEXAGONS),
         3 => Some(&TRIANGLES),
+        4 => Some(&LOZENGES),
+        5 => Some(&CUBES),
         _ => None,
     }
 }
@@ -220,6 +278,29 @@ mod tests {
                 (0.25, 1.0, 0.2679492),
                 (0.5, 1.25, 0.6674682),
                 (0.25, 1.75, 0.4689111),
+            ],
+        );
+    }
+
+    #[test]
+    fn lozenges_and_cubes_match_povray() {
+        check(
+            4,
+            &[
+                (0.75, 0.375, 0.1339746),
+                (0.125, 0.25, 0.9613249),
+                (0.375, 0.625, 0.9716879),
+                (0.5, 0.75, 0.8660254),
+            ],
+        );
+        check(
+            5,
+            &[
+                (0.75, 0.5, 0.0515668),
+                (0.0, 0.75, 0.3779915),
+                (-0.75, 0.25, 0.8075499),
+                (-0.75, -0.5, 0.0515668),
+                (1.0, 1.25, 0.8144585),
             ],
         );
     }
