@@ -26,10 +26,11 @@ struct Tile {
     corners: &'static [(f64, f64)],
 }
 
-/// A periodic tiling: the tiles of one rectangular period (tiles may reach past it).
+/// A periodic tiling: the tiles of one period (tiles may reach past the period's
+/// parallelogram, by less than one period).
 struct Layout {
-    /// The period along x and along z.
-    period: (f64, f64),
+    /// The two vectors (x, z) the tiling repeats along.
+    period: [(f64, f64); 2],
     /// How many tile types there are.
     types: u8,
     /// The distance from an edge over which the bevel rises.
@@ -40,7 +41,7 @@ struct Layout {
 
 /// `tiling 1`: unit squares with corners on the integer lattice.
 const SQUARES: Layout = Layout {
-    period: (1.0, 1.0),
+    period: [(1.0, 0.0), (0.0, 1.0)],
     types: 1,
     bevel: 0.5,
     tiles: &[Tile {
@@ -51,7 +52,7 @@ const SQUARES: Layout = Layout {
 
 /// `tiling 2`: hexagons of side 1 with corners along ±x, one centred at (−1, 0).
 const HEXAGONS: Layout = Layout {
-    period: (3.0, SQRT_3),
+    period: [(3.0, 0.0), (0.0, SQRT_3)],
     types: 1,
     bevel: SQRT_3 / 2.0,
     tiles: &[
@@ -83,7 +84,7 @@ const HEXAGONS: Layout = Layout {
 /// `tiling 3`: equilateral triangles of side 1 with horizontal edges on `z = k √3/2`;
 /// triangles pointing up (+z) are type 0, pointing down type 1.
 const TRIANGLES: Layout = Layout {
-    period: (1.0, SQRT_3),
+    period: [(1.0, 0.0), (0.0, SQRT_3)],
     types: 2,
     bevel: SQRT_3 / 6.0,
     tiles: &[
@@ -111,7 +112,7 @@ const H: f64 = SQRT_3 / 2.0;
 
 /// `tiling 4`: rhombi of side 1 with 60° corners at the origin, edges along x and at 60°.
 const LOZENGES: Layout = Layout {
-    period: (1.0, SQRT_3),
+    period: [(1.0, 0.0), (0.0, SQRT_3)],
     types: 1,
     bevel: SQRT_3 / 4.0,
     tiles: &[
@@ -129,7 +130,7 @@ const LOZENGES: Layout = Layout {
 /// `tiling 5`: the hexagons of `tiling 2` each cut into three rhombi (a stack of cubes):
 /// type 0 the lower right, type 1 the left (long axis along z), type 2 the upper right.
 const CUBES: Layout = Layout {
-    period: (3.0, SQRT_3),
+    period: [(3.0, 0.0), (0.0, SQRT_3)],
     types: 3,
     bevel: SQRT_3 / 4.0,
     tiles: &[
@@ -162,6 +163,59 @@ const CUBES: Layout = Layout {
     ],
 };
 
+/// `tiling 6`: 1 × 2 rectangles in a staircase: upright ones (long along z, type 1) and
+/// flat ones (long along x, type 0).
+const STAIRCASE: Layout = Layout {
+    period: [(1.0, 1.0), (-2.0, 2.0)],
+    types: 2,
+    bevel: 0.5,
+    tiles: &[
+        Tile {
+            kind: 1,
+            corners: &[(0.0, 0.0), (1.0, 0.0), (1.0, 2.0), (0.0, 2.0)],
+        },
+        Tile {
+            kind: 0,
+            corners: &[(-2.0, 1.0), (0.0, 1.0), (0.0, 2.0), (-2.0, 2.0)],
+        },
+    ],
+};
+
+/// Half the width of a regular octagon of side 1: (1 + √2) / 2.
+const OCTAGON_INRADIUS: f64 = 1.207_106_781_186_547_6;
+
+/// `tiling 7`: regular octagons of side 1 (type 1) centred on the lattice of spacing
+/// 1 + √2, with the squares between them (type 0, turned 45°).
+const OCTAGONS: Layout = Layout {
+    period: [(2.0 * OCTAGON_INRADIUS, 0.0), (0.0, 2.0 * OCTAGON_INRADIUS)],
+    types: 2,
+    bevel: 0.5,
+    tiles: &[
+        Tile {
+            kind: 1,
+            corners: &[
+                (OCTAGON_INRADIUS, -0.5),
+                (OCTAGON_INRADIUS, 0.5),
+                (0.5, OCTAGON_INRADIUS),
+                (-0.5, OCTAGON_INRADIUS),
+                (-OCTAGON_INRADIUS, 0.5),
+                (-OCTAGON_INRADIUS, -0.5),
+                (-0.5, -OCTAGON_INRADIUS),
+                (0.5, -OCTAGON_INRADIUS),
+            ],
+        },
+        Tile {
+            kind: 0,
+            corners: &[
+                (OCTAGON_INRADIUS, 0.5),
+                (2.0 * OCTAGON_INRADIUS - 0.5, OCTAGON_INRADIUS),
+                (OCTAGON_INRADIUS, 2.0 * OCTAGON_INRADIUS - 0.5),
+                (0.5, OCTAGON_INRADIUS),
+            ],
+        },
+    ],
+};
+
 /// The layout of a tiling number, `None` for numbers not (yet) supported.
 fn layout(number: u8) -> Option<&'static Layout> {
     match number {
@@ -170,6 +224,8 @@ fn layout(number: u8) -> Option<&'static Layout> {
         3 => Some(&TRIANGLES),
         4 => Some(&LOZENGES),
         5 => Some(&CUBES),
+        6 => Some(&STAIRCASE),
+        7 => Some(&OCTAGONS),
         _ => None,
     }
 }
@@ -184,17 +240,22 @@ pub fn tiling_value(number: u8, point: glam::DVec3) -> f64 {
     let Some(layout) = layout(number) else {
         return 0.0;
     };
-    let (width, depth) = layout.period;
-    // The point inside the period's rectangle; tiles reaching past it are tried shifted by
-    // one period each way.
-    let x = point.x - width * (point.x / width).floor();
-    let z = point.z - depth * (point.z / depth).floor();
+    // The point inside the period's parallelogram (lattice coordinates taken down to their
+    // fractional parts); tiles reaching past it are tried shifted by one period each way.
+    let [(ux, uz), (vx, vz)] = layout.period;
+    let determinant = ux * vz - uz * vx;
+    let along_u = ((point.x * vz - point.z * vx) / determinant).floor();
+    let along_v = ((ux * point.z - uz * point.x) / determinant).floor();
+    let x = point.x - along_u * ux - along_v * vx;
+    let z = point.z - along_u * uz - along_v * vz;
     let mut best_kind = 0;
     let mut best_depth = f64::NEG_INFINITY;
-    for shift_x in [-width, 0.0, width] {
-        for shift_z in [-depth, 0.0, depth] {
+    for shift_u in [-1.0, 0.0, 1.0] {
+        for shift_v in [-1.0, 0.0, 1.0] {
+            let tile_x = x - shift_u * ux - shift_v * vx;
+            let tile_z = z - shift_u * uz - shift_v * vz;
             for tile in layout.tiles {
-                let inside = depth_inside(tile.corners, x - shift_x, z - shift_z);
+                let inside = depth_inside(tile.corners, tile_x, tile_z);
                 if inside > best_depth {
                     best_depth = inside;
                     best_kind = tile.kind;
@@ -301,6 +362,30 @@ mod tests {
                 (-0.75, 0.25, 0.8075499),
                 (-0.75, -0.5, 0.0515668),
                 (1.0, 1.25, 0.8144585),
+            ],
+        );
+    }
+
+    #[test]
+    fn staircase_and_octagons_match_povray() {
+        check(
+            6,
+            &[
+                (1.5, 0.5, 0.0),
+                (1.25, 0.5, 0.25),
+                (0.5, 0.25, 0.75),
+                (1.25, 1.25, 0.75),
+                (1.5, 1.5, 0.5),
+            ],
+        );
+        check(
+            7,
+            &[
+                (1.25, 1.25, 0.0606602),
+                (1.0, 0.0, 0.7928932),
+                (1.5, 1.5, 0.4142136),
+                (0.75, 0.5, 0.6767767),
+                (0.25, 0.25, 0.5),
             ],
         );
     }
