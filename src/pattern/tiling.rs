@@ -216,6 +216,28 @@ const OCTAGONS: Layout = Layout {
     ],
 };
 
+/// `tiling 8`: rows of unit squares (type 2) between rows of equilateral triangles, up
+/// (type 0) and down (type 1); each square row is half a square along from the last.
+const SQUARES_AND_TRIANGLES: Layout = Layout {
+    period: [(1.0, 0.0), (0.5, 1.0 + H)],
+    types: 3,
+    bevel: SQRT_3 / 6.0,
+    tiles: &[
+        Tile {
+            kind: 2,
+            corners: &[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)],
+        },
+        Tile {
+            kind: 0,
+            corners: &[(0.0, 1.0), (1.0, 1.0), (0.5, 1.0 + H)],
+        },
+        Tile {
+            kind: 1,
+            corners: &[(0.5, 1.0 + H), (1.0, 1.0), (1.5, 1.0 + H)],
+        },
+    ],
+};
+
 /// The layout of a tiling number, `None` for numbers not (yet) supported.
 fn layout(number: u8) -> Option<&'static Layout> {
     match number {
@@ -226,6 +248,7 @@ fn layout(number: u8) -> Option<&'static Layout> {
         5 => Some(&CUBES),
         6 => Some(&STAIRCASE),
         7 => Some(&OCTAGONS),
+        8 => Some(&SQUARES_AND_TRIANGLES),
         _ => None,
     }
 }
@@ -386,6 +409,21 @@ mod tests {
                 (1.5, 1.5, 0.4142136),
                 (0.75, 0.5, 0.6767767),
                 (0.25, 0.25, 0.5),
+            ],
+        );
+    }
+
+    #[test]
+    fn squares_and_triangles_match_povray() {
+        check(
+            8,
+            &[
+                (0.5, 0.5, 0.6666667),
+                (0.5, 1.2, 0.1023932),
+                (0.0, 1.5, 0.3779915),
+                (0.1, 0.5, 0.8845300),
+                (0.5, -0.3, 0.3398717),
+                (0.0, -0.5, 0.0446582),
             ],
         );
     }
