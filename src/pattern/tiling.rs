@@ -238,6 +238,35 @@ const SQUARES_AND_TRIANGLES: Layout = Layout {
     ],
 };
 
+/// `tiling 9`: hexagons of side 1 (type 2) meeting at their corners, with the triangles
+/// between them pointing up (type 0) and down (type 1).
+const HEXAGONS_AND_TRIANGLES: Layout = Layout {
+    period: [(2.0, 0.0), (1.0, SQRT_3)],
+    types: 3,
+    bevel: SQRT_3 / 6.0,
+    tiles: &[
+        Tile {
+            kind: 2,
+            corners: &[
+                (0.0, 0.0),
+                (1.0, 0.0),
+                (1.5, H),
+                (1.0, SQRT_3),
+                (0.0, SQRT_3),
+                (-0.5, H),
+            ],
+        },
+        Tile {
+            kind: 0,
+            corners: &[(1.0, 0.0), (2.0, 0.0), (1.5, H)],
+        },
+        Tile {
+            kind: 1,
+            corners: &[(0.0, 0.0), (0.5, -H), (1.0, 0.0)],
+        },
+    ],
+};
+
 /// The layout of a tiling number, `None` for numbers not (yet) supported.
 fn layout(number: u8) -> Option<&'static Layout> {
     match number {
@@ -249,6 +278,7 @@ fn layout(number: u8) -> Option<&'static Layout> {
         6 => Some(&STAIRCASE),
         7 => Some(&OCTAGONS),
         8 => Some(&SQUARES_AND_TRIANGLES),
+        9 => Some(&HEXAGONS_AND_TRIANGLES),
         _ => None,
     }
 }
@@ -424,6 +454,20 @@ mod tests {
                 (0.1, 0.5, 0.8845300),
                 (0.5, -0.3, 0.3398717),
                 (0.0, -0.5, 0.0446582),
+            ],
+        );
+    }
+
+    #[test]
+    fn hexagons_and_triangles_match_povray() {
+        check(
+            9,
+            &[
+                (0.5, 0.866, 0.6666667),
+                (1.5, 0.3, 0.0065384),
+                (0.5, -0.3, 0.3398717),
+                (1.2, 0.9, 0.7196152),
+                (0.1, 0.2, 0.7845299),
             ],
         );
     }
