@@ -267,6 +267,17 @@ const HEXAGONS_AND_TRIANGLES: Layout = Layout {
     ],
 };
 
+/// `tiling 10`: unit squares in rows, each row half a square along from the last.
+const OFFSET_SQUARES: Layout = Layout {
+    period: [(1.0, 0.0), (0.5, 1.0)],
+    types: 1,
+    bevel: 0.5,
+    tiles: &[Tile {
+        kind: 0,
+        corners: &[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)],
+    }],
+};
+
 /// The layout of a tiling number, `None` for numbers not (yet) supported.
 fn layout(number: u8) -> Option<&'static Layout> {
     match number {
@@ -279,6 +290,7 @@ fn layout(number: u8) -> Option<&'static Layout> {
         7 => Some(&OCTAGONS),
         8 => Some(&SQUARES_AND_TRIANGLES),
         9 => Some(&HEXAGONS_AND_TRIANGLES),
+        10 => Some(&OFFSET_SQUARES),
         _ => None,
     }
 }
@@ -468,6 +480,20 @@ mod tests {
                 (0.5, -0.3, 0.3398717),
                 (1.2, 0.9, 0.7196152),
                 (0.1, 0.2, 0.7845299),
+            ],
+        );
+    }
+
+    #[test]
+    fn offset_squares_match_povray() {
+        check(
+            10,
+            &[
+                (0.5, 0.5, 0.0),
+                (0.25, 0.75, 0.5),
+                (0.0, 1.5, 0.0),
+                (0.5, 1.75, 1.0),
+                (0.25, 1.25, 0.5),
             ],
         );
     }
