@@ -628,3 +628,13 @@ fn mesh_camera_needs_a_mesh_per_ray() {
         &["distribution 0 needs a mesh for each of the 2 rays per pixel, found 1 meshes"],
     );
 }
+
+#[test]
+fn tiling_number_out_of_range_is_refused() {
+    check(
+        "tiling_out_of_range",
+        2,
+        31,
+        &["the tiling number must be between 1 and 27", "this is 28"],
+    );
+}
