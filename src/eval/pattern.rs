@@ -94,14 +94,22 @@ impl Evaluator {
             "square" => PatternKind::Square,
             "tiling" => {
                 let (value, number_span) = self.expect_value(stream, "a tiling number")?;
-                let number = self.to_float(value, number_span)?;
-                if number != 1.0 {
+                let number = self.to_float(value, number_span)?.trunc();
+                if !(1.0..=27.0).contains(&number) {
+                    return Err(self
+                        .error(number_span, "the tiling number must be between 1 and 27")
+                        .with_label(format!("this is {number}"))
+                        .into());
+                }
+                // In range, so the conversion is exact.
+                let number = number as u8;
+                if !crate::pattern::is_supported_tiling(number) {
                     self.warn(
                         number_span,
-                        "only `tiling 1` (squares) is supported yet; other tilings use it",
+                        format!("`tiling {number}` is not supported yet; its value is 0"),
                     );
                 }
-                PatternKind::SquareTiles
+                PatternKind::Tiling(number)
             }
             "triangular" => PatternKind::Triangular,
             "waves" => PatternKind::Waves(self.settings.wave_sources.clone()),

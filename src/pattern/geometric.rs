@@ -111,13 +111,6 @@ fn exact_triangle(value: f64) -> f64 {
     }
 }
 
-/// `tiling 1`: unit squares in the x-z plane centred on half-integers, 0 at a square's
-/// centre rising linearly to 1 at its edges (the Chebyshev distance, doubled).
-pub fn square_tiles(point: DVec3) -> f64 {
-    let across = |t: f64| (2.0 * (t - t.floor()) - 1.0).abs();
-    across(point.x).max(across(point.z))
-}
-
 /// `cubic`: which of the six pyramids around the half axes (+x, +y, +z, −x, −y, −z) the
 /// point lies in.
 pub fn cubic_block(point: DVec3) -> usize {
@@ -292,6 +285,7 @@ mod tests {
     fn square_tiles_match_povray() {
         // POV-Ray's `tiling 1` through a black-to-white map.
         let ramp = Wave::new(WaveShape::Ramp);
+        let square_tiles = |p| crate::pattern::tiling::tiling_value(1, p);
         let value = |x, z| ramp.apply(square_tiles(DVec3::new(x, 0.0, z)));
         assert!((value(-0.5, 0.5) - 0.0).abs() < 1e-9);
         assert!((value(-0.7, 0.5) - 0.4).abs() < 1e-9);

@@ -22,6 +22,7 @@ mod geometric;
 mod noise_based;
 mod normals;
 mod surface;
+mod tiling;
 mod warp;
 mod wave;
 mod waves;
@@ -37,6 +38,7 @@ pub use fractal::{Colouring, Fractal, FractalKind, MagnetType};
 pub use geometric::checker_block;
 pub use noise_based::{ClassicTurbulence, Crackle};
 pub use surface::{Altitude, Slope, SurfaceContext};
+pub use tiling::is_supported as is_supported_tiling;
 pub use warp::{BlackHole, Mapping, MappingKind, Repeat, Warp};
 pub use wave::{Wave, WaveShape};
 pub use waves::{SceneWaveSources, WaveSources, MAX_WAVE_COUNT};
@@ -171,8 +173,9 @@ pub enum PatternKind {
     Spiral2(f64),
     /// Squares in the x-z plane; four blocks.
     Square,
-    /// `tiling 1`: square tiles with bevelled edges (the other tilings are not supported).
-    SquareTiles,
+    /// `tiling N`: one of POV-Ray's periodic tilings of the x-z plane, tiles bevelled towards
+    /// their edges (see [`tiling`]).
+    Tiling(u8),
     /// Triangles in the x-z plane; six blocks.
     Triangular,
     /// Broad waves from the wave centres.
@@ -420,7 +423,7 @@ impl PatternSpec {
                 0.297 * red + 0.589 * green + 0.114 * blue
             }
             PatternKind::Spherical => geometric::spherical(p),
-            PatternKind::SquareTiles => geometric::square_tiles(p),
+            PatternKind::Tiling(number) => tiling::tiling_value(*number, p),
             PatternKind::Spiral1(arms) => {
                 geometric::spiral1(p, arms.trunc(), self.scalar_turbulence(p))
             }
@@ -517,7 +520,8 @@ mod tests {
             PatternKind::Spiral1(3.0),
             PatternKind::Spiral2(1e300),
             PatternKind::Square,
-            PatternKind::SquareTiles,
+            PatternKind::Tiling(1),
+            PatternKind::Tiling(3),
             PatternKind::Triangular,
             PatternKind::Waves(SceneWaveSources::default()),
             PatternKind::Wood,

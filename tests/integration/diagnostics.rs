@@ -659,3 +659,13 @@ fn global_lights_outside_a_light_group_is_refused() {
         &["`global_lights` is not allowed inside `union`"],
     );
 }
+
+#[test]
+fn tiling_number_out_of_range_is_refused() {
+    check(
+        "tiling_out_of_range",
+        2,
+        31,
+        &["the tiling number must be between 1 and 27", "this is 28"],
+    );
+}
