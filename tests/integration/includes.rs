@@ -939,23 +939,21 @@ fn embedded_shape_queries_match_povray() {
     assert_eq!(ours, run(true));
 }
 
-/// The HF_ macros, which durer cannot run from POV-Ray's shapes.inc (they interleave
-/// `#write` with braces), render tests/stdlib/shapes_hf.pov like POV-Ray did, and the
-/// meshes they write to files render like the ones they make directly.
-#[test]
-fn embedded_height_field_macros_render_like_povray() {
-    let path = crate::tests_folder().join("stdlib/shapes_hf.pov");
+/// Renders tests/stdlib/NAME.pov with durer's embedded files only and requires it to match
+/// tests/stdlib/NAME.png, POV-Ray's render (at most 2% of pixels over 24/255).
+fn stdlib_scene_renders_like_povray(name: &str) {
+    let path = crate::tests_folder().join(format!("stdlib/{name}.pov"));
     let options = durer::eval::EvalOptions {
         search_installed_povray: false,
         ..Default::default()
     };
     let evaluated = evaluate_with(&path, options);
     let Some(mut scene) = evaluated.scene else {
-        panic!("shapes_hf.pov does not evaluate");
+        panic!("{name}.pov does not evaluate");
     };
     let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
     let reference = image::open(path.with_extension("png"))
-        .expect("shapes_hf.png")
+        .unwrap_or_else(|e| panic!("{name}.png: {e}"))
         .to_rgb8();
     let options = durer::render::RenderOptions {
         width: reference.width(),
@@ -975,6 +973,14 @@ fn embedded_height_field_macros_render_like_povray() {
         over * 50 <= total,
         "{over} of {total} pixels differ from POV-Ray's render"
     );
+}
+
+/// The HF_ macros, which durer cannot run from POV-Ray's shapes.inc (they interleave
+/// `#write` with braces), render tests/stdlib/shapes_hf.pov like POV-Ray did, and the
+/// meshes they write to files render like the ones they make directly.
+#[test]
+fn embedded_height_field_macros_render_like_povray() {
+    stdlib_scene_renders_like_povray("shapes_hf");
 
     let dir = scratch("hf-files");
     let ripple = "#declare Ripple = function (x, y, z) { sin(x * 5) * 0.1 + z * z * 0.2 }\n";
@@ -1250,37 +1256,7 @@ fn embedded_shapes3_macros_render_like_povray() {
 /// tests/stdlib/shapes3.pov with durer's file like POV-Ray did with its own.
 #[test]
 fn embedded_shapes3_segments_and_tubes_render_like_povray() {
-    let path = crate::tests_folder().join("stdlib/shapes3.pov");
-    let options = durer::eval::EvalOptions {
-        search_installed_povray: false,
-        ..Default::default()
-    };
-    let evaluated = evaluate_with(&path, options);
-    let Some(mut scene) = evaluated.scene else {
-        panic!("shapes3.pov does not evaluate");
-    };
-    let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
-    let reference = image::open(path.with_extension("png"))
-        .expect("shapes3.png")
-        .to_rgb8();
-    let options = durer::render::RenderOptions {
-        width: reference.width(),
-        height: reference.height(),
-        antialias: None,
-    };
-    let ours = durer::render::render(&scene, &world, &options, &|_| {});
-    let over = reference
-        .enumerate_pixels()
-        .filter(|(column, row, pixel)| {
-            let mine = ours.pixel(*column, *row).expect("same size");
-            (0..3).any(|c| mine[c].abs_diff(pixel[c]) > 24)
-        })
-        .count();
-    let total = (reference.width() * reference.height()) as usize;
-    assert!(
-        over * 50 <= total,
-        "{over} of {total} pixels differ from POV-Ray's render"
-    );
+    stdlib_scene_renders_like_povray("shapes3");
 }
 
 /// Calls of makegrass.inc's MakeBlade (inside a mesh) and MakePrairie, plain and smooth,
