@@ -16,10 +16,6 @@ pub use cells::{cells_value, crackle_feature_point, cube_random_value};
 
 use glam::DVec3;
 
-/// True once these functions reproduce POV-Ray's noise exactly; reference scenes marked
-/// `// needs-exact-noise` are skipped until then.
-pub const EXACT: bool = true;
-
 /// POV-Ray's `noise_generator` choice (global_settings or per pattern; default 2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum NoiseGenerator {

@@ -126,14 +126,6 @@ fn missing_povray_file(scene: &Path) -> Option<String> {
         .find(|file| !folder.join(file).is_file())
 }
 
-/// True when the scene's first line is `// needs-exact-noise`: it compares noise-based
-/// patterns, which can only match once `durer::noise` reproduces POV-Ray's noise.
-fn needs_exact_noise(scene: &Path) -> bool {
-    fs::read_to_string(scene)
-        .map(|source| source.lines().next().map(str::trim) == Some("// needs-exact-noise"))
-        .unwrap_or(false)
-}
-
 /// The scene's `// tolerance: F` override, if any; `Err` when the line is malformed.
 fn tolerance_override(source: &str) -> Result<Option<f64>, String> {
     for line in source.lines() {
@@ -425,13 +417,6 @@ fn reference_images_match_povray() {
                 false
             }
             None => true,
-        })
-        .filter(|(scene, _)| {
-            let waiting = !durer::noise::EXACT && needs_exact_noise(scene);
-            if waiting {
-                println!("skipping {}: needs POV-Ray's exact noise", scene.display());
-            }
-            !waiting
         })
         .collect();
     assert!(!scenes.is_empty(), "no reference scenes selected");

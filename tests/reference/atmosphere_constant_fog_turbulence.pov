@@ -1,4 +1,3 @@
-// needs-exact-noise
 // atmosphere_constant_fog_turbulence: constant fog stirred by vector turbulence under
 // the global noise_generator 1; the fog's transformations turn nothing (no up for a constant
 // fog) and leave the turbulence in place

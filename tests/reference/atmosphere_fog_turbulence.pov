@@ -1,4 +1,3 @@
-// needs-exact-noise
 // atmosphere_fog_turbulence: ground fog stirred by turbulence
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

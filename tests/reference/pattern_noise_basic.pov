@@ -1,4 +1,3 @@
-// needs-exact-noise
 // Tests: the noise patterns without turbulence on tiles facing the camera: bozo, spotted
 // (noise generator 1), bumps (generator 3), dents, granite (generators 2 and 1), wrinkles
 // (generators 2 and 3), agate. (waves and ripples are not exact yet: their wave centres are

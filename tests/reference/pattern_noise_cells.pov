@@ -1,4 +1,3 @@
-// needs-exact-noise
 // Tests: the cell patterns, whose random cell values come from POV-Ray's random tables:
 // cells, crackle (default form, form <1, 0, 0>, metric 1, offset, solid).
 #version 3.7;

@@ -1,4 +1,3 @@
-// needs-exact-noise
 // Tests: turbulence: the classic modifier on a checker (float and vector amounts, octaves,
 // omega, lambda), the patterns that handle it themselves (marble, wood, spiral1, agate with
 // agate_turb), a turbulence warp between transformations, and a repeated black hole with

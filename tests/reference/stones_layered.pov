@@ -1,4 +1,3 @@
-// needs-exact-noise
 // Tests: stones.inc's layered stone textures on six balls: crackle layers (T_Stone25),
 // granite under gradient and agate layers with classic turbulence (T_Stone26), onion over
 // granite (T_Stone42), a granite normal under wrinkles (T_Stone44), granite and marble
