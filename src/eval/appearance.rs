@@ -2,7 +2,7 @@
 //! are in `finish.rs`).
 
 use super::stream::Stream;
-use super::texture_maps::{layered, AppearanceMap, UnsupportedWord};
+use super::texture_maps::{layered, AppearanceMap};
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
@@ -10,12 +10,8 @@ use crate::scene::{
     BlendMap, Colour, CompoundTexture, Pattern, Pigment, PigmentMap, Texture, Transform,
 };
 use crate::syntax::ast::{BlockHead, Expr, Item};
-use glam::DVec3;
 use std::rc::Rc;
 use std::sync::Arc;
-
-/// Patterns POV-Ray has that durer does not render yet (they fall back to their first colour).
-pub(crate) const UNSUPPORTED_PATTERNS: &[&str] = &["function"];
 
 impl Evaluator {
     /// `texture { [Ident] pigment normal finish transforms }`, or a pattern of whole
@@ -66,14 +62,8 @@ impl Evaluator {
                 }
             }
             if let Item::Keyword(word, span) = &item {
-                match self.unsupported_pattern_word(word, *span, stream, "texture")? {
-                    UnsupportedWord::Other => {}
-                    UnsupportedWord::Modifier => continue,
-                    UnsupportedWord::Pattern(spec) => {
-                        pattern = Some((*spec, None, *span));
-                        pattern_transform = Transform::IDENTITY;
-                        continue;
-                    }
+                if self.skipped_modifier_without_pattern(word, *span, stream, "texture")? {
+                    continue;
                 }
             }
             match &item {
@@ -431,19 +421,6 @@ impl Evaluator {
                             "`poly_wave` has no pattern to modify here; it is ignored",
                         );
                         let _ = self.optional_bool(stream)?;
-                    }
-                    w if UNSUPPORTED_PATTERNS.contains(&w) => {
-                        self.warn(
-                            *span,
-                            format!("pattern `{w}` is not supported yet; its first colour is used"),
-                        );
-                        pigment = Pigment::Pattern {
-                            pattern: Box::new(Pattern::new(crate::pattern::PatternKind::Gradient(
-                                DVec3::ZERO,
-                            ))),
-                            map: PigmentMap::Colours(grey_ramp()),
-                            transform: Transform::IDENTITY,
-                        };
                     }
                     _ => return Err(self.unexpected_in(&item, "pigment")),
                 },

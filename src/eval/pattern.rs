@@ -21,7 +21,7 @@ use crate::pattern::{
     default_colour_map, Altitude, BlackHole, Colouring, Crackle, DensityFile, Fractal, FractalKind,
     MagnetType, Mapping, MappingKind, PatternKind, PatternSpec, Repeat, Slope, Warp, WaveShape,
 };
-use crate::syntax::ast::{Block, BlockHead, Item};
+use crate::syntax::ast::{Block, BlockHead, Expr, Item};
 
 /// Largest fractal iteration count accepted (POV-Ray allows up to 2^32 − 1; more than this
 /// would only make a render hang).
@@ -141,7 +141,7 @@ impl Evaluator {
         .into()
     }
 
-    /// When `item` is a pattern written as a block (`image_pattern { .. }`,
+    /// When `item` is a pattern written as a block (`function { .. }`, `image_pattern { .. }`,
     /// `pigment_pattern { .. }`, `slope { .. }`, `object { .. }`), parses it. For `object`
     /// the block list (the items for outside and inside) is inside the block: the stream
     /// holding it comes back too, for the owner to read the list from.
@@ -149,6 +149,13 @@ impl Evaluator {
         &mut self,
         item: &Item,
     ) -> EvalResult<Option<(PatternSpec, Option<Stream>)>> {
+        if let Item::Expr(Expr::Function(literal)) = item {
+            let function = self.compile_function(literal)?;
+            return Ok(Some((
+                PatternSpec::new(PatternKind::Function(function)),
+                None,
+            )));
+        }
         let Item::Block(block) = item else {
             return Ok(None);
         };

@@ -6,14 +6,12 @@
 //! [`Texture`]. Holds: bad entries (no key, a key that is not a float, nothing after the key,
 //! more than 256 entries) are errors at the entry's span.
 
-use super::appearance::UNSUPPORTED_PATTERNS;
 use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::scene::{
-    BlendMap, CompoundTexture, Normal, NormalSource, Pattern, PatternKind, Pigment, SlopeEntry,
-    Texture, Transform,
+    BlendMap, CompoundTexture, Normal, NormalSource, Pigment, SlopeEntry, Texture, Transform,
 };
 use crate::syntax::ast::{Block, BlockHead, Item};
 use std::rc::Rc;
@@ -47,27 +45,16 @@ pub enum AppearanceMap {
     Slopes(Vec<SlopeEntry>),
 }
 
-/// What [`Evaluator::unsupported_pattern_word`] found.
-pub(crate) enum UnsupportedWord {
-    /// Not a pattern keyword or modifier durer leaves out.
-    Other,
-    /// A modifier, skipped.
-    Modifier,
-    /// A pattern durer cannot render yet: a stand-in with the value 0 everywhere (the first
-    /// entry of a map, no bumps).
-    Pattern(Box<Pattern>),
-}
-
 impl Evaluator {
-    /// Pattern keywords and modifiers durer does not render yet, inside `normal` and
-    /// `texture`: warns once and skips their operands.
-    pub(crate) fn unsupported_pattern_word(
+    /// A pattern modifier written in `normal` or `texture` before any pattern (which it would
+    /// modify): warns, skips its operands and returns true; false for any other word.
+    pub(crate) fn skipped_modifier_without_pattern(
         &mut self,
         word: &str,
         span: Span,
         stream: &mut Stream,
         owner: &str,
-    ) -> EvalResult<UnsupportedWord> {
+    ) -> EvalResult<bool> {
         match word {
             "turbulence" | "octaves" | "omega" | "lambda" | "frequency" | "phase"
             | "agate_turb" => {
@@ -76,30 +63,21 @@ impl Evaluator {
                     format!("{owner} `{word}` is not supported yet; it is ignored"),
                 );
                 let _ = self.expect_value(stream, "a value")?;
-                Ok(UnsupportedWord::Modifier)
+                Ok(true)
             }
             "ramp_wave" | "triangle_wave" | "sine_wave" | "scallop_wave" | "cubic_wave" => {
                 self.warn(
                     span,
                     format!("`{word}` is not supported yet; it is ignored"),
                 );
-                Ok(UnsupportedWord::Modifier)
+                Ok(true)
             }
             "poly_wave" => {
                 self.warn(span, "`poly_wave` is not supported yet; it is ignored");
                 let _ = self.optional_bool(stream)?;
-                Ok(UnsupportedWord::Modifier)
+                Ok(true)
             }
-            w if UNSUPPORTED_PATTERNS.contains(&w) => {
-                self.warn(
-                    span,
-                    format!("pattern `{w}` in `{owner}` is not supported yet; it is left flat"),
-                );
-                Ok(UnsupportedWord::Pattern(Box::new(Pattern::new(
-                    PatternKind::Gradient(glam::DVec3::ZERO),
-                ))))
-            }
-            _ => Ok(UnsupportedWord::Other),
+            _ => Ok(false),
         }
     }
 
@@ -327,7 +305,11 @@ impl Evaluator {
                     pattern: spec.clone(),
                     slope_map: None,
                 });
-                fresh.amount = preset_amount.unwrap_or(fresh.amount);
+                // `normal { function { .. } 0.5 }`: an amount may follow the pattern.
+                fresh.amount = match self.optional_amount(stream)? {
+                    Some(amount) => amount,
+                    None => preset_amount.unwrap_or(fresh.amount),
+                };
                 if let (Some(count), Some(mut list)) = (spec.block_count(), list) {
                     let blocks = self.normal_block_list(&mut list, count)?;
                     if !blocks.is_empty() {
@@ -395,38 +377,9 @@ impl Evaluator {
                 }
             }
             if let Item::Keyword(word, span) = &item {
-                match self.unsupported_pattern_word(word, *span, stream, "normal")? {
-                    UnsupportedWord::Other => {}
-                    UnsupportedWord::Modifier => continue,
-                    UnsupportedWord::Pattern(pattern) => {
-                        let mut fresh = Normal::new(NormalSource::Pattern {
-                            pattern: *pattern,
-                            slope_map: None,
-                        });
-                        if let Some(amount) = self.optional_amount(stream)? {
-                            fresh.amount = amount;
-                        }
-                        normal = Some(fresh);
-                        pattern_started = true;
-                        continue;
-                    }
+                if self.skipped_modifier_without_pattern(word, *span, stream, "normal")? {
+                    continue;
                 }
-            }
-            // `normal { function { .. } [amount] }`: a function pattern.
-            if let Item::Expr(crate::syntax::ast::Expr::Function(literal)) = &item {
-                let function = self.compile_function(literal)?;
-                let mut fresh = Normal::new(NormalSource::Pattern {
-                    pattern: crate::pattern::PatternSpec::new(
-                        crate::pattern::PatternKind::Function(function),
-                    ),
-                    slope_map: None,
-                });
-                if let Some(amount) = self.optional_amount(stream)? {
-                    fresh.amount = amount;
-                }
-                normal = Some(fresh);
-                pattern_started = true;
-                continue;
             }
             match &item {
                 Item::Keyword(word, span) => match &**word {
