@@ -361,7 +361,7 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             arity(ev, 1)?;
             let defined = match &call.arguments[0] {
                 crate::syntax::ast::Argument::Expr(crate::syntax::ast::Expr::Ident(n, _)) => {
-                    ev.lookup(n).is_some()
+                    ev.lookup(*n).is_some()
                 }
                 _ => true,
             };

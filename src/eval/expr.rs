@@ -7,6 +7,7 @@ use super::{EvalResult, Evaluator, STRING_SIZE_LIMIT};
 use crate::diag::Span;
 use crate::scene::Colour;
 use crate::syntax::ast::{BinaryOp, Call, Expr, Item, UnaryOp};
+use crate::syntax::symbol::Symbol;
 use glam::DVec3;
 use std::rc::Rc;
 
@@ -218,8 +219,8 @@ impl Evaluator {
         builtin_constant(name, self).is_some()
     }
 
-    fn eval_ident(&mut self, name: &Rc<str>, span: Span) -> EvalResult<Value> {
-        if let Some(value) = self.lookup(name) {
+    fn eval_ident(&mut self, name: &Symbol, span: Span) -> EvalResult<Value> {
+        if let Some(value) = self.lookup(*name) {
             return Ok(value.clone());
         }
         if let Some(value) = builtin_constant(name, self) {
@@ -419,7 +420,7 @@ impl Evaluator {
     }
 
     fn eval_call(&mut self, call: &Rc<Call>) -> EvalResult<Value> {
-        match self.lookup(&call.name) {
+        match self.lookup(call.name) {
             Some(Value::Macro(_)) => return self.call_macro_value(call),
             Some(Value::Function(function)) => {
                 let function = function.clone();

@@ -8,6 +8,7 @@ use super::value::{Value, Vector};
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::syntax::ast::{Expr, Target, WriteValue};
+use crate::syntax::symbol::Symbol;
 use std::io::Write;
 use std::path::{Component, Path, PathBuf};
 use std::rc::Rc;
@@ -24,7 +25,7 @@ impl Evaluator {
     /// `#fopen Handle "name" read|write|append`.
     pub(crate) fn file_open(
         &mut self,
-        handle: &Rc<str>,
+        handle: &Symbol,
         path: &Expr,
         mode: &str,
         span: Span,
@@ -111,7 +112,7 @@ impl Evaluator {
             .into())
     }
 
-    fn file_index(&self, handle: &str, span: Span) -> EvalResult<usize> {
+    fn file_index(&self, handle: Symbol, span: Span) -> EvalResult<usize> {
         match self.lookup(handle) {
             Some(Value::File(index)) if matches!(self.files.get(*index), Some(Some(_))) => {
                 Ok(*index)
@@ -125,8 +126,8 @@ impl Evaluator {
 
     /// `#fclose Handle`; like POV-Ray, closing a handle that is not open (for example one
     /// already undefined at the end of a read) does nothing.
-    pub(crate) fn file_close(&mut self, handle: &Rc<str>, span: Span) -> EvalResult<()> {
-        let Ok(index) = self.file_index(handle, span) else {
+    pub(crate) fn file_close(&mut self, handle: &Symbol, span: Span) -> EvalResult<()> {
+        let Ok(index) = self.file_index(*handle, span) else {
             return Ok(());
         };
         if let Some(DataFile::Writing(mut writer)) = self.files[index].take() {
@@ -136,7 +137,7 @@ impl Evaluator {
                     .into());
             }
         }
-        self.undefine(handle);
+        self.undefine(*handle);
         Ok(())
     }
 
@@ -144,11 +145,11 @@ impl Evaluator {
     /// a value after `uint8`, `sint16be` and the like as binary integers, one per component.
     pub(crate) fn file_write(
         &mut self,
-        handle: &Rc<str>,
+        handle: &Symbol,
         values: &[WriteValue],
         span: Span,
     ) -> EvalResult<()> {
-        let index = self.file_index(handle, span)?;
+        let index = self.file_index(*handle, span)?;
         let mut bytes = Vec::new();
         for WriteValue { binary, value } in values {
             let evaluated = self.eval_expr(value)?;
@@ -212,11 +213,11 @@ impl Evaluator {
     /// `#read (Handle, targets..)`: comma-separated floats, vectors and strings.
     pub(crate) fn file_read(
         &mut self,
-        handle: &Rc<str>,
+        handle: &Symbol,
         targets: &[Target],
         span: Span,
     ) -> EvalResult<()> {
-        let index = self.file_index(handle, span)?;
+        let index = self.file_index(*handle, span)?;
         for target in targets {
             let next = match &mut self.files[index] {
                 Some(DataFile::Reading { text, position }) => next_datum(text, position),
@@ -231,7 +232,7 @@ impl Evaluator {
                 Ok(None) => {
                     // End of file: the handle becomes undefined, as in POV-Ray.
                     self.files[index] = None;
-                    self.undefine(handle);
+                    self.undefine(*handle);
                     return Ok(());
                 }
                 Err(message) => {
@@ -250,13 +251,13 @@ impl Evaluator {
         };
         if at_end {
             self.files[index] = None;
-            self.undefine(handle);
+            self.undefine(*handle);
         }
         Ok(())
     }
 
     /// Removes the innermost version of an identifier (`#undef`).
-    pub(crate) fn undefine(&mut self, name: &str) {
+    pub(crate) fn undefine(&mut self, name: Symbol) {
         if let Some(index) = self.scopes.innermost_holder(name) {
             self.scopes.remove(index, name);
         }

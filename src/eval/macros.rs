@@ -5,12 +5,13 @@ use super::stream::Stream;
 use super::value::Value;
 use super::{Entered, Entering, EvalResult, Evaluator};
 use crate::syntax::ast::{Call, Expr, Item};
+use crate::syntax::symbol::Symbol;
 use std::rc::Rc;
 
 impl Evaluator {
     /// Expands a macro call in place: binds the arguments in a new scope and streams the body.
     pub(crate) fn enter_macro(&mut self, call: &Rc<Call>, stream: &mut Stream) -> EvalResult<()> {
-        let Some(Value::Macro(definition)) = self.lookup(&call.name).cloned() else {
+        let Some(Value::Macro(definition)) = self.lookup(call.name).cloned() else {
             return Err(self.undefined(&call.name, call.name_span).into());
         };
         let Some(body) = definition.body.clone() else {
@@ -45,15 +46,15 @@ impl Evaluator {
                 )
                 .into());
         }
-        let scope: Vec<(Rc<str>, Value)> = definition
+        let scope: Vec<(Symbol, Value)> = definition
             .parameters
             .iter()
-            .map(|parameter| parameter.name.clone())
+            .map(|parameter| parameter.name)
             .zip(values)
             .collect();
         self.enter_nesting(call.span)?;
         self.trace.push(Entered {
-            what: Entering::Macro(definition.name.clone()),
+            what: Entering::Macro(definition.name),
             span: call.span,
         });
         self.scopes.push(scope);
@@ -73,19 +74,19 @@ impl Evaluator {
                     // Point straight at the variable the name resolves to (following a
                     // reference the caller itself holds), so recursive macros passing a
                     // parameter on do not build chains of references.
-                    let value = if let Some((index, value)) = self.scopes.innermost_binding(name) {
+                    let value = if let Some((index, value)) = self.scopes.innermost_binding(*name) {
                         match value {
                             Value::Reference { scope, name } => Value::Reference {
                                 scope: *scope,
-                                name: name.clone(),
+                                name: *name,
                             },
                             _ => Value::Reference {
                                 scope: index,
-                                name: name.clone(),
+                                name: *name,
                             },
                         }
                     } else if self.is_builtin_name(name) {
-                        self.eval_expr(&Expr::Ident(name.clone(), *span))?
+                        self.eval_expr(&Expr::Ident(*name, *span))?
                     } else {
                         // POV-Ray refuses to pass a name that holds no value.
                         let mut d = self.undefined(name, *span);

@@ -35,6 +35,7 @@ use crate::scene::{
     Transform,
 };
 use crate::syntax::ast::Item;
+use crate::syntax::symbol::Symbol;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
@@ -163,7 +164,7 @@ const EMBEDDED_FOLDER: &str = "<durer standard library>";
 #[derive(Clone, Debug)]
 pub(crate) enum Entering {
     /// A call of the named macro.
-    Macro(Rc<str>),
+    Macro(Symbol),
     /// An include of the named file.
     File(Rc<str>),
 }
@@ -191,7 +192,7 @@ impl Entered {
 }
 
 /// One symbol table: the global one, an include file's or a macro call's.
-pub(crate) type Scope = HashMap<Rc<str>, Value, FastHash>;
+pub(crate) type Scope = HashMap<Symbol, Value, FastHash>;
 
 pub(crate) struct Evaluator {
     pub(crate) options: EvalOptions,
@@ -428,15 +429,16 @@ impl Evaluator {
     }
 
     /// Looks an identifier up, innermost scope first, following references.
-    pub(crate) fn lookup(&self, name: &str) -> Option<&Value> {
+    #[inline]
+    pub(crate) fn lookup(&self, name: Symbol) -> Option<&Value> {
         match self.scopes.innermost_binding(name)?.1 {
-            Value::Reference { scope, name } => self.lookup_from(*scope, name),
+            Value::Reference { scope, name } => self.lookup_from(*scope, *name),
             other => Some(other),
         }
     }
 
     /// Looks an identifier up in scope `top` and the scopes outside it, following references.
-    pub(crate) fn lookup_from(&self, top: usize, name: &str) -> Option<&Value> {
+    pub(crate) fn lookup_from(&self, top: usize, name: Symbol) -> Option<&Value> {
         let (mut top, mut name) = (top, name);
         loop {
             let (index, value) = self.scopes.binding_at_or_below(name, top)?;
@@ -446,7 +448,7 @@ impl Evaluator {
                     name: target,
                 } if *scope < index => {
                     top = *scope;
-                    name = target;
+                    name = *target;
                 }
                 Value::Reference { .. } => return None,
                 other => return Some(other),
@@ -456,37 +458,37 @@ impl Evaluator {
 
     /// Where `#declare name` writes: the innermost existing version (following references),
     /// or the global scope for a new name.
-    pub(crate) fn declare_slot(&self, name: &Rc<str>) -> (usize, Rc<str>) {
+    pub(crate) fn declare_slot(&self, name: Symbol) -> (usize, Symbol) {
         self.slot_from(self.scopes.len() - 1, name)
     }
 
     /// Where `#local name` writes: the innermost scope, except that a macro parameter passed
     /// an identifier writes through to the caller's variable, as in POV-Ray.
-    pub(crate) fn local_slot(&self, name: &Rc<str>) -> (usize, Rc<str>) {
+    pub(crate) fn local_slot(&self, name: Symbol) -> (usize, Symbol) {
         let innermost = self.scopes.len() - 1;
         match self.scopes.get(innermost, name) {
             Some(Value::Reference {
                 scope,
                 name: target,
-            }) if *scope < innermost => self.slot_from(*scope, target),
-            _ => (innermost, name.clone()),
+            }) if *scope < innermost => self.slot_from(*scope, *target),
+            _ => (innermost, name),
         }
     }
 
     /// The innermost existing version of `name` in scope `top` or outside it, following
     /// references; the global scope when there is none.
-    fn slot_from(&self, top: usize, name: &Rc<str>) -> (usize, Rc<str>) {
+    fn slot_from(&self, top: usize, name: Symbol) -> (usize, Symbol) {
         let mut top = top;
-        let mut name = name.clone();
+        let mut name = name;
         loop {
-            match self.scopes.binding_at_or_below(&name, top) {
+            match self.scopes.binding_at_or_below(name, top) {
                 Some((i, value)) => match value {
                     Value::Reference {
                         scope,
                         name: target,
                     } if *scope < i => {
                         top = *scope;
-                        name = target.clone();
+                        name = *target;
                     }
                     _ => return (i, name),
                 },

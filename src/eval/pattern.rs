@@ -478,7 +478,7 @@ impl Evaluator {
         let mut warp: Option<Warp> = None;
         while let Some(item) = self.next_item(stream)? {
             let (word, span) = match &item {
-                Item::Keyword(word, span) => (word.clone(), *span),
+                Item::Keyword(word, span) => (*word, *span),
                 Item::Comma(_) => continue,
                 _ => return Err(self.unexpected_in(&item, "warp")),
             };

@@ -5,6 +5,7 @@ use super::value::Value;
 use super::{EvalResult, Evaluator, LOOP_ITERATION_LIMIT};
 use crate::diag::Span;
 use crate::syntax::ast::{Directive, DirectiveKind, Expr, Item, MessageLevel, SwitchLabel};
+use crate::syntax::symbol::Symbol;
 use std::rc::Rc;
 
 /// A stack of item lists being read; the top frame is read first.
@@ -113,7 +114,7 @@ impl Evaluator {
             frame.position += 1;
             match item {
                 Item::Directive(directive) => self.run_directive(&directive, stream)?,
-                Item::Expr(Expr::Call(ref call)) if self.is_macro(&call.name) => {
+                Item::Expr(Expr::Call(ref call)) if self.is_macro(call.name) => {
                     self.enter_macro(call, stream)?
                 }
                 other => return Ok(Some(other)),
@@ -140,7 +141,7 @@ impl Evaluator {
         Ok(())
     }
 
-    fn is_macro(&self, name: &str) -> bool {
+    fn is_macro(&self, name: Symbol) -> bool {
         matches!(self.lookup(name), Some(Value::Macro(_)))
     }
 
@@ -189,7 +190,7 @@ impl Evaluator {
                 };
                 *iterations += 1;
                 // POV-Ray reads the loop variable back, so the body may change it.
-                let current = match self.lookup(variable) {
+                let current = match self.lookup(*variable) {
                     Some(Value::Float(f)) => *f,
                     _ => *value,
                 };
@@ -251,14 +252,14 @@ impl Evaluator {
     }
 
     /// `#declare`-style assignment of a plain name (the innermost existing version, else global).
-    pub(crate) fn assign_declare_name(&mut self, name: &Rc<str>, value: Value) {
-        let (scope, name) = self.declare_slot(name);
+    pub(crate) fn assign_declare_name(&mut self, name: &Symbol, value: Value) {
+        let (scope, name) = self.declare_slot(*name);
         self.scopes.insert(scope, name, value);
     }
 
     /// `#local`-style assignment of a plain name in the innermost scope.
-    pub(crate) fn assign_local(&mut self, name: &Rc<str>, value: Value) {
-        let (scope, name) = self.local_slot(name);
+    pub(crate) fn assign_local(&mut self, name: &Symbol, value: Value) {
+        let (scope, name) = self.local_slot(*name);
         self.scopes.insert(scope, name, value);
     }
 
@@ -282,13 +283,13 @@ impl Evaluator {
                 self.assign(*local, target, value)?;
             }
             DirectiveKind::Undef(name, name_span) => {
-                if self.scopes.innermost_holder(name).is_none() {
+                if self.scopes.innermost_holder(*name).is_none() {
                     self.warn(
                         *name_span,
                         format!("`#undef` of unknown identifier `{name}`"),
                     );
                 }
-                self.undefine(name);
+                self.undefine(*name);
             }
             DirectiveKind::If { branches, .. } => self.run_first_true_branch(branches, stream)?,
             DirectiveKind::IfDefined {
@@ -352,7 +353,7 @@ impl Evaluator {
             DirectiveKind::Break => self.run_break(stream),
             DirectiveKind::Macro(definition) => {
                 self.scopes
-                    .insert(0, definition.name.clone(), Value::Macro(definition.clone()));
+                    .insert(0, definition.name, Value::Macro(definition.clone()));
             }
             DirectiveKind::Include(name) => {
                 let name = self.eval_string(name)?;
@@ -484,7 +485,7 @@ impl Evaluator {
 
     /// Whether `#ifdef` finds the target (an identifier or an assigned array element).
     fn is_defined(&mut self, target: &crate::syntax::ast::Target) -> EvalResult<bool> {
-        let Some(value) = self.lookup(&target.name).cloned() else {
+        let Some(value) = self.lookup(target.name).cloned() else {
             return Ok(false);
         };
         if target.indices.is_empty() {
@@ -510,16 +511,16 @@ impl Evaluator {
         value: Value,
     ) -> EvalResult<()> {
         let value = match value {
-            Value::Reference { scope, name } => match self.lookup_from(scope, &name) {
+            Value::Reference { scope, name } => match self.lookup_from(scope, name) {
                 Some(v) => v.clone(),
                 None => return Err(self.undefined(&name, target.span).into()),
             },
             v => v,
         };
         let (scope, name) = if local {
-            self.local_slot(&target.name)
+            self.local_slot(target.name)
         } else {
-            self.declare_slot(&target.name)
+            self.declare_slot(target.name)
         };
         if target.indices.is_empty() {
             self.scopes.insert(scope, name, value);
@@ -529,12 +530,12 @@ impl Evaluator {
         for index in &target.indices {
             indices.push(self.eval_float(index)?);
         }
-        let (scope, name) = if local && self.scopes.get(scope, &name).is_none() {
-            self.declare_slot(&target.name)
+        let (scope, name) = if local && self.scopes.get(scope, name).is_none() {
+            self.declare_slot(target.name)
         } else {
             (scope, name)
         };
-        let sizes = match self.scopes.get(scope, &name) {
+        let sizes = match self.scopes.get(scope, name) {
             Some(Value::Array(array)) => array.sizes.clone(),
             _ => {
                 return Err(self
@@ -553,7 +554,7 @@ impl Evaluator {
                 .into());
         };
         // Changed in place: the elements are copied only when another value shares them.
-        if let Some(Value::Array(array)) = self.scopes.get_mut(scope, &name) {
+        if let Some(Value::Array(array)) = self.scopes.get_mut(scope, name) {
             Rc::make_mut(array).elements[offset] = Some(value);
         }
         Ok(())

@@ -420,8 +420,8 @@ impl Evaluator {
                 },
                 Item::Block(block) => {
                     let head = match &block.head {
-                        BlockHead::Word(w) => w.clone(),
-                        _ => Rc::from(""),
+                        BlockHead::Word(w) => *w,
+                        _ => crate::syntax::symbol::Symbol::intern(""),
                     };
                     let mut body = Stream::new(block.body.clone());
                     match &*head {

@@ -57,7 +57,10 @@ pub enum Value {
     /// What a block durer does not support yet evaluates to: it is left out of the scene.
     Nothing,
     /// A parameter passed by reference: the caller's variable `name` in scope `scope`.
-    Reference { scope: usize, name: Rc<str> },
+    Reference {
+        scope: usize,
+        name: crate::syntax::symbol::Symbol,
+    },
 }
 
 /// A user-defined function: its source and the form compiled where it was written.

@@ -92,8 +92,8 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
 impl Evaluator {
     /// Evaluates a block to its value.
     pub(crate) fn eval_block(&mut self, block: &Block) -> EvalResult<Value> {
-        let head: Rc<str> = match &block.head {
-            BlockHead::Word(word) => word.clone(),
+        let head: crate::syntax::symbol::Symbol = match &block.head {
+            BlockHead::Word(word) => *word,
             BlockHead::Conditional(branches) => {
                 let mut chosen = None;
                 for (condition, word) in branches {
@@ -102,7 +102,7 @@ impl Evaluator {
                         None => true,
                     };
                     if holds {
-                        chosen = Some(word.clone());
+                        chosen = Some(*word);
                         break;
                     }
                 }
@@ -297,7 +297,7 @@ impl Evaluator {
             )
             .with_label("unexpected here");
         if let Item::Expr(crate::syntax::ast::Expr::Ident(name, _)) = item {
-            if self.lookup(name).is_none() {
+            if self.lookup(*name).is_none() {
                 d.message = format!("unknown keyword or identifier `{name}` inside `{block}`");
                 if let Some(s) = did_you_mean(name, crate::syntax::keywords::ALL.iter().copied()) {
                     d = d.with_help(format!("did you mean `{s}`?"));

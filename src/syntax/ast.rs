@@ -7,7 +7,7 @@ use crate::diag::Span;
 use std::rc::Rc;
 
 /// An identifier or keyword as written.
-pub type Name = Rc<str>;
+pub type Name = super::symbol::Symbol;
 
 /// One element of a block body or of the file's top level.
 #[derive(Clone, Debug)]

@@ -53,7 +53,7 @@ impl Lowerer {
                 )
             }
             Rule::comma => Item::Comma(span),
-            Rule::keyword => Item::Keyword(Rc::from(pair.as_str()), span),
+            Rule::keyword => Item::Keyword(Name::from(pair.as_str()), span),
             Rule::expr => Item::Expr(self.expr(pair)),
             Rule::EOI => return None,
             _ => Item::Directive(Rc::new(self.directive(pair))),
@@ -66,7 +66,7 @@ impl Lowerer {
         let first = inner.next().expect("block has a head");
         let head_span = self.span(&first);
         let head = match first.as_rule() {
-            Rule::block_head => BlockHead::Word(Rc::from(first.as_str())),
+            Rule::block_head => BlockHead::Word(Name::from(first.as_str())),
             _ => {
                 // conditional_head: (expr block_head)* (block_head)? end
                 let mut branches = Vec::new();
@@ -74,7 +74,7 @@ impl Lowerer {
                 for p in first.into_inner() {
                     match p.as_rule() {
                         Rule::expr => pending = Some(self.expr(p)),
-                        Rule::block_head => branches.push((pending.take(), Rc::from(p.as_str()))),
+                        Rule::block_head => branches.push((pending.take(), Name::from(p.as_str()))),
                         _ => {}
                     }
                 }
@@ -170,7 +170,7 @@ impl Lowerer {
             value = match post.as_rule() {
                 Rule::member => {
                     let name = post.into_inner().next().map(|w| w.as_str()).unwrap_or("");
-                    Expr::Member(Rc::new(value), Rc::from(name), span)
+                    Expr::Member(Rc::new(value), Name::from(name), span)
                 }
                 _ => {
                     let index = self.full_expr(post.into_inner().next().expect("index"));
@@ -191,7 +191,7 @@ impl Lowerer {
             }
             Rule::vector => Expr::Vector(pair.into_inner().map(|p| self.expr(p)).collect(), span),
             Rule::paren => self.full_expr(pair.into_inner().next().expect("paren")),
-            Rule::ident => Expr::Ident(Rc::from(pair.as_str()), span),
+            Rule::ident => Expr::Ident(Name::from(pair.as_str()), span),
             Rule::call => Expr::Call(Rc::new(self.call(pair))),
             Rule::colour => Expr::Colour(Rc::new(self.colour(pair))),
             Rule::array_literal => Expr::Array(Rc::new(self.array(pair))),
@@ -212,7 +212,7 @@ impl Lowerer {
                     .map(|a| match a.as_rule() {
                         Rule::block => Argument::Block(Rc::new(self.block(a))),
                         Rule::spline_kind => {
-                            Argument::Expr(Expr::Ident(Rc::from(a.as_str()), self.span(&a)))
+                            Argument::Expr(Expr::Ident(Name::from(a.as_str()), self.span(&a)))
                         }
                         _ => Argument::Expr(self.full_expr(a)),
                     })
@@ -220,7 +220,7 @@ impl Lowerer {
             })
             .unwrap_or_default();
         Call {
-            name: Rc::from(name.as_str()),
+            name: Name::from(name.as_str()),
             name_span,
             arguments,
             span,
@@ -338,11 +338,11 @@ impl Lowerer {
             .map(|p| {
                 let span = self.span(&p);
                 let mut optional = false;
-                let mut name = Rc::from("");
+                let mut name = Name::from("");
                 for q in p.into_inner() {
                     match q.as_rule() {
                         Rule::optional => optional = true,
-                        _ => name = Rc::from(q.as_str()),
+                        _ => name = Name::from(q.as_str()),
                     }
                 }
                 Parameter {
@@ -357,7 +357,7 @@ impl Lowerer {
     fn target(&self, pair: Pair<Rule>) -> Target {
         let span = self.span(&pair);
         let mut inner = pair.into_inner();
-        let name = Rc::from(inner.next().map(|p| p.as_str()).unwrap_or(""));
+        let name = Name::from(inner.next().map(|p| p.as_str()).unwrap_or(""));
         let indices = inner
             .map(|p| self.full_expr(p.into_inner().next().expect("index expression")))
             .collect();
@@ -428,7 +428,7 @@ impl Lowerer {
             }
             Rule::undef => {
                 let name = inner.next().expect("undef name");
-                DirectiveKind::Undef(Rc::from(name.as_str()), self.span(&name))
+                DirectiveKind::Undef(Name::from(name.as_str()), self.span(&name))
             }
             Rule::if_directive => {
                 let condition = self.expr(inner.next().expect("if condition"));
@@ -445,7 +445,7 @@ impl Lowerer {
                 let target_pair = inner.next().expect("ifdef target");
                 let tspan = self.span(&target_pair);
                 let mut tinner = target_pair.into_inner();
-                let name = Rc::from(tinner.next().map(|p| p.as_str()).unwrap_or(""));
+                let name = Name::from(tinner.next().map(|p| p.as_str()).unwrap_or(""));
                 let indices = tinner
                     .map(|p| self.full_expr(p.into_inner().next().expect("index")))
                     .collect();
@@ -471,7 +471,7 @@ impl Lowerer {
             Rule::for_directive => {
                 let variable = inner.next().expect("for variable");
                 let variable_span = self.span(&variable);
-                let variable = Rc::from(variable.as_str());
+                let variable = Name::from(variable.as_str());
                 let start = self.full_expr(inner.next().expect("for start"));
                 let end = self.full_expr(inner.next().expect("for end"));
                 let mut step = None;
@@ -540,7 +540,7 @@ impl Lowerer {
                     _ => None,
                 });
                 DirectiveKind::Macro(Rc::new(MacroDefinition {
-                    name: Rc::from(name.as_str()),
+                    name: Name::from(name.as_str()),
                     parameters,
                     body,
                     header_span,
@@ -561,23 +561,23 @@ impl Lowerer {
                 }
             }
             Rule::fopen => {
-                let handle = Rc::from(inner.next().expect("handle").as_str());
+                let handle = Name::from(inner.next().expect("handle").as_str());
                 let path = self.expr(inner.next().expect("path"));
-                let mode = Rc::from(inner.next().expect("mode").as_str());
+                let mode = Name::from(inner.next().expect("mode").as_str());
                 DirectiveKind::FileOpen { handle, path, mode }
             }
             Rule::fclose => {
-                DirectiveKind::FileClose(Rc::from(inner.next().expect("handle").as_str()))
+                DirectiveKind::FileClose(Name::from(inner.next().expect("handle").as_str()))
             }
             Rule::read => {
-                let handle = Rc::from(inner.next().expect("handle").as_str());
+                let handle = Name::from(inner.next().expect("handle").as_str());
                 DirectiveKind::FileRead {
                     handle,
                     targets: inner.map(|p| self.target(p)).collect(),
                 }
             }
             Rule::write => {
-                let handle = Rc::from(inner.next().expect("handle").as_str());
+                let handle = Name::from(inner.next().expect("handle").as_str());
                 let mut values = Vec::new();
                 let mut binary = None;
                 for p in inner {

@@ -7,6 +7,7 @@ pub mod ast;
 mod grammar;
 pub mod keywords;
 mod lower;
+pub mod symbol;
 
 pub use grammar::{Rule, SdlParser};
 

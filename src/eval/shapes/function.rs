@@ -20,6 +20,7 @@ use crate::scene::Pigment;
 use crate::syntax::ast::{
     Argument, BinaryOp, BlockHead, Call, Expr, FunctionBody, FunctionLiteral, Item, UnaryOp,
 };
+use crate::syntax::symbol::Symbol;
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -100,8 +101,11 @@ impl Evaluator {
                 )));
             }
         }
-        let parameters: Vec<Rc<str>> = if function.parameters.is_empty() {
-            ["x", "y", "z"].iter().map(|name| Rc::from(*name)).collect()
+        let parameters: Vec<Symbol> = if function.parameters.is_empty() {
+            ["x", "y", "z"]
+                .iter()
+                .map(|name| Symbol::intern(name))
+                .collect()
         } else {
             function.parameters.clone()
         };
@@ -114,7 +118,7 @@ impl Evaluator {
                 .into());
         }
         if let Expr::Ident(name, span) = body {
-            if let Some(Value::Spline(_)) = self.lookup(name) {
+            if let Some(Value::Spline(_)) = self.lookup(*name) {
                 return Err(self
                     .error(
                         *span,
@@ -214,7 +218,7 @@ impl Evaluator {
     }
 
     /// Compiles one expression; `names` are the parameters (and `sum`/`prod` counters).
-    fn compile_expr(&mut self, expr: &Expr, names: &mut Vec<Rc<str>>) -> EvalResult<Node> {
+    fn compile_expr(&mut self, expr: &Expr, names: &mut Vec<Symbol>) -> EvalResult<Node> {
         if !self.reads_parameters(expr, names) {
             let value = self.eval_expr(expr)?;
             return Ok(Node::Constant(self.to_float(value, expr.span())?));
@@ -274,7 +278,7 @@ impl Evaluator {
     }
 
     /// Compiles a call inside a function body.
-    fn compile_call(&mut self, call: &Call, names: &mut Vec<Rc<str>>) -> EvalResult<Node> {
+    fn compile_call(&mut self, call: &Call, names: &mut Vec<Symbol>) -> EvalResult<Node> {
         let name = &*call.name;
         if let Some(callee) = self.called_function(call)? {
             if callee.output() != Output::Float {
@@ -297,7 +301,7 @@ impl Evaluator {
             let arguments = self.compile_arguments(call, names)?;
             return Ok(Node::Call(callee, arguments.into_boxed_slice()));
         }
-        if let Some(Value::Spline(_)) = self.lookup(name) {
+        if let Some(Value::Spline(_)) = self.lookup(call.name) {
             return Err(self.spline_call_error(call));
         }
         if matches!(name, "sum" | "prod") {
@@ -362,7 +366,7 @@ impl Evaluator {
     /// The compiled user function `call` names, checked against the call's argument count;
     /// `None` when the name is not a function.
     fn called_function(&mut self, call: &Call) -> EvalResult<Option<Arc<Function>>> {
-        let Some(Value::Function(callee)) = self.lookup(&call.name) else {
+        let Some(Value::Function(callee)) = self.lookup(call.name) else {
             return Ok(None);
         };
         let callee = callee.clone();
@@ -383,7 +387,7 @@ impl Evaluator {
         base: &Expr,
         member: &str,
         span: crate::diag::Span,
-        names: &mut Vec<Rc<str>>,
+        names: &mut Vec<Symbol>,
     ) -> EvalResult<Node> {
         let Expr::Call(call) = base else {
             return Err(self
@@ -394,7 +398,7 @@ impl Evaluator {
                 .into());
         };
         let Some(callee) = self.called_function(call)? else {
-            if let Some(Value::Spline(_)) = self.lookup(&call.name) {
+            if let Some(Value::Spline(_)) = self.lookup(call.name) {
                 return Err(self.spline_call_error(call));
             }
             return Err(self
@@ -448,7 +452,7 @@ impl Evaluator {
     }
 
     /// `sum(i, from, to, body)` / `prod(..)`.
-    fn compile_series(&mut self, call: &Call, names: &mut Vec<Rc<str>>) -> EvalResult<Node> {
+    fn compile_series(&mut self, call: &Call, names: &mut Vec<Symbol>) -> EvalResult<Node> {
         let [Argument::Expr(Expr::Ident(counter, _)), Argument::Expr(from), Argument::Expr(to), Argument::Expr(body)] =
             call.arguments.as_slice()
         else {
@@ -467,7 +471,7 @@ impl Evaluator {
         let from = self.compile_expr(from, names)?;
         let to = self.compile_expr(to, names)?;
         let index = names.len();
-        names.push(counter.clone());
+        names.push(*counter);
         let body = self.compile_expr(body, names);
         names.pop();
         Ok(Node::Series {
@@ -477,11 +481,7 @@ impl Evaluator {
         })
     }
 
-    fn compile_arguments(
-        &mut self,
-        call: &Call,
-        names: &mut Vec<Rc<str>>,
-    ) -> EvalResult<Vec<Node>> {
+    fn compile_arguments(&mut self, call: &Call, names: &mut Vec<Symbol>) -> EvalResult<Vec<Node>> {
         if call.arguments.len() > MAX_PARAMETERS {
             return Err(self
                 .error(call.span, format!("more than {MAX_PARAMETERS} arguments"))
@@ -500,7 +500,7 @@ impl Evaluator {
 
     /// True when `expr` reads a parameter or calls a user function (so it must be compiled
     /// rather than evaluated now).
-    fn reads_parameters(&self, expr: &Expr, names: &[Rc<str>]) -> bool {
+    fn reads_parameters(&self, expr: &Expr, names: &[Symbol]) -> bool {
         match expr {
             Expr::Ident(name, _) => names.contains(name),
             Expr::Unary(_, operand, _) => self.reads_parameters(operand, names),
@@ -519,7 +519,7 @@ impl Evaluator {
             }
             Expr::Vector(elements, _) => elements.iter().any(|e| self.reads_parameters(e, names)),
             Expr::Call(call) => {
-                matches!(self.lookup(&call.name), Some(Value::Function(_)))
+                matches!(self.lookup(call.name), Some(Value::Function(_)))
                     || matches!(&*call.name, "sum" | "prod")
                     || call.arguments.iter().any(|argument| match argument {
                         Argument::Expr(e) => self.reads_parameters(e, names),
@@ -646,11 +646,15 @@ mod tests {
         let result = evaluator.run_main(&path);
         std::fs::remove_dir_all(&folder).ok();
         assert!(result.is_ok(), "{:?}", result.err());
-        let Some(Value::Function(literal)) = evaluator.lookup("F").cloned() else {
+        let Some(Value::Function(literal)) = evaluator
+            .lookup(crate::syntax::symbol::Symbol::intern("F"))
+            .cloned()
+        else {
             panic!("F is not a function");
         };
         let compiled = evaluator.compile_function(&literal).unwrap();
-        let array = |name: &str| match evaluator.lookup(name) {
+        let array = |name: &str| match evaluator.lookup(crate::syntax::symbol::Symbol::intern(name))
+        {
             Some(Value::Array(array)) => array.elements.clone(),
             _ => panic!("{name} is not an array"),
         };
