@@ -61,11 +61,12 @@ impl Bvh {
             .enumerate()
             .map(|(index, bounds)| Record::new(bounds, index as u32))
             .collect();
-        // Leaves hold a few primitives each, so a tree has about as many nodes as primitives.
-        let mut nodes = Vec::with_capacity(bounds.len().max(1));
-        if !records.is_empty() {
-            build_node(&mut records, 0, 0, &mut nodes);
-        }
+        let mut nodes = if records.is_empty() {
+            Vec::new()
+        } else {
+            let range = RangeBounds::of(&records);
+            join_pieces(build_pieces(&mut records, range, 0, 0))
+        };
         nodes.shrink_to_fit();
         // The records' boxes are slightly wide; the whole tree's box, which callers read
         // (`min_extent`), is the exact union.
@@ -284,17 +285,19 @@ impl Box32 {
         }
     }
 
+    // Plain comparisons rather than `f32::min`/`max`: the builder's boxes never hold NaN
+    // (their sources are finite), and the NaN handling doubles the cost of these hot loops.
     fn union(&self, other: &Box32) -> Box32 {
         Box32 {
-            min: std::array::from_fn(|i| self.min[i].min(other.min[i])),
-            max: std::array::from_fn(|i| self.max[i].max(other.max[i])),
+            min: std::array::from_fn(|i| lesser(self.min[i], other.min[i])),
+            max: std::array::from_fn(|i| greater(self.max[i], other.max[i])),
         }
     }
 
     fn grown_to(&self, point: [f32; 3]) -> Box32 {
         Box32 {
-            min: std::array::from_fn(|i| self.min[i].min(point[i])),
-            max: std::array::from_fn(|i| self.max[i].max(point[i])),
+            min: std::array::from_fn(|i| lesser(self.min[i], point[i])),
+            max: std::array::from_fn(|i| greater(self.max[i], point[i])),
         }
     }
 
@@ -306,6 +309,59 @@ impl Box32 {
         Aabb {
             min: DVec3::from_array(self.min.map(f64::from)),
             max: DVec3::from_array(self.max.map(f64::from)),
+        }
+    }
+}
+
+#[inline(always)]
+fn lesser(a: f32, b: f32) -> f32 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+#[inline(always)]
+fn greater(a: f32, b: f32) -> f32 {
+    if b > a {
+        b
+    } else {
+        a
+    }
+}
+
+/// The boxes of a range of records: around the records and around their centres.
+#[derive(Clone, Copy)]
+struct RangeBounds {
+    boxes: Box32,
+    centres: Box32,
+}
+
+impl RangeBounds {
+    const EMPTY: RangeBounds = RangeBounds {
+        boxes: Box32::EMPTY,
+        centres: Box32::EMPTY,
+    };
+
+    /// The bounds of `records`, in one pass.
+    fn of(records: &[Record]) -> RangeBounds {
+        records
+            .iter()
+            .fold(RangeBounds::EMPTY, |all, record| all.with(&record.bounds))
+    }
+
+    fn with(&self, bounds: &Box32) -> RangeBounds {
+        RangeBounds {
+            boxes: self.boxes.union(bounds),
+            centres: self.centres.grown_to(bounds.centre()),
+        }
+    }
+
+    fn union(&self, other: &RangeBounds) -> RangeBounds {
+        RangeBounds {
+            boxes: self.boxes.union(&other.boxes),
+            centres: self.centres.union(&other.centres),
         }
     }
 }
@@ -334,22 +390,29 @@ const PARALLEL_RANGE: usize = 16_384;
 /// One bin of the SAH sweep.
 #[derive(Clone, Copy)]
 struct Bin {
-    bounds: Box32,
+    bounds: RangeBounds,
     count: usize,
 }
 
-/// Builds the subtree over `records` (at `offset` in the final order), appending its nodes
-/// to `nodes`; returns the index of its root.
-fn build_node(records: &mut [Record], offset: usize, depth: usize, nodes: &mut Vec<Node>) -> usize {
+/// How a range is split: the first `middle` records go left; each side's bounds.
+struct Split {
+    middle: usize,
+    left: RangeBounds,
+    right: RangeBounds,
+}
+
+/// Builds the subtree over `records` (at `offset` in the final order, with bounds `range`),
+/// appending its nodes to `nodes`; returns the index of its root.
+fn build_node(
+    records: &mut [Record],
+    range: RangeBounds,
+    offset: usize,
+    depth: usize,
+    nodes: &mut Vec<Node>,
+) -> usize {
     let node_index = nodes.len();
-    let mut bounds = Box32::EMPTY;
-    let mut centroid_bounds = Box32::EMPTY;
-    for record in records.iter() {
-        bounds = bounds.union(&record.bounds);
-        centroid_bounds = centroid_bounds.grown_to(record.bounds.centre());
-    }
     let count = records.len();
-    let bounds = bounds.to_aabb();
+    let bounds = range.boxes.to_aabb();
     nodes.push(Node {
         bounds,
         first: offset as u32,
@@ -358,34 +421,74 @@ fn build_node(records: &mut [Record], offset: usize, depth: usize, nodes: &mut V
     if count <= SMALL_LEAF || depth >= MAX_DEPTH {
         return node_index;
     }
-    let Some(middle) = choose_split(records, &bounds, &centroid_bounds) else {
+    let Some(split) = choose_split(records, &bounds, &range.centres) else {
         return node_index;
     };
+    let middle = split.middle;
     let (left, right) = records.split_at_mut(middle);
-    let right_index = if count >= PARALLEL_RANGE {
-        let build = |part: &mut [Record], part_offset: usize| {
-            let mut part_nodes = Vec::with_capacity(part.len());
-            build_node(part, part_offset, depth + 1, &mut part_nodes);
-            part_nodes
-        };
-        let (left_nodes, right_nodes) =
-            rayon::join(|| build(left, offset), || build(right, offset + middle));
-        append_subtree(nodes, left_nodes);
-        let right_index = nodes.len();
-        append_subtree(nodes, right_nodes);
-        right_index
-    } else {
-        build_node(left, offset, depth + 1, nodes);
-        build_node(right, offset + middle, depth + 1, nodes)
-    };
+    build_node(left, split.left, offset, depth + 1, nodes);
+    let right_index = build_node(right, split.right, offset + middle, depth + 1, nodes);
     nodes[node_index].first = right_index as u32;
     nodes[node_index].count = 0;
     node_index
 }
 
-/// Reorders `records` for the best split and returns the split position within them, or
-/// `None` when a leaf is better.
-fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Box32) -> Option<usize> {
+/// A subtree built in pieces on several threads: chunks of nodes in their final order, each
+/// with the amount to add to its interior nodes' right-child links, which count from the
+/// subtree's root. Joining the pieces once at the end copies each node once, however many
+/// levels were built in parallel.
+struct Pieces {
+    chunks: Vec<(u32, Vec<Node>)>,
+    len: usize,
+}
+
+/// Builds the subtree over `records` like [`build_node`], building the two halves of large
+/// ranges on parallel threads. The tree is the same whatever the number of threads.
+fn build_pieces(records: &mut [Record], range: RangeBounds, offset: usize, depth: usize) -> Pieces {
+    let count = records.len();
+    let bounds = range.boxes.to_aabb();
+    let split = if count < PARALLEL_RANGE || depth >= MAX_DEPTH {
+        None
+    } else {
+        choose_split(records, &bounds, &range.centres)
+    };
+    let Some(split) = split else {
+        let mut nodes = Vec::with_capacity(count);
+        build_node(records, range, offset, depth, &mut nodes);
+        return Pieces {
+            len: nodes.len(),
+            chunks: vec![(0, nodes)],
+        };
+    };
+    let middle = split.middle;
+    let (left, right) = records.split_at_mut(middle);
+    let (left, right) = rayon::join(
+        || build_pieces(left, split.left, offset, depth + 1),
+        || build_pieces(right, split.right, offset + middle, depth + 1),
+    );
+    let parent = Node {
+        bounds,
+        first: (1 + left.len) as u32,
+        count: 0,
+    };
+    let mut chunks = Vec::with_capacity(1 + left.chunks.len() + right.chunks.len());
+    chunks.push((0, vec![parent]));
+    let right_base = 1 + left.len as u32;
+    chunks.extend(left.chunks.into_iter().map(|(bias, c)| (bias + 1, c)));
+    chunks.extend(
+        right
+            .chunks
+            .into_iter()
+            .map(|(bias, c)| (bias + right_base, c)),
+    );
+    Pieces {
+        chunks,
+        len: 1 + left.len + right.len,
+    }
+}
+
+/// Reorders `records` for the best split and returns it, or `None` when a leaf is better.
+fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Box32) -> Option<Split> {
     let count = records.len();
     let extent: [f32; 3] = std::array::from_fn(|i| centroid_bounds.max[i] - centroid_bounds.min[i]);
     let axis = if extent[0] >= extent[1] && extent[0] >= extent[2] {
@@ -399,7 +502,7 @@ fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Box32) 
     let axis_extent = extent[axis];
     if !(axis_extent > 0.0 && axis_extent.is_finite()) {
         // Every centroid coincides: bins cannot separate them, so halve large ranges.
-        return (count > LARGE_LEAF).then_some(count / 2);
+        return (count > LARGE_LEAF).then(|| halves(records));
     }
     let scale = BIN_COUNT as f32 / axis_extent;
     let bin_of = |record: &Record| -> usize {
@@ -408,28 +511,29 @@ fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Box32) 
         (((centre - axis_min) * scale) as usize).min(BIN_COUNT - 1)
     };
     let mut bins = [Bin {
-        bounds: Box32::EMPTY,
+        bounds: RangeBounds::EMPTY,
         count: 0,
     }; BIN_COUNT];
     for record in records.iter() {
         let bin = &mut bins[bin_of(record)];
-        bin.bounds = bin.bounds.union(&record.bounds);
+        bin.bounds = bin.bounds.with(&record.bounds);
         bin.count += 1;
     }
     // Sweep from the right to get the cost of every right-hand side.
-    let mut right_area = [0.0; BIN_COUNT];
+    let mut right_bounds = [RangeBounds::EMPTY; BIN_COUNT];
     let mut right_count = [0usize; BIN_COUNT];
-    let mut accumulated = Box32::EMPTY;
+    let mut accumulated = RangeBounds::EMPTY;
     let mut accumulated_count = 0;
     for split in (1..BIN_COUNT).rev() {
         accumulated = accumulated.union(&bins[split].bounds);
         accumulated_count += bins[split].count;
-        right_area[split] = accumulated.to_aabb().surface_area();
+        right_bounds[split] = accumulated;
         right_count[split] = accumulated_count;
     }
     let mut best_split = 0;
     let mut best_cost = f64::INFINITY;
-    let mut left = Box32::EMPTY;
+    let mut best_left = RangeBounds::EMPTY;
+    let mut left = RangeBounds::EMPTY;
     let mut left_count = 0;
     for split in 1..BIN_COUNT {
         left = left.union(&bins[split - 1].bounds);
@@ -437,42 +541,71 @@ fn choose_split(records: &mut [Record], bounds: &Aabb, centroid_bounds: &Box32) 
         if left_count == 0 || right_count[split] == 0 {
             continue;
         }
-        let cost = left.to_aabb().surface_area() * left_count as f64
-            + right_area[split] * right_count[split] as f64;
+        let cost = left.boxes.to_aabb().surface_area() * left_count as f64
+            + right_bounds[split].boxes.to_aabb().surface_area() * right_count[split] as f64;
         if cost < best_cost {
             best_cost = cost;
             best_split = split;
+            best_left = left;
         }
     }
     let area = bounds.surface_area();
     let leaf_cost = area * count as f64;
     let split_cost = TRAVERSAL_COST * area + best_cost;
     if best_split == 0 || (count <= LARGE_LEAF && leaf_cost <= split_cost) {
-        return (count > LARGE_LEAF).then_some(count / 2);
+        return (count > LARGE_LEAF).then(|| halves(records));
     }
-    let mut boundary = 0;
-    for index in 0..count {
-        if bin_of(&records[index]) < best_split {
-            records.swap(index, boundary);
-            boundary += 1;
+    // Two-ended partition: only records on the wrong side move.
+    let goes_left = |record: &Record| bin_of(record) < best_split;
+    let (mut low, mut high) = (0, count);
+    loop {
+        while low < high && goes_left(&records[low]) {
+            low += 1;
         }
+        while low < high && !goes_left(&records[high - 1]) {
+            high -= 1;
+        }
+        if low >= high {
+            break;
+        }
+        records.swap(low, high - 1);
+        low += 1;
+        high -= 1;
     }
+    let boundary = low;
     if boundary == 0 || boundary == count {
-        return Some(count / 2);
+        return Some(halves(records));
     }
-    Some(boundary)
+    Some(Split {
+        middle: boundary,
+        left: best_left,
+        right: right_bounds[best_split],
+    })
 }
 
-/// Appends a subtree built on its own (node indices counted from 0) to `nodes`, moving its
-/// interior nodes' right-child links to the new positions.
-fn append_subtree(nodes: &mut Vec<Node>, subtree: Vec<Node>) {
-    let base = nodes.len() as u32;
-    nodes.extend(subtree.into_iter().map(|mut node| {
-        if node.count == 0 {
-            node.first += base;
-        }
-        node
-    }));
+/// Splits `records` in two halves as they stand.
+fn halves(records: &[Record]) -> Split {
+    let middle = records.len() / 2;
+    Split {
+        middle,
+        left: RangeBounds::of(&records[..middle]),
+        right: RangeBounds::of(&records[middle..]),
+    }
+}
+
+/// Joins a tree's pieces into one array, moving interior nodes' right-child links to their
+/// final positions.
+fn join_pieces(pieces: Pieces) -> Vec<Node> {
+    let mut nodes = Vec::with_capacity(pieces.len);
+    for (bias, chunk) in pieces.chunks {
+        nodes.extend(chunk.into_iter().map(|mut node| {
+            if node.count == 0 {
+                node.first += bias;
+            }
+            node
+        }));
+    }
+    nodes
 }
 
 #[cfg(test)]
