@@ -21,6 +21,7 @@ use crate::accel::Aabb;
 use crate::hash::FastHash;
 use crate::scene::{CsgOperation, Interior, Mesh, Object, Shape, Texture, Transform};
 use glam::DAffine3;
+use std::borrow::Cow;
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -108,6 +109,8 @@ struct Flags {
 struct Builder {
     materials: Vec<Material>,
     material_of: HashMap<(TextureKey, InteriorKey, Flags), u32, FastHash>,
+    /// The material found last, checked before the table.
+    last_material: Option<((TextureKey, InteriorKey, Flags), u32)>,
     next_owner: usize,
     leaf_count: usize,
     /// Prepared geometry of each scene mesh placed at top level, by the mesh's address.
@@ -119,6 +122,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
     let mut builder = Builder {
         materials: Vec::new(),
         material_of: HashMap::default(),
+        last_material: None,
         next_owner: 0,
         leaf_count: 0,
         meshes: HashMap::new(),
@@ -270,12 +274,23 @@ impl Builder {
     }
 
     /// The appearance `object` passes on, given what it inherits.
-    fn appearance(
+    fn appearance<'a>(
         &mut self,
         object: &Object,
         world_from_local: &Transform,
-        inherited: &Appearance,
-    ) -> Appearance {
+        inherited: &'a Appearance,
+    ) -> Cow<'a, Appearance> {
+        let adds_nothing = object.texture.is_none()
+            && object.interior.is_none()
+            && object.light_group.is_none()
+            && !(object.no_shadow
+                || object.no_image
+                || object.no_reflection
+                || object.double_illuminate);
+        if adds_nothing {
+            // Most children of a generated union: no reference counts to touch.
+            return Cow::Borrowed(inherited);
+        }
         let mut appearance = inherited.clone();
         if let Some(texture) = &object.texture {
             (appearance.texture, appearance.texture_key) =
@@ -301,7 +316,7 @@ impl Builder {
                 ..group
             });
         }
-        appearance
+        Cow::Owned(appearance)
     }
 
     /// `texture` as used by an object placed with `world_from_local`, and the key materials
@@ -328,7 +343,14 @@ impl Builder {
             appearance.interior_key,
             appearance.flags,
         );
+        // Generated scenes place long runs of objects with one material.
+        if let Some((last_key, index)) = self.last_material {
+            if last_key == key {
+                return index;
+            }
+        }
         if let Some(&index) = self.material_of.get(&key) {
+            self.last_material = Some((key, index));
             return index;
         }
         let index = self.materials.len() as u32;
@@ -343,6 +365,7 @@ impl Builder {
             light_group: appearance.flags.light_group,
         });
         self.material_of.insert(key, index);
+        self.last_material = Some((key, index));
         index
     }
 
