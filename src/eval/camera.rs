@@ -278,22 +278,23 @@ fn camera_faces(mesh: &Mesh, transform: &Transform) -> Vec<CameraFace> {
 }
 
 /// The faces of `mesh` for distribution 3: corners, normals and uv coordinates, in world
-/// space. POV-Ray normalises a smooth triangle's corner normals before interpolating them.
+/// space. POV-Ray normalises a smooth triangle's corner normals before interpolating them,
+/// and a flat face its face normal at every corner.
 fn uv_camera_faces<'a>(
     mesh: &'a Mesh,
     transform: &'a Transform,
 ) -> impl Iterator<Item = UvFace> + 'a {
+    let to_world = |normal: DVec3| transform.normal_to_outer(normal).normalize_or_zero();
     (0..mesh.len()).map(move |index| {
         let triangle = mesh.triangle(index);
         let [a, b, c] = triangle
             .corners
             .map(|corner| transform.point_to_outer(corner));
+        let normal = (c - a).cross(b - a).normalize_or_zero();
         UvFace {
             corners: [a, b, c],
-            corner_normals: triangle.normals.map(|normals| {
-                normals.map(|normal| transform.normal_to_outer(normal).normalize_or_zero())
-            }),
-            normal: (c - a).cross(b - a).normalize_or_zero(),
+            corner_normals: triangle.normals.map_or([normal; 3], |n| n.map(to_world)),
+            normal,
             uvs: mesh.corner_uvs(index),
         }
     })

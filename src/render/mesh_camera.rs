@@ -248,7 +248,7 @@ mod tests {
         // Two faces covering the uv square, placed at 10 times their uv coordinates.
         let face = |uvs: [DVec2; 3]| UvFace {
             corners: uvs.map(|uv| (uv * 10.0).extend(0.0)),
-            corner_normals: None,
+            corner_normals: [DVec3::Z; 3],
             normal: DVec3::Z,
             uvs,
         };

@@ -20,8 +20,9 @@ const MAX_GRID_SIDE: usize = 1024;
 pub struct UvFace {
     /// The corners.
     pub corners: [DVec3; 3],
-    /// Unit normals at the corners for a smooth face (used by `smooth`); `None` when flat.
-    pub corner_normals: Option<[DVec3; 3]>,
+    /// Unit normals at the corners, which `smooth` interpolates (a flat face's normal at
+    /// each corner for a flat face).
+    pub corner_normals: [DVec3; 3],
     /// Unit face normal: `(c − a) × (b − a)` for corners a, b, c.
     pub normal: DVec3,
     /// The corners' uv coordinates.
@@ -44,12 +45,10 @@ impl UvHit<'_> {
         a * self.weights[0] + b * self.weights[1] + c * self.weights[2]
     }
 
-    /// The corner normals interpolated by the weights and normalised; the face normal for a
-    /// flat face or when the interpolation cancels out.
+    /// The corner normals interpolated by the weights and normalised; the face normal when
+    /// the interpolation cancels out.
     pub fn smooth_normal(&self) -> DVec3 {
-        let Some([a, b, c]) = self.face.corner_normals else {
-            return self.face.normal;
-        };
+        let [a, b, c] = self.face.corner_normals;
         (a * self.weights[0] + b * self.weights[1] + c * self.weights[2])
             .try_normalize()
             .unwrap_or(self.face.normal)
@@ -184,7 +183,7 @@ mod tests {
     fn face(uvs: [DVec2; 3]) -> UvFace {
         UvFace {
             corners: uvs.map(|uv| (uv * 10.0).extend(0.0)),
-            corner_normals: None,
+            corner_normals: [DVec3::Z; 3],
             normal: DVec3::Z,
             uvs,
         }
@@ -214,7 +213,7 @@ mod tests {
     #[test]
     fn smooth_normals_interpolate_by_weight() {
         let mut smooth = face([DVec2::ZERO, DVec2::X, DVec2::Y]);
-        smooth.corner_normals = Some([DVec3::Z, DVec3::Z, DVec3::Y]);
+        smooth.corner_normals = [DVec3::Z, DVec3::Z, DVec3::Y];
         let faces = UvFaces::new(vec![smooth]);
         let hit = faces.find(DVec2::new(0.0, 0.5)).unwrap();
         let expected = DVec3::new(0.0, 0.5, 0.5).normalize();
