@@ -15,6 +15,10 @@ const EDGE_TOLERANCE: f64 = 1e-9;
 /// The most grid cells along each side of the uv index.
 const MAX_GRID_SIDE: usize = 1024;
 
+/// The uv index holds at most this many (cell, face) entries per face, unless it is a
+/// single cell.
+const MAX_ENTRIES_PER_FACE: usize = 16;
+
 /// One face of a uv-mapped camera mesh, in world space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct UvFace {
@@ -93,24 +97,29 @@ impl UvFaces {
                 high = high.max(uv);
             }
         }
-        let side_length = ((faces.len() as f64).sqrt().ceil() as usize).clamp(1, MAX_GRID_SIDE);
-        let side = [side_length; 2];
         let extent = (high - low).max(DVec2::splat(f64::MIN_POSITIVE));
         let mut index = UvFaces {
             faces,
             origin: low,
-            cell: extent / side_length as f64,
-            side,
-            cell_start: Vec::new(),
-            cell_faces: Vec::new(),
+            ..UvFaces::default()
         };
+        // A grid about as fine as the faces are many, made coarser while faces spanning
+        // many cells would make the index much larger than the faces (down to one cell).
+        let mut side_length =
+            ((index.faces.len() as f64).sqrt().ceil() as usize).clamp(1, MAX_GRID_SIDE);
+        let budget = index.faces.len().saturating_mul(MAX_ENTRIES_PER_FACE);
+        loop {
+            index.side = [side_length; 2];
+            index.cell = extent / side_length as f64;
+            if side_length == 1 || index.entries() <= budget {
+                break;
+            }
+            side_length /= 2;
+        }
+        let side = index.side;
         let mut per_cell: Vec<Vec<u32>> = vec![Vec::new(); side[0] * side[1]];
         for (number, face) in index.faces.iter().enumerate() {
-            let [a, b, c] = face.uvs;
-            let (first, last) = (
-                index.cell_of(a.min(b).min(c)),
-                index.cell_of(a.max(b).max(c)),
-            );
+            let [first, last] = index.cell_span(face);
             for v in first[1]..=last[1] {
                 for u in first[0]..=last[0] {
                     per_cell[v * side[0] + u].push(number as u32);
@@ -123,6 +132,23 @@ impl UvFaces {
             index.cell_start.push(index.cell_faces.len() as u32);
         }
         index
+    }
+
+    /// The first and last grid cells a face's uv bounding box touches.
+    fn cell_span(&self, face: &UvFace) -> [[usize; 2]; 2] {
+        let [a, b, c] = face.uvs;
+        [self.cell_of(a.min(b).min(c)), self.cell_of(a.max(b).max(c))]
+    }
+
+    /// How many (cell, face) entries the grid would hold.
+    fn entries(&self) -> usize {
+        self.faces
+            .iter()
+            .map(|face| {
+                let [first, last] = self.cell_span(face);
+                (last[0] - first[0] + 1) * (last[1] - first[1] + 1)
+            })
+            .fold(0, usize::saturating_add)
     }
 
     /// Whether there are no faces.
@@ -201,6 +227,18 @@ mod tests {
         // On the shared diagonal the first face wins.
         let edge = faces.find(DVec2::splat(0.5)).unwrap();
         assert_eq!(edge.face.uvs[1], DVec2::X);
+    }
+
+    #[test]
+    fn faces_spanning_the_whole_range_keep_the_index_small() {
+        // Every face covers the whole uv range: a fine grid would list each in every cell.
+        let faces: Vec<_> = (0..400)
+            .map(|_| face([DVec2::ZERO, DVec2::X * 2.0, DVec2::Y * 2.0]))
+            .chain([face([DVec2::ONE, DVec2::ONE * 1.5, DVec2::new(1.0, 1.5)])])
+            .collect();
+        let index = UvFaces::new(faces);
+        assert!(index.cell_faces.len() <= 401 * MAX_ENTRIES_PER_FACE);
+        assert!(index.find(DVec2::splat(0.5)).is_some());
     }
 
     #[test]
