@@ -6,12 +6,13 @@
 //! (focal point at the origin, confidence 0.9, variance 1/128, minimum samples 4 below 7
 //! samples, else 7); bad values are reported with their span.
 
-use super::objects::apply_transform;
 use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{CameraFace, FocalBlur, MeshCamera, MeshDistribution, Shape};
+use crate::scene::{
+    CameraFace, FocalBlur, Mesh, MeshCamera, MeshDistribution, Shape, Transform, UvFace, UvFaces,
+};
 use crate::syntax::ast::{Block, BlockHead, Item};
 use glam::DVec3;
 use std::sync::Arc;
@@ -137,8 +138,8 @@ impl Evaluator {
 const MAX_MESH_RAYS: f64 = 1024.0;
 
 impl Evaluator {
-    /// `mesh_camera { rays_per_pixel distribution [max_distance] mesh { .. } .. }`; the
-    /// camera's `location` and `direction` fill in `offset` and `reversed` afterwards.
+    /// `mesh_camera { rays_per_pixel distribution [max_distance] mesh { .. } .. [smooth] }`;
+    /// the camera's `location` and `direction` fill in `offset` and `reversed` afterwards.
     pub(crate) fn eval_mesh_camera(&mut self, block: &Block) -> EvalResult<MeshCamera> {
         let mut stream = Stream::new(block.body.clone());
         let (value, rays_span) = self.expect_value(&mut stream, "the number of rays per pixel")?;
@@ -155,12 +156,7 @@ impl Evaluator {
             0.0 => MeshDistribution::PerMesh,
             1.0 => MeshDistribution::Summed,
             2.0 => MeshDistribution::SideBySide,
-            3.0 => {
-                return Err(self
-                    .error(type_span, "mesh camera distribution 3 is not supported yet")
-                    .with_label("it needs the meshes' uv coordinates")
-                    .into())
-            }
+            3.0 => MeshDistribution::UvMapped,
             other => {
                 return Err(self
                     .error(
@@ -171,36 +167,62 @@ impl Evaluator {
                     .into())
             }
         };
+        let single_ray = matches!(
+            distribution,
+            MeshDistribution::SideBySide | MeshDistribution::UvMapped
+        );
+        if single_ray && rays != 1.0 {
+            return Err(self
+                .error(rays_span, format!("{rays} rays per pixel"))
+                .with_label("distributions 2 and 3 shoot exactly 1 ray per pixel")
+                .into());
+        }
         let mut camera = MeshCamera {
             rays_per_pixel: rays as u32,
             distribution,
             max_distance: 0.0,
             meshes: Vec::new(),
+            uv_faces: UvFaces::default(),
+            smooth: false,
             offset: 0.0,
             reversed: false,
         };
-        if let Some((distance, span)) = self.optional_second_value(&mut stream)? {
+        if let Some((distance, _)) = self.optional_second_value(&mut stream)? {
             camera.max_distance = distance.max(0.0);
-            if camera.max_distance > 0.0 {
-                self.warn(span, "a mesh camera's `max_distance` is not applied yet");
-            }
         }
+        let mut uv_faces = Vec::new();
+        let mut mesh_count = 0;
         while let Some(item) = self.next_item(&mut stream)? {
             match &item {
                 Item::Comma(_) => {}
                 Item::Block(mesh) if matches!(&mesh.head, BlockHead::Word(w) if &**w == "mesh") => {
-                    let faces = self.camera_mesh_faces(mesh)?;
-                    camera.meshes.push(faces);
+                    let (mesh, transform) = self.camera_mesh(mesh)?;
+                    mesh_count += 1;
+                    if distribution == MeshDistribution::UvMapped {
+                        uv_faces.extend(uv_camera_faces(&mesh, &transform));
+                    } else {
+                        camera.meshes.push(camera_faces(&mesh, &transform));
+                    }
+                }
+                Item::Keyword(word, span) if &**word == "smooth" => {
+                    if distribution != MeshDistribution::UvMapped {
+                        return Err(self
+                            .error(*span, "`smooth` needs mesh camera distribution 3")
+                            .with_label("only uv-mapped mesh cameras interpolate normals")
+                            .into());
+                    }
+                    camera.smooth = true;
                 }
                 _ => return Err(self.unexpected_in(&item, "mesh_camera")),
             }
         }
-        if camera.meshes.is_empty() {
+        if mesh_count == 0 {
             return Err(self
                 .error(block.span, "a mesh camera needs at least one `mesh { .. }`")
                 .with_label("no mesh in this mesh_camera")
                 .into());
         }
+        camera.uv_faces = UvFaces::new(uv_faces);
         if distribution == MeshDistribution::PerMesh && camera.meshes.len() < rays as usize {
             return Err(self
                 .error(
@@ -216,49 +238,19 @@ impl Evaluator {
         Ok(camera)
     }
 
-    /// The faces of one camera `mesh { MESH_IDENTIFIER transformations }` (or an inline
-    /// mesh), in world space.
-    fn camera_mesh_faces(&mut self, block: &Block) -> EvalResult<Vec<CameraFace>> {
-        let mut body = Stream::new(block.body.clone());
-        let object = match self.peek_item(&mut body)? {
-            Some(Item::Expr(_)) => {
-                let (value, span) = self.expect_value(&mut body, "a mesh")?;
-                let Value::Object(object) = value else {
-                    return Err(self
-                        .error(
-                            span,
-                            format!("expected a mesh, found {}", value.type_name()),
-                        )
-                        .into());
-                };
-                let mut object = Arc::unwrap_or_clone(object);
-                while let Some(item) = self.next_item(&mut body)? {
-                    let t = match &item {
-                        Item::Keyword(word, span) => {
-                            self.transform_keyword(word, *span, &mut body)?
-                        }
-                        Item::Block(b) => match self.eval_block(b)? {
-                            Value::Transform(t) => *t,
-                            _ => return Err(self.unexpected_in(&item, "mesh")),
-                        },
-                        Item::Comma(_) => continue,
-                        _ => return Err(self.unexpected_in(&item, "mesh")),
-                    };
-                    apply_transform(&mut object, &t);
-                }
-                object
+    /// The mesh of one camera `mesh { MESH_IDENTIFIER transformations }` (or an inline
+    /// mesh) and the transformation to world space.
+    fn camera_mesh(&mut self, block: &Block) -> EvalResult<(Arc<Mesh>, Transform)> {
+        let object = match self.eval_block(block)? {
+            Value::Object(object) => object,
+            other => {
+                return Err(self
+                    .error(
+                        block.span,
+                        format!("expected a mesh, found {}", other.type_name()),
+                    )
+                    .into())
             }
-            _ => match self.eval_block(block)? {
-                Value::Object(object) => Arc::unwrap_or_clone(object),
-                other => {
-                    return Err(self
-                        .error(
-                            block.span,
-                            format!("expected a mesh, found {}", other.type_name()),
-                        )
-                        .into())
-                }
-            },
         };
         let Shape::Mesh(mesh) = &object.shape else {
             return Err(self
@@ -266,16 +258,44 @@ impl Evaluator {
                 .with_label("this is not a mesh")
                 .into());
         };
-        let t = *object.transform();
-        Ok(mesh
-            .triangles()
-            .map(|triangle| {
-                let [a, b, c] = triangle.corners.map(|corner| t.point_to_outer(corner));
-                CameraFace {
-                    centre: (a + b + c) / 3.0,
-                    normal: (c - a).cross(b - a).normalize_or_zero(),
-                }
-            })
-            .collect())
+        Ok((mesh.clone(), *object.transform()))
     }
+}
+
+/// The faces of `mesh` for distributions 0-2: centroids and face normals in world space.
+fn camera_faces(mesh: &Mesh, transform: &Transform) -> Vec<CameraFace> {
+    mesh.triangles()
+        .map(|triangle| {
+            let [a, b, c] = triangle
+                .corners
+                .map(|corner| transform.point_to_outer(corner));
+            CameraFace {
+                centre: (a + b + c) / 3.0,
+                normal: (c - a).cross(b - a).normalize_or_zero(),
+            }
+        })
+        .collect()
+}
+
+/// The faces of `mesh` for distribution 3: corners, normals and uv coordinates, in world
+/// space. POV-Ray normalises a smooth triangle's corner normals before interpolating them,
+/// and a flat face its face normal at every corner.
+fn uv_camera_faces<'a>(
+    mesh: &'a Mesh,
+    transform: &'a Transform,
+) -> impl Iterator<Item = UvFace> + 'a {
+    let to_world = |normal: DVec3| transform.normal_to_outer(normal).normalize_or_zero();
+    (0..mesh.len()).map(move |index| {
+        let triangle = mesh.triangle(index);
+        let [a, b, c] = triangle
+            .corners
+            .map(|corner| transform.point_to_outer(corner));
+        let normal = (c - a).cross(b - a).normalize_or_zero();
+        UvFace {
+            corners: [a, b, c],
+            corner_normals: triangle.normals.map_or([normal; 3], |n| n.map(to_world)),
+            normal,
+            uvs: mesh.corner_uvs(index),
+        }
+    })
 }

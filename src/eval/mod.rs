@@ -538,6 +538,7 @@ impl Evaluator {
                 if object.texture.is_none() && self.default_texture_set {
                     object.texture = Some(Arc::new(self.default_texture.clone()));
                 }
+                crate::scene::separate_light_groups(&mut object, &mut self.light_groups);
                 self.add_carried_lights(&object, &Transform::IDENTITY);
                 self.objects.push(object);
             }

@@ -21,8 +21,12 @@ impl Evaluator {
         block: &Block,
         stream: &mut Stream,
     ) -> EvalResult<Option<Object>> {
+        // POV-Ray lets a mesh block start with a declared object, as `object { .. }` does;
+        // only object modifiers may follow it.
+        let starts_with_object = matches!(head, "mesh" | "mesh2")
+            && matches!(self.peek_item(stream)?, Some(Item::Expr(_)));
         let mut object = match head {
-            "object" => {
+            _ if head == "object" || starts_with_object => {
                 let (value, span) = self.expect_value(stream, "an object")?;
                 match value {
                     Value::Object(o) => Arc::unwrap_or_clone(o),
@@ -33,7 +37,7 @@ impl Evaluator {
                                 span,
                                 format!("expected an object, found {}", other.type_name()),
                             )
-                            .with_label("`object` needs an object identifier")
+                            .with_label(format!("`{head}` needs an object identifier"))
                             .into())
                     }
                 }

@@ -371,13 +371,6 @@ impl Evaluator {
                             };
                             camera.projection = Projection::Cylinder(kind);
                         }
-                        "smooth" => {
-                            self.warn(
-                                *span,
-                                "`smooth` only matters for mesh camera distribution 3, which \
-                                 durer does not support yet; it is ignored",
-                            );
-                        }
                         "focal_point" | "aperture" | "blur_samples" | "confidence" | "variance" => {
                             self.eval_focal_blur_item(word, stream, &mut blur)?
                         }

@@ -138,6 +138,8 @@ pub struct Tracer<'a> {
     any_no_image: bool,
     /// Some object is `no_reflection` (reflected rays must skip it).
     any_no_reflection: bool,
+    /// How far camera rays see (a mesh camera's `max_distance`; else infinite).
+    camera_reach: f64,
 }
 
 /// What a ray is for, which decides the objects it can see.
@@ -173,6 +175,11 @@ impl<'a> Tracer<'a> {
             lights: prepare_lights(scene),
             any_no_image: world.materials.iter().any(|m| m.no_image),
             any_no_reflection: world.materials.iter().any(|m| m.no_reflection),
+            camera_reach: scene
+                .camera
+                .mesh
+                .as_ref()
+                .map_or(f64::INFINITY, |m| m.reach()),
         }
     }
 
@@ -249,10 +256,14 @@ impl<'a> Tracer<'a> {
     /// The nearest surface along `ray` beyond `min_distance` that a ray of this kind sees.
     fn first_hit(&self, ray: &Ray, min_distance: f64, kind: RayKind) -> Option<SurfaceHit> {
         let materials = &self.world.materials;
+        let reach = match kind {
+            RayKind::Camera => self.camera_reach,
+            _ => f64::INFINITY,
+        };
         match kind {
             RayKind::Camera if self.any_no_image => {
                 self.world
-                    .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
+                    .first_hit_skipping(ray, min_distance, reach, &|id: u32| {
                         materials.get(id as usize).is_some_and(|m| m.no_image)
                     })
             }
@@ -262,7 +273,7 @@ impl<'a> Tracer<'a> {
                         materials.get(id as usize).is_some_and(|m| m.no_reflection)
                     })
             }
-            _ => self.world.first_hit(ray, min_distance, f64::INFINITY),
+            _ => self.world.first_hit(ray, min_distance, reach),
         }
     }
 

@@ -4,6 +4,7 @@
 //! vectors are final (look_at, angle, sky and transformations applied); angles in degrees.
 
 use super::texture::Normal;
+use super::uv_faces::UvFaces;
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -135,12 +136,32 @@ pub struct MeshCamera {
     pub distribution: MeshDistribution,
     /// Rays do not see objects farther than this; 0 means no limit.
     pub max_distance: f64,
-    /// The faces of each `mesh`, in the order written, in world space.
+    /// The faces of each `mesh`, in the order written, in world space (distributions 0-2).
     pub meshes: Vec<Vec<CameraFace>>,
+    /// The faces of all meshes indexed by uv coordinates (distribution 3; empty otherwise).
+    pub uv_faces: UvFaces,
+    /// `smooth` (distribution 3 only): rays run along the corner normals interpolated at
+    /// the ray's origin instead of the face normal.
+    pub smooth: bool,
     /// How far ray origins move along the face normals (the camera's `location` z).
     pub offset: f64,
     /// Rays run against the face normals (the camera's `direction` z is negative).
     pub reversed: bool,
+}
+
+/// A `max_distance` at or below this means no limit (POV-Ray: "greater than EPSILON").
+const MESH_REACH_EPSILON: f64 = 1e-10;
+
+impl MeshCamera {
+    /// How far the camera's rays see objects, from their origin: `max_distance` when it is
+    /// given (above a tiny epsilon), else infinitely far.
+    pub fn reach(&self) -> f64 {
+        if self.max_distance > MESH_REACH_EPSILON {
+            self.max_distance
+        } else {
+            f64::INFINITY
+        }
+    }
 }
 
 /// POV-Ray's mesh camera distribution types.
@@ -153,6 +174,9 @@ pub enum MeshDistribution {
     Summed,
     /// 2: the image is split into side-by-side columns, one per mesh.
     SideBySide,
+    /// 3: the pixel's position in the image, as uv coordinates, picks the first face whose
+    /// uv triangle holds it and the point on that face the ray starts from.
+    UvMapped,
 }
 
 /// One face of a camera mesh: where its ray starts and where it points.

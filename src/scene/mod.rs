@@ -13,6 +13,7 @@ mod light_group;
 mod mesh;
 mod texture;
 mod transform;
+mod uv_faces;
 
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
 pub use camera::{
@@ -23,13 +24,14 @@ pub use colour::Colour;
 pub use finish::{Finish, Interior, Irid};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
 pub use light::{AreaLight, LightSource, Spotlight};
-pub use light_group::LightGroup;
+pub use light_group::{separate_light_groups, LightGroup};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
     Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
 };
 pub use transform::Transform;
+pub use uv_faces::{UvFace, UvFaces, UvHit};
 
 use glam::DVec3;
 use std::sync::Arc;

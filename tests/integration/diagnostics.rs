@@ -607,15 +607,22 @@ fn broken_density_file_is_refused() {
 }
 
 #[test]
-fn mesh_camera_distribution_3_is_refused_with_its_reason() {
+fn mesh_camera_smooth_needs_distribution_3() {
     check(
-        "mesh_camera_distribution_3",
+        "mesh_camera_smooth_distribution",
         2,
-        26,
-        &[
-            "mesh camera distribution 3 is not supported yet",
-            "uv coordinates",
-        ],
+        39,
+        &["`smooth` needs mesh camera distribution 3"],
+    );
+}
+
+#[test]
+fn uv_mesh_camera_shoots_one_ray_per_pixel() {
+    check(
+        "mesh_camera_uv_single_ray",
+        2,
+        24,
+        &["2 rays per pixel", "exactly 1 ray per pixel"],
     );
 }
 

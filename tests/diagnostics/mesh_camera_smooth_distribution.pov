@@ -1,2 +1,2 @@
 #declare M = mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } }
-camera { mesh_camera { 1 3 mesh { M } } }
+camera { mesh_camera { 1 0 mesh { M } smooth } }
