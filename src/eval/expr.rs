@@ -57,19 +57,21 @@ impl Evaluator {
             Expr::Number(n, _) => Ok(Value::Float(*n)),
             Expr::String(s, _) => Ok(Value::String(s.clone())),
             Expr::Vector(elements, span) => {
-                let mut components = Vec::with_capacity(elements.len());
-                for e in elements.iter() {
-                    components.push(self.eval_float(e)?);
-                }
-                if components.len() < 2 || components.len() > 5 {
+                if elements.len() < 2 || elements.len() > 5 {
                     return Err(self
                         .error(
                             *span,
-                            format!("a vector has 2 to 5 components, found {}", components.len()),
+                            format!("a vector has 2 to 5 components, found {}", elements.len()),
                         )
                         .into());
                 }
-                Ok(Value::Vector(Vector::from_slice(&components)))
+                let mut components = [0.0; 5];
+                for (component, e) in components.iter_mut().zip(elements.iter()) {
+                    *component = self.eval_float(e)?;
+                }
+                Ok(Value::Vector(Vector::from_slice(
+                    &components[..elements.len()],
+                )))
             }
             Expr::Ident(name, span) => self.eval_ident(name, *span),
             Expr::Call(call) => self.eval_call(call),

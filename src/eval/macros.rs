@@ -5,7 +5,6 @@ use super::stream::Stream;
 use super::value::Value;
 use super::{Entered, Entering, EvalResult, Evaluator};
 use crate::syntax::ast::{Call, Expr, Item};
-use crate::syntax::symbol::Symbol;
 use std::rc::Rc;
 
 impl Evaluator {
@@ -46,18 +45,13 @@ impl Evaluator {
                 )
                 .into());
         }
-        let scope: Vec<(Symbol, Value)> = definition
-            .parameters
-            .iter()
-            .map(|parameter| parameter.name)
-            .zip(values)
-            .collect();
         self.enter_nesting(call.span)?;
         self.trace.push(Entered {
             what: Entering::Macro(definition.name),
             span: call.span,
         });
-        self.scopes.push(scope);
+        let names = definition.parameters.iter().map(|parameter| parameter.name);
+        self.scopes.push(names.zip(values));
         stream.push_macro(body);
         Ok(())
     }

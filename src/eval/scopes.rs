@@ -19,6 +19,8 @@ pub(crate) struct ScopeStack {
     bindings: Vec<Vec<(usize, Value)>>,
     /// Every name that has had a binding, for suggestions.
     seen: Vec<Symbol>,
+    /// Emptied name lists of popped tables, reused by the next pushes.
+    spare: Vec<Vec<Symbol>>,
 }
 
 impl ScopeStack {
@@ -28,6 +30,7 @@ impl ScopeStack {
             tables: vec![Vec::new()],
             bindings: Vec::new(),
             seen: Vec::new(),
+            spare: Vec::new(),
         }
     }
 
@@ -57,7 +60,7 @@ impl ScopeStack {
     /// a name given twice keeps its last value.
     pub(crate) fn push(&mut self, table: impl IntoIterator<Item = (Symbol, Value)>) {
         let index = self.tables.len();
-        let mut names = Vec::new();
+        let mut names = self.spare.pop().unwrap_or_default();
         for (name, value) in table {
             // Every other table is below `index`, so the binding goes last.
             let stack = self.stack_mut(name);
@@ -77,13 +80,15 @@ impl ScopeStack {
             return;
         }
         let index = self.tables.len() - 1;
-        for name in self.tables.pop().unwrap_or_default() {
+        let mut names = self.tables.pop().unwrap_or_default();
+        for name in names.drain(..) {
             if let Some(stack) = self.bindings.get_mut(name.index()) {
                 if stack.last().is_some_and(|(i, _)| *i == index) {
                     stack.pop();
                 }
             }
         }
+        self.spare.push(names);
     }
 
     /// Where table `index`'s binding of `name` is (`Ok`) or would go (`Err`) in `stack`.
