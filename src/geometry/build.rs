@@ -200,8 +200,14 @@ fn kept_bound_box(object: &Object, own: Option<Aabb>) -> Option<Aabb> {
         .then_some(bound)
 }
 
-/// POV-Ray's bounding box of `object` without its `bounded_by` objects.
+/// POV-Ray's bounding box of `object` without its `bounded_by` objects. A clipped bicubic
+/// patch is bounded by its clipping objects' box alone (measured with `trace`: rays crossing
+/// that box below the patch's own box still see the patch).
 fn own_pov_bounding_box(object: &Object) -> Option<Aabb> {
+    let unclippable = matches!(&object.shape, Shape::Mesh(mesh) if mesh.ignores_clipped_by);
+    if unclippable && !object.clipped_by.is_empty() {
+        return clipped_box(object, None);
+    }
     clipped_box(object, unclipped_pov_bounding_box(object))
 }
 
@@ -463,8 +469,12 @@ impl Builder {
                 let bound = kept_bound_box(object, own)
                     .and_then(|bound| to_world(clipped_box(object, Some(bound))));
                 // Shadow rays see the object inside `clip` (not `bound`), so the surface bounds
-                // must cover all of it.
-                let surface = match (root.bounds().surface, clip.and_then(|b| padded(Some(b)))) {
+                // must cover all of it. A bicubic patch's hits can lie outside its clip box
+                // (rays need only cross the box), so its surface bounds stay whole.
+                let unclippable =
+                    matches!(&object.shape, Shape::Mesh(mesh) if mesh.ignores_clipped_by);
+                let clip_surface = clip.filter(|_| !unclippable).and_then(|b| padded(Some(b)));
+                let surface = match (root.bounds().surface, clip_surface) {
                     (Some(surface), Some(clip)) => Some(surface.intersection(&clip)),
                     (surface, clip) => surface.or(clip),
                 };
@@ -534,7 +544,9 @@ impl Builder {
             any: inherited_inversion.any || object.inverse,
         };
         let node = self.unclipped_node(object, &world_from_local, &appearance, inversion, leaves);
-        if object.clipped_by.is_empty() {
+        // A bicubic patch is only bounded by its clipping objects' box (the tree's clip box).
+        let unclippable = matches!(&object.shape, Shape::Mesh(mesh) if mesh.ignores_clipped_by);
+        if object.clipped_by.is_empty() || unclippable {
             return node;
         }
         // The clipping objects are never inverted with the object: inverting a clipped
