@@ -169,22 +169,55 @@ fn texture_to_world(texture: &Texture, world_from_owner: &Transform) -> Texture 
 /// later does not change its box, so an inverted CSG object is cut off at the box of the object
 /// it came from: rays that miss the box miss the object.
 fn pov_bounding_box(object: &Object) -> Option<Aabb> {
-    let unclipped = if object.bounded_by.is_empty() {
-        unclipped_pov_bounding_box(object)
-    } else {
-        // `bounded_by` objects give the object their box instead of its own; as in POV-Ray
-        // 3.7, only that box matters (rays missing it miss the object), not their shape.
-        let parent_from_local = &object.transform().outer_from_inner;
-        object
-            .bounded_by
-            .iter()
-            .try_fold(Aabb::EMPTY, |all, bound| {
-                pov_bounding_box(bound).map(|b| all.union(&b))
-            })
-            .map(|local| local.transformed(parent_from_local))
-    };
+    let own = own_pov_bounding_box(object);
+    match kept_bound_box(object, own) {
+        Some(bound) => clipped_box(object, Some(bound)),
+        None => own,
+    }
+}
+
+/// The box of `object`'s `bounded_by` objects in its parent's space, when POV-Ray keeps it:
+/// only when its volume is smaller than the volume of the object's own box `own` (measured:
+/// POV-Ray 3.7 drops a larger bound as "unnecessary", even one that cuts the object). Rays
+/// that miss a kept box miss the object, but shadow rays ignore it.
+fn kept_bound_box(object: &Object, own: Option<Aabb>) -> Option<Aabb> {
+    if object.bounded_by.is_empty() {
+        return None;
+    }
     let parent_from_local = &object.transform().outer_from_inner;
-    // A clipped object's box is cut to the boxes of its (not inverted) clipping objects.
+    let bound = object
+        .bounded_by
+        .iter()
+        .try_fold(Aabb::EMPTY, |all, bound| {
+            pov_bounding_box(bound).map(|b| all.union(&b))
+        })
+        .map(|local| local.transformed(parent_from_local))?;
+    let volume = |bounds: &Aabb| {
+        if bounds.is_empty() {
+            0.0
+        } else {
+            let extent = bounds.extent();
+            extent.x * extent.y * extent.z
+        }
+    };
+    own.is_none_or(|own| volume(&bound) < volume(&own))
+        .then_some(bound)
+}
+
+/// POV-Ray's bounding box of `object` without its `bounded_by` objects. A clipped bicubic
+/// patch is bounded by its clipping objects' box alone (measured with `trace`: rays crossing
+/// that box below the patch's own box still see the patch).
+fn own_pov_bounding_box(object: &Object) -> Option<Aabb> {
+    let unclippable = matches!(&object.shape, Shape::Mesh(mesh) if mesh.ignores_clipped_by);
+    if unclippable && !object.clipped_by.is_empty() {
+        return clipped_box(object, None);
+    }
+    clipped_box(object, unclipped_pov_bounding_box(object))
+}
+
+/// `unclipped` cut to the boxes of `object`'s (not inverted) clipping objects.
+fn clipped_box(object: &Object, unclipped: Option<Aabb>) -> Option<Aabb> {
+    let parent_from_local = &object.transform().outer_from_inner;
     object
         .clipped_by
         .iter()
@@ -444,22 +477,39 @@ impl Builder {
                 let root =
                     self.csg_node(object, world_from_parent, inherited, inversion, &mut leaves);
                 // Each enclosing union maps the box on, innermost first, as POV-Ray does.
-                let clip = pov_bounding_box(object)
-                    .map(|bounds| {
-                        enclosing_unions
-                            .iter()
-                            .rev()
-                            .fold(bounds, |bounds, map| bounds.transformed(map))
-                    })
-                    .filter(Aabb::is_finite);
-                let surface = match (root.bounds().surface, clip.and_then(|b| padded(Some(b)))) {
+                let to_world = |bounds: Option<Aabb>| {
+                    bounds
+                        .map(|bounds| {
+                            enclosing_unions
+                                .iter()
+                                .rev()
+                                .fold(bounds, |bounds, map| bounds.transformed(map))
+                        })
+                        .filter(Aabb::is_finite)
+                };
+                let own = own_pov_bounding_box(object);
+                let clip = to_world(own);
+                let bound = kept_bound_box(object, own)
+                    .and_then(|bound| to_world(clipped_box(object, Some(bound))));
+                // Shadow rays see the object inside `clip` (not `bound`), so the surface bounds
+                // must cover all of it. A bicubic patch's hits can lie outside its clip box
+                // (rays need only cross the box), so its surface bounds stay whole.
+                let unclippable =
+                    matches!(&object.shape, Shape::Mesh(mesh) if mesh.ignores_clipped_by);
+                let clip_surface = clip.filter(|_| !unclippable).and_then(|b| padded(Some(b)));
+                let surface = match (root.bounds().surface, clip_surface) {
                     (Some(surface), Some(clip)) => Some(surface.intersection(&clip)),
                     (surface, clip) => surface.or(clip),
                 };
                 if surface.is_some_and(|bounds| bounds.is_empty()) {
                     return;
                 }
-                let tree = CsgTree { leaves, root, clip };
+                let tree = CsgTree {
+                    leaves,
+                    root,
+                    clip,
+                    bound,
+                };
                 out.push((Primitive::Csg(Box::new(tree)), surface));
             }
             Shape::Mesh(mesh) => {
@@ -517,7 +567,9 @@ impl Builder {
             any: inherited_inversion.any || object.inverse,
         };
         let node = self.unclipped_node(object, &world_from_local, &appearance, inversion, leaves);
-        if object.clipped_by.is_empty() {
+        // A bicubic patch is only bounded by its clipping objects' box (the tree's clip box).
+        let unclippable = matches!(&object.shape, Shape::Mesh(mesh) if mesh.ignores_clipped_by);
+        if object.clipped_by.is_empty() || unclippable {
             return node;
         }
         // The clipping objects are never inverted with the object: inverting a clipped

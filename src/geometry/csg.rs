@@ -7,7 +7,8 @@
 //! Holds: a node's hits are its children's hits filtered by the inside tests of the siblings
 //! (intersection keeps hits inside all siblings, merge drops hits inside any sibling, union
 //! keeps all); among hits at the same distance the later child's wins. An object may carry
-//! POV-Ray's bounding box as a clip: rays missing it miss the object. Hits are gathered into
+//! POV-Ray's bounding box as a clip: rays missing it miss the object (shadow rays ignore the
+//! part of it that comes from `bounded_by`). Hits are gathered into
 //! one per-thread scratch vector, so no ray allocates once the vector has grown.
 
 use super::leaf::Leaf;
@@ -334,6 +335,9 @@ pub struct CsgTree {
     /// POV-Ray's bounding box of the whole object: rays missing it miss the object, even where
     /// the box is smaller than the surface (inverted CSG). `None` when infinite.
     pub clip: Option<Aabb>,
+    /// The box of the object's `bounded_by` objects where POV-Ray keeps it: rays missing it
+    /// miss the object, except shadow rays, which ignore it (as POV-Ray's shadows do).
+    pub bound: Option<Aabb>,
 }
 
 /// What a ray query needs beyond the ray itself.
@@ -348,17 +352,18 @@ impl CsgTree {
     /// The nearest surviving hit strictly between the limits.
     ///
     /// `keep` can reject hits (by leaf) after CSG filtering, for example to ignore shadowless
-    /// leaves.
+    /// leaves; `shadow` rays ignore the `bounded_by` box.
     pub fn nearest(
         &self,
         ray: &Ray,
         inverse_direction: DVec3,
-        min_distance: f64,
-        max_distance: f64,
+        (min_distance, max_distance): (f64, f64),
+        shadow: bool,
         keep: impl Fn(&Leaf) -> bool,
     ) -> Option<CsgHit> {
-        if let Some(clip) = self.clip {
-            clip.ray_entry(ray.origin, inverse_direction, 0.0, f64::INFINITY)?;
+        let bound = self.bound.filter(|_| !shadow);
+        for bounds in self.clip.iter().chain(&bound) {
+            bounds.ray_entry(ray.origin, inverse_direction, 0.0, f64::INFINITY)?;
         }
         let query = Query {
             ray,

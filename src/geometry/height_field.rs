@@ -3,15 +3,22 @@
 //!
 //! In: a [`HeightField`](crate::scene::HeightField) (heights row by row from z = 0, smooth
 //! flag, water level). Out: crossings of a line (the line walks the grid cell by cell, nearest
-//! first), inside test (below the surface over the unit square), flat or interpolated normals,
-//! bounds from the water level (or the lowest point) to the highest point, as POV-Ray's. Holds: each cell from (x0, z0) to (x1, z1) is split
-//! along the diagonal from (x1, z0) to (x0, z1), as POV-Ray splits it (measured with
-//! `trace`); crossings below the water level are dropped; nothing allocates.
+//! first), inside test (below the surface over the unit square), flat or smoothed normals,
+//! bounds from the water level (or the lowest point) to the highest point, as POV-Ray's.
+//! Holds: each cell from (x0, z0) to (x1, z1) is split along the diagonal from (x1, z0) to
+//! (x0, z1), as POV-Ray splits it (measured with `trace`); crossings below the water level are
+//! dropped; smoothed normals follow POV-Ray's rule exactly (see [`vertex_normal`], measured
+//! with `trace` to 1e-9); nothing allocates per ray.
 
 use super::roots::{Roots, MAX_ROOTS};
 use crate::accel::Aabb;
 use crate::scene::HeightField as HeightFieldSpec;
-use glam::{DVec2, DVec3};
+use glam::{DMat3, DVec2, DVec3};
+
+/// Heights are 16-bit values over this many units.
+const HEIGHT_UNITS: f64 = 65536.0;
+/// Smoothed vertex normals are stored as 16-bit integers of this full scale.
+const NORMAL_UNITS: f64 = 32767.0;
 
 /// A height field in its local space.
 #[derive(Clone, Debug)]
@@ -20,6 +27,8 @@ pub struct HeightField {
     rows: usize,
     heights: Vec<f64>,
     smooth: bool,
+    /// With `smooth`, each grid point's normal in grid units (see [`vertex_normal`]).
+    vertex_normals: Vec<[i16; 3]>,
     water_level: f64,
     lowest: f64,
     highest: f64,
@@ -38,15 +47,23 @@ impl HeightField {
         }
         let highest = spec.heights.iter().copied().fold(0.0, f64::max);
         let lowest = spec.heights.iter().copied().fold(highest, f64::min);
-        Some(HeightField {
+        let mut field = HeightField {
             columns: spec.columns,
             rows: spec.rows,
             heights: spec.heights.clone(),
             smooth: spec.smooth,
+            vertex_normals: Vec::new(),
             water_level: spec.water_level,
             lowest,
             highest,
-        })
+        };
+        if field.smooth {
+            field.vertex_normals = (0..field.rows as isize)
+                .flat_map(|row| (0..field.columns as isize).map(move |column| (column, row)))
+                .map(|(column, row)| vertex_normal(&field, column, row))
+                .collect();
+        }
+        Some(field)
     }
 
     /// The height at grid point (`column`, `row`), clamped into the grid.
@@ -233,33 +250,42 @@ impl HeightField {
         }
     }
 
-    /// The upward normal at a surface point: the triangle's, or interpolated when smooth.
+    /// The upward local normal at a surface point of the untransformed field.
     pub fn normal(&self, point: DVec3) -> DVec3 {
-        let (triangle, weights) = self.locate(point);
-        if !self.smooth {
-            let [(a, _, _), (b, _, _), (c, _, _)] = triangle;
-            let normal = (c - a).cross(b - a);
-            return if normal.y < 0.0 { -normal } else { normal };
-        }
-        triangle
-            .iter()
-            .zip(weights)
-            .map(|(&(_, column, row), weight)| self.vertex_normal(column, row) * weight)
-            .sum()
+        self.world_normal(point, DMat3::IDENTITY)
     }
 
-    /// The smoothed normal at a grid point, from the slopes to its neighbours.
-    fn vertex_normal(&self, column: isize, row: isize) -> DVec3 {
+    /// The upward normal (any length) at the local surface `point`, in the space that
+    /// `world_from_local_normal` maps local normals into: the triangle's, or when smooth the
+    /// bilinear blend of the cell's four corner normals, each taken into that space and made
+    /// unit length first (as POV-Ray blends them, measured under non-uniform scales).
+    pub fn world_normal(&self, point: DVec3, world_from_local_normal: DMat3) -> DVec3 {
+        if !self.smooth {
+            let ([(a, _, _), (b, _, _), (c, _, _)], _) = self.locate(point);
+            let normal = (c - a).cross(b - a);
+            let normal = if normal.y < 0.0 { -normal } else { normal };
+            return world_from_local_normal * normal;
+        }
         let cells = self.cells();
-        let left = (column - 1).max(0);
-        let right = (column + 1).min(self.columns as isize - 1);
-        let near = (row - 1).max(0);
-        let far = (row + 1).min(self.rows as isize - 1);
-        let slope_x =
-            (self.height(right, row) - self.height(left, row)) / ((right - left) as f64 / cells.x);
-        let slope_z = (self.height(column, far) - self.height(column, near))
-            / ((far - near) as f64 / cells.y);
-        DVec3::new(-slope_x, 1.0, -slope_z).normalize()
+        let grid = DVec2::new(point.x * cells.x, point.z * cells.y);
+        let column = (grid.x.floor() as isize).clamp(0, self.columns as isize - 2);
+        let row = (grid.y.floor() as isize).clamp(0, self.rows as isize - 2);
+        let u = (grid.x - column as f64).clamp(0.0, 1.0);
+        let v = (grid.y - row as f64).clamp(0.0, 1.0);
+        let corner = |c: isize, r: isize| {
+            let [x, y, z] = self.vertex_normals[r as usize * self.columns + c as usize];
+            // Grid units to the unit square: x and z over the cells, y over the height units.
+            let local = DVec3::new(
+                f64::from(x) * cells.x,
+                f64::from(y) * HEIGHT_UNITS,
+                f64::from(z) * cells.y,
+            );
+            (world_from_local_normal * local).normalize_or_zero()
+        };
+        corner(column, row) * ((1.0 - u) * (1.0 - v))
+            + corner(column + 1, row) * (u * (1.0 - v))
+            + corner(column, row + 1) * ((1.0 - u) * v)
+            + corner(column + 1, row + 1) * (u * v)
     }
 
     /// Bounds: the unit square from the water level (or the lowest point) to the highest.
@@ -298,4 +324,36 @@ fn triangle_crossing(
         return None;
     }
     Some(edge2.dot(q) * inverse)
+}
+
+/// POV-Ray's smoothed normal at grid point (`column`, `row`), in grid units (one unit per
+/// cell across, one per 1/65536 of height up): the sum of the unit normals of the planes
+/// through the point and each pair of its x and z neighbours that both exist, made unit
+/// length and cut to 16-bit integers of full scale 32767 (truncated, as POV-Ray stores it).
+fn vertex_normal(field: &HeightField, column: isize, row: isize) -> [i16; 3] {
+    let height = |c: isize, r: isize| field.height(c, r) * HEIGHT_UNITS;
+    let centre = height(column, row);
+    let mut sum = DVec3::ZERO;
+    for step_column in [-1isize, 1] {
+        for step_row in [-1isize, 1] {
+            let (neighbour_column, neighbour_row) = (column + step_column, row + step_row);
+            let exists = (0..field.columns as isize).contains(&neighbour_column)
+                && (0..field.rows as isize).contains(&neighbour_row);
+            if !exists {
+                continue;
+            }
+            let along_x = DVec3::new(
+                step_column as f64,
+                height(neighbour_column, row) - centre,
+                0.0,
+            );
+            let along_z = DVec3::new(0.0, height(column, neighbour_row) - centre, step_row as f64);
+            let normal = along_z.cross(along_x);
+            let normal = if normal.y < 0.0 { -normal } else { normal };
+            sum += normal.normalize_or_zero();
+        }
+    }
+    let unit = sum.normalize_or(DVec3::Y);
+    let stored = |value: f64| (value * NORMAL_UNITS).trunc() as i16;
+    [stored(unit.x), stored(unit.y), stored(unit.z)]
 }

@@ -195,6 +195,72 @@ fn height_field_crossings_flip_inside_and_normals_point_up() {
     }
 }
 
+/// A smooth 4 by 4 field scaled by <1, 5, 2>: POV-Ray's normals at points over it
+/// (`trace` in POV-Ray 3.7; heights in 16-bit units, row by row from z = 0).
+#[test]
+fn smooth_height_field_normals_match_povray() {
+    let levels = [
+        26214.0, 36535.0, 38114.0, 10858.0, 15291.0, 25970.0, 31025.0, 50250.0, 8738.0, 16006.0,
+        27912.0, 50613.0, 6553.0, 7767.0, 16262.0, 39321.0,
+    ];
+    let field = HeightField::new(&HeightFieldSpec {
+        columns: 4,
+        rows: 4,
+        heights: levels.iter().map(|level| level / 65536.0).collect(),
+        smooth: true,
+        water_level: 0.0,
+    })
+    .unwrap();
+    // Normals map through the inverse transpose of scale <1, 5, 2>.
+    let world_from_local_normal = glam::DMat3::from_diagonal(DVec3::new(1.0, 0.2, 0.5));
+    let known = [
+        (
+            (0.04359, 0.23673),
+            (-0.857528884584, 0.316899456125, 0.405239369770),
+        ),
+        (
+            (0.37659, 0.23673),
+            (-0.731786755891, 0.388258266035, 0.560128255633),
+        ),
+        (
+            (0.70959, 0.23673),
+            (-0.687440230904, 0.620588324027, 0.377221501265),
+        ),
+        (
+            (0.04359, 0.56973),
+            (-0.878663311760, 0.369784238048, 0.302010598918),
+        ),
+        (
+            (0.04359, 0.90273),
+            (-0.513678832267, 0.802893189777, 0.302484021215),
+        ),
+        (
+            (0.70959, 0.56973),
+            (-0.958706609659, 0.209451080061, 0.192384723035),
+        ),
+        (
+            (0.70959, 0.90273),
+            (-0.935522086078, 0.152611577774, 0.318603409884),
+        ),
+    ];
+    for ((x, z), (nx, ny, nz)) in known {
+        let hits = crossings(
+            |o, d, r| field.intersect(o, d, r),
+            DVec3::new(x, 3.0, z),
+            -DVec3::Y,
+        );
+        let point = DVec3::new(x, 3.0 - hits[0], z);
+        let normal = field
+            .world_normal(point, world_from_local_normal)
+            .normalize();
+        let expected = DVec3::new(nx, ny, nz);
+        assert!(
+            (normal - expected).abs().max_element() < 1e-9,
+            "at ({x}, {z}): {normal} against {expected}"
+        );
+    }
+}
+
 fn sweep(spline: SweepSpline) -> SphereSweep {
     SphereSweep::new(&SphereSweepSpec {
         spline,

@@ -636,13 +636,22 @@ impl Leaf {
         }
     }
 
-    /// The unit outward world normal for the shape's own `local` normal (flipped when
+    /// The unit outward world normal at the local surface point `local` (flipped when
     /// inverse).
-    fn world_normal(&self, local: DVec3) -> DVec3 {
-        let normal = match &self.local_from_world {
-            None => local,
-            Some(map) => map.matrix3.transpose() * local,
+    fn world_normal(&self, local: DVec3, part: u8) -> DVec3 {
+        let normal = match (&self.shape, &self.local_from_world) {
+            (_, None) => self.shape.normal(local, part),
+            // A smooth height field blends normals after transforming them.
+            (LocalShape::HeightField(field), Some(map)) => {
+                field.world_normal(local, map.matrix3.transpose())
+            }
+            (shape, Some(map)) => map.matrix3.transpose() * shape.normal(local, part),
         };
+        self.oriented(normal)
+    }
+
+    /// The unit world `normal` (any length), flipped when inverse.
+    fn oriented(&self, normal: DVec3) -> DVec3 {
         let normal = normal.try_normalize().unwrap_or(DVec3::Z);
         if self.inverse {
             -normal
@@ -654,7 +663,7 @@ impl Leaf {
     #[cfg(test)]
     /// The unit outward world normal at the world surface `point` (flipped when inverse).
     pub fn normal(&self, point: DVec3, part: u8) -> DVec3 {
-        self.world_normal(self.shape.normal(self.local_point(point), part))
+        self.world_normal(self.local_point(point), part)
     }
 
     /// The normal, material, uv coordinates and corner blend at the world surface `point`
@@ -665,7 +674,11 @@ impl Leaf {
         match &self.shape {
             LocalShape::MeshFace(face) => {
                 let weights = barycentric(face.corners(), local);
-                let normal = self.world_normal(face.normal_at_weights(weights));
+                let normal = match &self.local_from_world {
+                    None => face.normal_at_weights(weights),
+                    Some(map) => map.matrix3.transpose() * face.normal_at_weights(weights),
+                };
+                let normal = self.oriented(normal);
                 let materials = face.corner_materials;
                 let uv = materials
                     .iter()
@@ -674,7 +687,7 @@ impl Leaf {
                 HitDetails::blended(normal, materials, weights, uv)
             }
             shape => {
-                let normal = self.world_normal(shape.normal(local, part));
+                let normal = self.world_normal(local, part);
                 let mut details = HitDetails::plain(normal, self.material);
                 if uses_uv(self.material) {
                     details.uv = shape_uv(shape, local, part);

@@ -38,14 +38,15 @@ enum PendingHit<'a> {
 }
 
 impl Primitive {
-    /// The nearest hit strictly between the limits, ignoring leaves for which `skip` is true.
+    /// The nearest hit strictly between the limits, ignoring leaves for which `skip` is true;
+    /// `shadow` rays ignore `bounded_by` boxes.
     #[inline]
     fn nearest<'a>(
         &'a self,
         ray: &Ray,
         inverse_direction: DVec3,
-        min_distance: f64,
-        max_distance: f64,
+        (min_distance, max_distance): (f64, f64),
+        shadow: bool,
         skip: &impl Fn(u32) -> bool,
     ) -> Option<(f64, PendingHit<'a>)> {
         match self {
@@ -64,10 +65,13 @@ impl Primitive {
                 Some((distance, PendingHit::MeshTriangle(instance, triangle)))
             }
             Primitive::Csg(tree) => {
-                let hit =
-                    tree.nearest(ray, inverse_direction, min_distance, max_distance, |l| {
-                        !skip(l.material())
-                    })?;
+                let hit = tree.nearest(
+                    ray,
+                    inverse_direction,
+                    (min_distance, max_distance),
+                    shadow,
+                    |l| !skip(l.material()),
+                )?;
                 let leaf = &tree.leaves[hit.leaf as usize];
                 Some((hit.distance, PendingHit::Leaf(leaf, hit.part)))
             }
@@ -133,7 +137,7 @@ impl World {
 
     /// Nearest hit with `min_distance < distance < max_distance`.
     pub fn first_hit(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<SurfaceHit> {
-        self.search(ray, min_distance, max_distance, &|_| false)
+        self.search(ray, min_distance, max_distance, false, &|_| false)
     }
 
     /// Nearest hit like [`World::first_hit`], ignoring objects marked `no_shadow`.
@@ -144,7 +148,7 @@ impl World {
         max_distance: f64,
     ) -> Option<SurfaceHit> {
         let materials = &self.materials;
-        self.search(ray, min_distance, max_distance, &|material: u32| {
+        self.search(ray, min_distance, max_distance, true, &|material: u32| {
             materials
                 .get(material as usize)
                 .is_some_and(|material| material.no_shadow)
@@ -159,7 +163,7 @@ impl World {
         max_distance: f64,
         skip: &impl Fn(u32) -> bool,
     ) -> Option<SurfaceHit> {
-        self.search(ray, min_distance, max_distance, skip)
+        self.search(ray, min_distance, max_distance, false, skip)
     }
 
     /// Number of leaf primitives (shapes), counting every CSG child.
@@ -177,12 +181,14 @@ impl World {
         self.unbounded.len()
     }
 
-    /// The nearest hit, skipping leaves for which `skip` is true.
+    /// The nearest hit, skipping leaves for which `skip` is true; `shadow` rays ignore
+    /// `bounded_by` boxes.
     fn search(
         &self,
         ray: &Ray,
         min_distance: f64,
         max_distance: f64,
+        shadow: bool,
         skip: &impl Fn(u32) -> bool,
     ) -> Option<SurfaceHit> {
         if !usable(ray, min_distance, max_distance) {
@@ -192,9 +198,13 @@ impl World {
         let mut closest = max_distance;
         let mut best = None;
         for primitive in &self.unbounded {
-            if let Some(found) =
-                primitive.nearest(ray, inverse_direction, min_distance, closest, skip)
-            {
+            if let Some(found) = primitive.nearest(
+                ray,
+                inverse_direction,
+                (min_distance, closest),
+                shadow,
+                skip,
+            ) {
                 closest = found.0;
                 best = Some(found);
             }
@@ -205,7 +215,13 @@ impl World {
             min_distance,
             closest,
             |at, limit| {
-                self.primitives[at].nearest(ray, inverse_direction, min_distance, limit, skip)
+                self.primitives[at].nearest(
+                    ray,
+                    inverse_direction,
+                    (min_distance, limit),
+                    shadow,
+                    skip,
+                )
             },
         );
         finish(ray, from_bvh.or(best), &self.materials)
@@ -238,9 +254,13 @@ impl World {
         let mut closest = max_distance;
         let mut best = None;
         for primitive in self.unbounded.iter().chain(&self.primitives) {
-            if let Some(found) =
-                primitive.nearest(ray, inverse_direction, min_distance, closest, &|_| false)
-            {
+            if let Some(found) = primitive.nearest(
+                ray,
+                inverse_direction,
+                (min_distance, closest),
+                false,
+                &|_| false,
+            ) {
                 closest = found.0;
                 best = Some(found);
             }

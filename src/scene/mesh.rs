@@ -40,6 +40,9 @@ pub struct Mesh {
     /// `inside_vector`: when given, the mesh is a solid (points are inside when a ray along
     /// this vector crosses the surface an odd number of times).
     pub inside_vector: Option<DVec3>,
+    /// Set for a triangulated `bicubic_patch`: POV-Ray never tests its hits against its
+    /// `clipped_by` objects; only their box bounds it (measured with `trace`).
+    pub ignores_clipped_by: bool,
 }
 
 /// One triangle of a mesh, by value.

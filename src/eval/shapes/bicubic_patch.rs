@@ -110,6 +110,7 @@ impl Evaluator {
         }
         let (triangles, triangle_uvs) = triangulate(&controls, 1 << u_steps, 1 << v_steps);
         let mut mesh = Mesh::from_triangles(&triangles);
+        mesh.ignores_clipped_by = true;
         // Each corner's uv: the patch parameters mapped bilinearly onto the uv_vectors.
         for [s_t_a, s_t_b, s_t_c] in triangle_uvs {
             let first = mesh.uvs.len() as u32;

@@ -3,10 +3,10 @@
 //! In: the item stream after the brace. Out: [`Shape::HeightField`] with its grid of heights.
 //! Holds: heights are what POV-Ray makes of the file (measured with `trace`): a 16-bit value
 //! over 65536, where an 8-bit grey level g counts as 257 g and an 8-bit colour pixel as
-//! 256 red + green; a function is sampled at x = column / (W - 1), y = row / (H - 1) (row 0
-//! at z = 1), clamped to [0, 1] and cut to 16 bits. Palette images give the height of their
-//! colour, not of their palette index (the raster loader keeps no indices). A missing file is
-//! a diagnostic listing the folders searched.
+//! 256 red + green; a palette PNG pixel as 256 times its palette index, whatever the colour;
+//! a function is sampled at x = column / (W - 1), y = row / (H - 1) (row 0 at z = 1), and its
+//! 16-bit level wraps around (see [`function_level`]). A missing file is a diagnostic listing
+//! the folders searched.
 
 use super::super::stream::Stream;
 use super::super::value::Value;
@@ -168,16 +168,22 @@ impl Evaluator {
             for column in 0..columns {
                 let x = column as f64 / (columns - 1) as f64;
                 let value = function.eval(&[x, y, 0.0]);
-                let clamped = if value.is_finite() {
-                    value.clamp(0.0, 1.0)
-                } else {
-                    0.0
-                };
-                heights[row * columns + column] = (clamped * FULL_SCALE).floor() / HEIGHT_DIVISOR;
+                heights[row * columns + column] = function_level(value) / HEIGHT_DIVISOR;
             }
         }
         Ok((columns, rows, heights))
     }
+}
+
+/// The 16-bit level POV-Ray makes of a function value (measured with `trace`): the value
+/// times 65535 in single precision, cut toward zero and wrapped into 0 to 65535, so 1.1 is
+/// low again and -0.1 high; values that are not finite give 0.
+fn function_level(value: f64) -> f64 {
+    let scaled = value as f32 * FULL_SCALE as f32;
+    if !scaled.is_finite() {
+        return 0.0;
+    }
+    (scaled.trunc() as i64).rem_euclid(HEIGHT_DIVISOR as i64) as f64
 }
 
 /// The heights of an image, grid row 0 being the image's bottom row.
@@ -189,7 +195,13 @@ fn image_heights(raster: &Raster) -> (usize, usize, Vec<f64>) {
         for column in 0..columns {
             let [red, green, _, _] = raster.pixel(column as i64, image_row);
             let level = |value: f32, scale: f64| (f64::from(value) * scale).round();
-            let value = if raster.grey || raster.sixteen_bit || raster.high_dynamic_range {
+            let palette_index = raster
+                .palette_indices
+                .as_ref()
+                .and_then(|indices| indices.get(image_row as usize * columns + column));
+            let value = if let Some(&index) = palette_index {
+                f64::from(index) * 256.0
+            } else if raster.grey || raster.sixteen_bit || raster.high_dynamic_range {
                 level(red, FULL_SCALE)
             } else {
                 level(red, 255.0) * 256.0 + level(green, 255.0)
