@@ -383,6 +383,10 @@ impl Evaluator {
                             Pigment::Image {
                                 warps: Some(pattern),
                                 ..
+                            }
+                            | Pigment::Average {
+                                warps: Some(pattern),
+                                ..
                             } => pattern.note_transform(&t),
                             _ => {}
                         }
@@ -488,7 +492,11 @@ impl Evaluator {
         span: Span,
     ) -> EvalResult<()> {
         if average {
-            *pigment = Pigment::Average(entries);
+            *pigment = Pigment::Average {
+                entries,
+                transform: Transform::IDENTITY,
+                warps: None,
+            };
             return Ok(());
         }
         match pigment {
@@ -681,6 +689,11 @@ fn modified_pattern(pigment: &mut Pigment) -> Option<&mut Pattern> {
                 image.clone(),
             )))
         })),
+        // The pattern only carries the warps; its kind (any would do) is never evaluated.
+        Pigment::Average { warps, .. } => Some(
+            warps
+                .get_or_insert_with(|| Box::new(Pattern::new(crate::pattern::PatternKind::Planar))),
+        ),
         _ => None,
     }
 }
