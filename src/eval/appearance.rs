@@ -2,7 +2,7 @@
 //! are in `finish.rs`).
 
 use super::stream::Stream;
-use super::texture_maps::{layered, AppearanceMap};
+use super::texture_maps::{change_top_layer, layered, top_layer, AppearanceMap};
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
@@ -89,9 +89,18 @@ impl Evaluator {
                     };
                     let mut body = Stream::new(block.body.clone());
                     match &*head {
+                        // `pigment` and `finish` modify the texture's own (of a layered
+                        // texture: its top layer's), as in POV-Ray (measured with a layered
+                        // texture given a `pigment { octaves 3 }` and a finish).
                         "finish" => {
-                            let base = crate::scene::Finish::clone(&texture.finish);
-                            texture.finish = Arc::new(self.eval_finish(&mut body, Some(base))?);
+                            let base = crate::scene::Finish::clone(&top_layer(&texture).finish);
+                            let finish = Arc::new(self.eval_finish(&mut body, Some(base))?);
+                            change_top_layer(&mut texture, |top| top.finish = finish);
+                        }
+                        "pigment" => {
+                            let base = top_layer(&texture).pigment.clone();
+                            let pigment = self.eval_pigment_from(&mut body, base)?;
+                            change_top_layer(&mut texture, |top| top.pigment = pigment);
                         }
                         "texture_map" => {
                             let entries = self.eval_texture_map(&mut body)?;
@@ -284,7 +293,14 @@ impl Evaluator {
 
     /// `pigment { .. }`: a solid colour, checker or gradient with a colour map.
     pub(crate) fn eval_pigment(&mut self, stream: &mut Stream) -> EvalResult<Pigment> {
-        let mut pigment = self.default_texture.pigment.clone();
+        let base = self.default_texture.pigment.clone();
+        self.eval_pigment_from(stream, base)
+    }
+
+    /// A `pigment { .. }` block that modifies `base` (the pigment of the texture it is
+    /// written in); a pattern or pigment named in it replaces `base`.
+    fn eval_pigment_from(&mut self, stream: &mut Stream, base: Pigment) -> EvalResult<Pigment> {
+        let mut pigment = base;
         let mut colour_map: Option<Vec<(f64, Colour)>> = None;
         let mut average = false;
         let mut earlier_item = None;
@@ -338,11 +354,7 @@ impl Evaluator {
                     }
                     _ => PigmentMap::Colours(grey_ramp()),
                 };
-                pigment = Pigment::Pattern {
-                    pattern: Box::new(spec),
-                    map,
-                    transform: Transform::IDENTITY,
-                };
+                set_pattern(&mut pigment, spec, map);
                 continue;
             }
             if let Item::Keyword(word, span) = &item {
@@ -354,11 +366,7 @@ impl Evaluator {
                         Some(count) => PigmentMap::Blocks(self.block_list(stream, count)?),
                         None => PigmentMap::Colours(default_colours(&spec)),
                     };
-                    pigment = Pigment::Pattern {
-                        pattern: Box::new(spec),
-                        map,
-                        transform: Transform::IDENTITY,
-                    };
+                    set_pattern(&mut pigment, spec, map);
                     continue;
                 }
                 if let Some(pattern) = modified_pattern(&mut pigment) {
@@ -381,6 +389,10 @@ impl Evaluator {
                         match &mut pigment {
                             Pigment::Pattern { pattern, .. } => pattern.note_transform(&t),
                             Pigment::Image {
+                                warps: Some(pattern),
+                                ..
+                            }
+                            | Pigment::Average {
                                 warps: Some(pattern),
                                 ..
                             } => pattern.note_transform(&t),
@@ -488,7 +500,11 @@ impl Evaluator {
         span: Span,
     ) -> EvalResult<()> {
         if average {
-            *pigment = Pigment::Average(entries);
+            *pigment = Pigment::Average {
+                entries,
+                transform: Transform::IDENTITY,
+                warps: None,
+            };
             return Ok(());
         }
         match pigment {
@@ -670,6 +686,32 @@ fn set_colour_component(colour: &mut Colour, keyword: &str, amount: f64) {
     }
 }
 
+/// Gives `pigment` the pattern `spec` with `map`. A pigment that already has a pattern (a
+/// named pigment or the texture's, being modified) only changes its pattern: it keeps its
+/// transformations and, when both patterns have continuous values, its colour or pigment
+/// map (measured: `pigment { P gradient x }` with `P` a scaled granite with a colour map
+/// is a scaled gradient with that map).
+fn set_pattern(pigment: &mut Pigment, spec: Pattern, map: PigmentMap) {
+    if let Pigment::Pattern {
+        pattern,
+        map: old_map,
+        ..
+    } = pigment
+    {
+        let keeps_map = spec.block_count().is_none() && !matches!(old_map, PigmentMap::Blocks(_));
+        **pattern = spec;
+        if !keeps_map {
+            *old_map = map;
+        }
+        return;
+    }
+    *pigment = Pigment::Pattern {
+        pattern: Box::new(spec),
+        map,
+        transform: Transform::IDENTITY,
+    };
+}
+
 /// The pattern that the pattern modifiers written in `pigment` change: the pattern of a
 /// patterned pigment, or the image pattern that carries an image map's turbulence and warps
 /// (made on first use). `None` for other pigments.
@@ -681,6 +723,11 @@ fn modified_pattern(pigment: &mut Pigment) -> Option<&mut Pattern> {
                 image.clone(),
             )))
         })),
+        // The pattern only carries the warps; its kind (any would do) is never evaluated.
+        Pigment::Average { warps, .. } => Some(
+            warps
+                .get_or_insert_with(|| Box::new(Pattern::new(crate::pattern::PatternKind::Planar))),
+        ),
         _ => None,
     }
 }

@@ -174,8 +174,9 @@ impl Evaluator {
             colour_map: Vec::new(),
             jitter: 0.0,
             up: DVec3::Y,
-            arc_angle: 180.0,
-            falloff_angle: 180.0,
+            // A full circle by default (measured; the manual says 180).
+            arc_angle: 360.0,
+            falloff_angle: 360.0,
         };
         while let Some(item) = self.next_item(stream)? {
             match &item {

@@ -663,11 +663,16 @@ pub(crate) fn change_top_layer(texture: &mut Texture, change: impl FnOnce(&mut T
 
 /// The finish of the layer [`change_top_layer`] changes.
 pub(crate) fn top_layer_finish(texture: &Texture) -> &crate::scene::Finish {
+    &top_layer(texture).finish
+}
+
+/// The layer [`change_top_layer`] changes.
+pub(crate) fn top_layer(texture: &Texture) -> &Texture {
     match texture.compound.as_deref() {
         Some(CompoundTexture::Layered(layers)) => match layers.last() {
-            Some(top) => top_layer_finish(top),
-            None => &texture.finish,
+            Some(top) => top_layer(top),
+            None => texture,
         },
-        _ => &texture.finish,
+        _ => texture,
     }
 }

@@ -142,7 +142,7 @@ fn pigment_depth(pigment: &Pigment) -> usize {
             };
             pattern_depth(pattern).max(in_map)
         }
-        Pigment::Average(entries) => deepest(&mut entries.iter().map(|entry| &entry.1)),
+        Pigment::Average { entries, .. } => deepest(&mut entries.iter().map(|entry| &entry.1)),
         Pigment::UvMapped(inner) => pigment_depth(inner),
         _ => 0,
     }

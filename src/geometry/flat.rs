@@ -305,7 +305,9 @@ impl Cuboid {
             let to_min = (self.min[axis] - start) / step;
             let to_max = (self.max[axis] - start) / step;
             let axis_tag = 2 * axis as u8;
-            let (near, far, near_part, far_part) = if to_min <= to_max {
+            // By direction, not by distance: a flat box (both faces at one distance) is then
+            // entered through the face the ray meets from outside.
+            let (near, far, near_part, far_part) = if step > 0.0 {
                 (to_min, to_max, axis_tag, axis_tag + 1)
             } else {
                 (to_max, to_min, axis_tag + 1, axis_tag)

@@ -88,7 +88,7 @@ fn pigment_uses_uv(pigment: &Pigment) -> bool {
     match pigment {
         Pigment::UvMapped(_) => true,
         Pigment::Solid(_) | Pigment::Image { .. } => false,
-        Pigment::Average(entries) => entries.iter().any(|(_, p)| pigment_uses_uv(p)),
+        Pigment::Average { entries, .. } => entries.iter().any(|(_, p)| pigment_uses_uv(p)),
         Pigment::Pattern { map, .. } => match map {
             PigmentMap::Colours(_) => false,
             PigmentMap::Blocks(blocks) => blocks.iter().any(pigment_uses_uv),

@@ -91,15 +91,22 @@ pub fn cube_random_value(cube: [i64; 3]) -> f64 {
     unit_random(cube_hash(cube))
 }
 
+/// Three random numbers in [0, 1) of the unit cube whose lowest corner is `cube`: crackle's
+/// feature point offset, and the jitter of a repeated black hole warp's centre in the repeat
+/// cell with that index (measured: the same numbers to the last bit).
+pub fn cube_random_vector(cube: [i64; 3]) -> DVec3 {
+    let hash = cube_hash(cube);
+    DVec3::new(
+        unit_random(hash),
+        unit_random(hash + 1),
+        unit_random(hash + 2),
+    )
+}
+
 /// Crackle's random feature point of the unit cube whose lowest corner is `cube` (inside that
 /// cube).
 pub fn crackle_feature_point(cube: [i64; 3]) -> DVec3 {
-    let hash = cube_hash(cube);
-    DVec3::new(
-        cube[0] as f64 + unit_random(hash),
-        cube[1] as f64 + unit_random(hash + 1),
-        cube[2] as f64 + unit_random(hash + 2),
-    )
+    DVec3::new(cube[0] as f64, cube[1] as f64, cube[2] as f64) + cube_random_vector(cube)
 }
 
 #[cfg(test)]

@@ -12,7 +12,7 @@ mod lattice;
 mod perlin;
 mod perlin_tables;
 
-pub use cells::{cells_value, crackle_feature_point, cube_random_value};
+pub use cells::{cells_value, crackle_feature_point, cube_random_value, cube_random_vector};
 
 use glam::DVec3;
 

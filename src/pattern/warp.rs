@@ -7,9 +7,12 @@
 //! Measured against POV-Ray 3.7 (a gradient per axis read back through pigment functions):
 //! - black hole: with `d = p − centre` and closeness `c = 1 − |d|/radius` inside the radius,
 //!   the point moves to `p + d·min(1, strength·c^falloff)` (`inverse`: minus).
+//!   With `repeat`, the centre of cell `n = ⌊p/repeat⌋` (0 on axes without repeat) is
+//!   `centre + n·repeat`, plus `turbulence` times the cell's three random numbers, which
+//!   are crackle's per-cube numbers for the cube with index `n` (bit for bit).
 //! - repeat `w·axis`: the copy index `n = ⌊p_axis / w⌋`; the point moves to its place in the
-//!   first copy plus `n·offset`; in odd copies each `flip` axis mirrors (the repeat axis
-//!   within the copy, `w − p`, the others about 0).
+//!   first copy; in odd copies each `flip` axis mirrors there (the repeat axis within the
+//!   copy, `w − p`, the others about 0); then `n·offset` is added.
 //! - cylindrical: `(u·r^e, y, r)` with `r` the distance from the y axis and
 //!   `u = atan2(z, x)/2π` in [0, 1); spherical: `(u·r^e, v·r^e, r)` with
 //!   `v = 1 − acos(y/r)/π`; toroidal: `(u·d^e, v·d^e, d)` with `d` the distance from the
@@ -20,7 +23,7 @@ use std::f64::consts::PI;
 
 use glam::DVec3;
 
-use crate::noise::{vector_turbulence, NoiseGenerator, TurbulenceShape};
+use crate::noise::{cube_random_vector, vector_turbulence, NoiseGenerator, TurbulenceShape};
 
 /// One warp.
 #[derive(Clone, Debug, PartialEq)]
@@ -169,7 +172,8 @@ fn black_hole(hole: &BlackHole, point: DVec3) -> DVec3 {
             }
         }
         if hole.jitter != DVec3::ZERO {
-            centre += hole.jitter * cell_random_vector(cell);
+            let index = [cell.x as i64, cell.y as i64, cell.z as i64];
+            centre += hole.jitter * cube_random_vector(index);
         }
     }
     let offset = point - centre;
@@ -186,27 +190,13 @@ fn black_hole(hole: &BlackHole, point: DVec3) -> DVec3 {
     }
 }
 
-/// A deterministic pseudo-random vector in [0, 1)³ for a black hole repeat cell.
-fn cell_random_vector(cell: DVec3) -> DVec3 {
-    let mut state = (cell.x as i64 as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
-        ^ (cell.y as i64 as u64).wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
-        ^ (cell.z as i64 as u64).wrapping_mul(0x1656_67B1_9E37_79F9);
-    let mut next = || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
-    DVec3::new(next(), next(), next())
-}
-
 /// The repeat warp.
 fn repeat_copy(repeat: &Repeat, point: DVec3) -> DVec3 {
     let axis = repeat.axis;
     let copy = (point[axis] / repeat.width).floor();
     let mut moved = point;
     moved[axis] -= copy * repeat.width;
-    moved += copy * repeat.offset;
+    // The copy is mirrored first and offset afterwards (measured).
     if copy.rem_euclid(2.0) >= 1.0 {
         for (flip_axis, flips) in repeat.flip.iter().enumerate() {
             if *flips {
@@ -218,7 +208,7 @@ fn repeat_copy(repeat: &Repeat, point: DVec3) -> DVec3 {
             }
         }
     }
-    moved
+    moved + copy * repeat.offset
 }
 
 /// Fraction of a turn of the angle `atan2(y, x)`, in [0, 1).
@@ -320,6 +310,61 @@ mod tests {
             moved - moved.floor(),
             DVec3::new(0.65790, 0.60526, 0.76316)
         ));
+    }
+
+    #[test]
+    fn repeated_black_hole_jitters_each_cell_like_povray() {
+        // `black_hole <.45,.45,.45>, .45 strength 1e6 inverse repeat <1,1,R>
+        // turbulence <.1,.1,.1>` pulls the cell's points onto its jittered centre; POV-Ray
+        // printed the centres' jitter fractions (colour precision) for these cells.
+        let mut hole = BlackHole::new(DVec3::splat(0.45), 0.45);
+        hole.strength = 1e6;
+        hole.inverse = true;
+        hole.jitter = DVec3::splat(0.1);
+        let cases = [
+            (DVec3::ONE, [1, -1, -1], [0.336299, 0.265322, 0.886147]),
+            (DVec3::ONE, [2, 1, 0], [0.354116, 0.521504, 0.780446]),
+            (
+                DVec3::new(1.0, 1.0, 0.0),
+                [-1, 1, 0],
+                [0.554328, 0.796625, 0.330808],
+            ),
+        ];
+        for (repeat, cell, expected) in cases {
+            hole.repeat = repeat;
+            let cell = DVec3::new(cell[0] as f64, cell[1] as f64, cell[2] as f64);
+            let centre = black_hole(&hole, cell + DVec3::splat(0.5));
+            let fraction = (centre - cell - DVec3::splat(0.45)) / 0.1;
+            assert!(
+                (fraction - DVec3::from_array(expected)).abs().max_element() < 1e-5,
+                "{cell}: {fraction}"
+            );
+        }
+    }
+
+    #[test]
+    fn repeat_flips_a_copy_before_offsetting_it() {
+        // POV-Ray's `repeat x * 0.9 offset <0.2, 0.4, 0> flip <1, 1, 0>` at y = 0.3.
+        let repeat = Repeat {
+            axis: 0,
+            width: 0.9,
+            offset: DVec3::new(0.2, 0.4, 0.0),
+            flip: [true, true, false],
+        };
+        let cases = [
+            (-2.05, -0.35, -1.5),
+            (-1.75, -0.35, -0.5),
+            (-0.85, 0.65, -0.7),
+            (1.25, 0.75, 0.1),
+            (1.85, 0.45, 1.1),
+        ];
+        for (x, expected_x, expected_y) in cases {
+            let moved = repeat_copy(&repeat, DVec3::new(x, 0.3, 0.0));
+            assert!(
+                close(moved, DVec3::new(expected_x, expected_y, 0.0)),
+                "{x}: {moved}"
+            );
+        }
     }
 
     #[test]

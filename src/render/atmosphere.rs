@@ -42,7 +42,9 @@
 //!   mixed in like a fog of the rainbow's `distance`, and the falloff weight w then blends
 //!   that result with the colour behind (`(1 − w) · C + w · fogged`, so the weight also
 //!   thins the bow's transmit floor). Jitter adds a hashed offset of up to `jitter` to the
-//!   index.
+//!   index. Unlike a fog's, the bow's filter is weighted by its share: with the part passed
+//!   `p = max(exp(−d/distance), transmit)` and `w = 1 − p`, the colour behind C becomes
+//!   `C · p · (1 − filter · w · (1 − R)) + w · R` (measured, 16-bit renders).
 
 use super::antialias::unit_hash;
 use super::pattern::{colour_map_lookup, pigment_colour};
@@ -114,14 +116,27 @@ impl<'a> AtmosphereShader<'a> {
         for rainbow in &self.atmosphere.rainbows {
             if let Some((share, colour, weight)) = rainbow_share(rainbow, direction, depth) {
                 // The arc's falloff weakens the whole layer, transparency included.
-                let (mut layer_keep, mut layer_add) = (DVec3::ONE, DVec3::ZERO);
-                mix_layer(&mut layer_keep, &mut layer_add, share, colour);
+                let (layer_keep, layer_add) = rainbow_layer(share, colour);
                 keep *= DVec3::splat(1.0 - weight) + weight * layer_keep;
                 add += weight * layer_add;
             }
         }
         (keep, add)
     }
+}
+
+/// A rainbow's layer with fog share `share` and colour `colour`, as the factor on the colour
+/// behind and the colour added. Unlike a fog's, the colour's filter acts in proportion to
+/// the share (measured: a bow of filter 1 at a tiny share leaves the colour behind as it is).
+fn rainbow_layer(share: f64, colour: Colour) -> (DVec3, DVec3) {
+    if share <= 0.0 || share.is_nan() {
+        return (DVec3::ONE, DVec3::ZERO);
+    }
+    let passed = (1.0 - share.min(1.0)).max(colour.transmit);
+    let tint = colour.rgb_vec();
+    let shown = 1.0 - passed;
+    let filtered = DVec3::ONE - colour.filter * shown * (DVec3::ONE - tint);
+    (passed * filtered, shown * tint)
 }
 
 /// Adds one fog-like layer with fog share `share` (1 − a) and colour `colour` to what `keep`

@@ -16,8 +16,9 @@
 //!   (no clamping; so a sphere of `rgbf <0.8,0.5,0.2,1>` passes 0.64, 0.25, 0.04); an
 //!   opaque surface gives zero. The number of surfaces is not limited by
 //!   `max_trace_level`. `shadowless` lights are never blocked. Surfaces closer than 1e-3 to
-//!   the lit point are ignored. Interiors with `fade_distance` fade the light over the
-//!   length the shadow ray runs inside them; interiors with `caustics` brighten it at each
+//!   the lit point are ignored. Interiors with `fade_distance` and a positive `fade_power`
+//!   (unlike camera rays, which fade with 0 too) fade the light over the length the shadow
+//!   ray runs inside them; interiors with `caustics` brighten it at each
 //!   crossing (fake caustics, see [`fake_caustics`]).
 //! - parallel lights: shadow rays run along the light's direction up to the plane through
 //!   the light perpendicular to it; points beyond that plane are lit but never shadowed.
@@ -251,8 +252,9 @@ pub fn transmission(pigment: Colour) -> DVec3 {
 
 /// What fraction of the light from `distance` away along `direction` reaches `point`.
 ///
-/// Light also fades through objects whose interior has `fade_distance`, over the length
-/// between entering and leaving them (from the lit point when it is inside).
+/// Light also fades through objects whose interior has `fade_distance` and a positive
+/// `fade_power`, over the length between entering and leaving them (from the lit point when
+/// it is inside).
 pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f64) -> DVec3 {
     let ray = Ray {
         origin: point,
@@ -281,8 +283,12 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
                 Some(_) => hit.distance,
                 None => 0.0,
             };
-            if let Some(kept) = interior_fade(&material.interior, hit.distance - since) {
-                filter *= kept;
+            // Shadow rays fade only with a positive `fade_power`; camera rays also fade with
+            // 0 (measured).
+            if material.interior.fade_power > 0.0 {
+                if let Some(kept) = interior_fade(&material.interior, hit.distance - since) {
+                    filter *= kept;
+                }
             }
             entered = None;
         }

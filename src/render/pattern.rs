@@ -95,11 +95,22 @@ fn colour_at_depth(
                 }
             }
         }
-        Pigment::Average(entries) => {
+        Pigment::Average {
+            entries,
+            transform,
+            warps,
+        } => {
             let total: f64 = entries.iter().map(|entry| entry.0).sum();
             if total == 0.0 || !total.is_finite() {
                 return Colour::BLACK;
             }
+            // The entries carry the average's transformations, so the warped point goes back
+            // out of the average's pattern space before they see it.
+            let world_point = match warps {
+                Some(pattern) => transform
+                    .point_to_outer(pattern.moved_point(transform.point_to_inner(world_point))),
+                None => world_point,
+            };
             let mut sum = [0.0; 5];
             for (weight, entry) in entries {
                 let colour = colour_at_depth(entry, world_point, surface, depth + 1).to_array();

@@ -91,7 +91,17 @@ pub enum Pigment {
         transform: Transform,
     },
     /// `average`: the weighted mean of the entries' colours.
-    Average(Vec<(f64, Pigment)>),
+    Average {
+        /// `(weight, pigment)` entries of the `pigment_map`.
+        entries: Vec<(f64, Pigment)>,
+        /// Outer space to the average's own pattern space: the transformations written in
+        /// the pigment (the entries carry them too, so they apply when there are no warps).
+        transform: Transform,
+        /// The `turbulence` and warps written in the pigment, carried by a pattern whose
+        /// value is not used: the entries are evaluated at the warped point (POV-Ray treats
+        /// `average` as a pattern); `None` without any.
+        warps: Option<Box<Pattern>>,
+    },
     /// `image_map { .. }`: an image projected onto the pattern space.
     Image {
         image: Arc<ImageMap>,
@@ -322,9 +332,14 @@ impl Pigment {
                         .for_each(|(_, p)| p.transform_in(t, object_level)),
                 }
             }
-            Pigment::Average(entries) => entries
-                .iter_mut()
-                .for_each(|(_, p)| p.transform_in(t, object_level)),
+            Pigment::Average {
+                entries, transform, ..
+            } => {
+                *transform = transform.then(t);
+                entries
+                    .iter_mut()
+                    .for_each(|(_, p)| p.transform_in(t, object_level))
+            }
             Pigment::Image { transform, .. } => *transform = transform.then(t),
             Pigment::UvMapped(_) if object_level => {}
             Pigment::UvMapped(inner) => inner.transform_in(t, false),
