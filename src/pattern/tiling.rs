@@ -11,7 +11,9 @@
 //! at the edges. Every tile of a tiling shares one bevel width (but for a few edges of the
 //! dodecagons of `tiling 22`); for the tilings made of one regular polygon it is the
 //! polygon's inradius, so the bevel reaches the centre. A point on an edge belongs to the
-//! tile it enters when moved along +x (or, on an edge along x, along +z).
+//! tile it enters when moved along +z (or, on an edge along z, along +x), as in POV-Ray
+//! for most edges; exactly on some lattice lines POV-Ray gives other values (e.g. 0 on
+//! x = 0 and z = 0 in `tiling 13`), which these tables do not reproduce.
 //!
 //! Each layout below was measured with probe scenes (`pigment { tiling N }` through a
 //! black-to-white colour map, sampled on grids with `#debug`): the period, the tiles in one
@@ -753,8 +755,8 @@ pub fn tiling_value(number: u8, point: glam::DVec3) -> f64 {
     let x = point.x - along_u * ux - along_v * vx;
     let z = point.z - along_u * uz - along_v * vz;
     // The tile the point is deepest in (depths in bevel widths); on an edge shared by two
-    // tiles, the one the point enters when moved a little along +x (and a littler along +z),
-    // as POV-Ray assigns edges.
+    // tiles, the one the point enters when moved a little along +z and a littler along +x,
+    // as POV-Ray assigns most edges.
     let mut best_kind = 0;
     let mut best_depth = f64::NEG_INFINITY;
     let mut best_nudged_depth = f64::NEG_INFINITY;
@@ -782,14 +784,18 @@ pub fn tiling_value(number: u8, point: glam::DVec3) -> f64 {
         }
     }
     let rise = 1.0 - best_depth.clamp(0.0, 1.0);
-    (f64::from(best_kind) + rise) / f64::from(layout.types)
+    // POV-Ray scales by 1 / types held in single precision, which lifts the values a hair
+    // above k / types: a colour map entry at exactly k / types is passed (measured with
+    // maps that change colour there).
+    let type_width = f64::from(1.0 / f32::from(layout.types));
+    (f64::from(best_kind) + rise) * type_width
 }
 
 /// Depths closer than this (in bevel widths) are a tie: the point is on an edge.
 const EDGE_TOLERANCE: f64 = 1e-12;
 
 /// How far a point on an edge is moved to see which tile it enters.
-const EDGE_NUDGE: (f64, f64) = (1e-9, 1e-10);
+const EDGE_NUDGE: (f64, f64) = (4e-10, 1e-9);
 
 /// How deep `(x, z)` is inside a convex tile: the smallest over its edges of the distance
 /// to the edge's line divided by the edge's bevel width (`bevel` unless the tile says
@@ -1135,7 +1141,7 @@ mod tests {
     }
 
     #[test]
-    fn edges_belong_to_the_tile_along_plus_x_or_plus_z() {
+    fn edges_belong_to_the_tile_along_plus_z_or_plus_x() {
         // On the vertical edge x = 0 between a flat and an upright rectangle, and on the
         // horizontal edge z = −1 between a flat and an upright block.
         check(11, &[(-3.0, -0.5, 0.6666667)]);
@@ -1152,5 +1158,14 @@ mod tests {
                 (0.0, 0.3, 0.7690599),
             ],
         );
+    }
+
+    #[test]
+    fn flat_tiles_lie_a_hair_above_their_type_value() {
+        // POV-Ray's colour maps switch at exactly k / types to the next type's colour.
+        let hexagon_centre = tiling_value(17, DVec3::new(-1.0, 0.0, 0.0));
+        assert!(hexagon_centre > 5.0 / 6.0 && hexagon_centre < 5.0 / 6.0 + 1e-6);
+        let dodecagon_centre = tiling_value(22, DVec3::new(0.0, 0.0, -1.366));
+        assert!(dodecagon_centre > 2.0 / 3.0 && dodecagon_centre < 2.0 / 3.0 + 1e-6);
     }
 }
