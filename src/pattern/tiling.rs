@@ -12,8 +12,9 @@
 //! dodecagons of `tiling 22`); for the tilings made of one regular polygon it is the
 //! polygon's inradius, so the bevel reaches the centre. A point on an edge belongs to the
 //! tile it enters when moved along +z (or, on an edge along z, along +x), as in POV-Ray
-//! for most edges; exactly on some lattice lines POV-Ray gives other values (e.g. 0 on
-//! x = 0 and z = 0 in `tiling 13`), which these tables do not reproduce.
+//! for most edges; exactly on some lattice lines POV-Ray gives other values (e.g. on whole
+//! numbers x in `tiling 3`, on x = 0 in `tiling 12`), which these tables do not reproduce,
+//! but for the 0 of `tiling 13` and `tiling 14` on the x axis.
 //!
 //! Each layout below was measured with probe scenes (`pigment { tiling N }` through a
 //! black-to-white colour map, sampled on grids with `#debug`): the period, the tiles in one
@@ -68,6 +69,10 @@ struct Layout {
     bevel: f64,
     /// The tiles of one period.
     tiles: &'static [Tile],
+    /// Whether POV-Ray gives 0 exactly on the x axis and near the origin on the z axis
+    /// (`tiling 13` and `tiling 14`; farther along the z axis its values there follow no
+    /// tile and are not reproduced).
+    zero_on_axes: bool,
 }
 
 /// `tiling 1`: unit squares with corners on the integer lattice.
@@ -79,6 +84,7 @@ const SQUARES: Layout = Layout {
         0,
         &[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)],
     )],
+    zero_on_axes: false,
 };
 
 /// `tiling 2`: hexagons of side 1 with corners along ±x, one centred at (−1, 0).
@@ -110,6 +116,7 @@ const HEXAGONS: Layout = Layout {
             ],
         ),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 3`: equilateral triangles of side 1 with horizontal edges on `z = k √3/2`;
@@ -127,6 +134,7 @@ const TRIANGLES: Layout = Layout {
         ),
         Tile::new(1, &[(0.0, SQRT_3), (0.5, SQRT_3 / 2.0), (1.0, SQRT_3)]),
     ],
+    zero_on_axes: false,
 };
 
 /// Half of √3: the height of an equilateral triangle of side 1.
@@ -141,6 +149,7 @@ const LOZENGES: Layout = Layout {
         Tile::new(0, &[(0.0, 0.0), (1.0, 0.0), (1.5, H), (0.5, H)]),
         Tile::new(0, &[(0.5, H), (1.5, H), (2.0, SQRT_3), (1.0, SQRT_3)]),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 5`: the hexagons of `tiling 2` each cut into three rhombi (a stack of cubes):
@@ -159,6 +168,7 @@ const CUBES: Layout = Layout {
         Tile::new(1, &[(-1.0, 0.0), (-1.5, H), (-2.0, 0.0), (-1.5, -H)]),
         Tile::new(2, &[(0.0, 0.0), (-0.5, H), (-1.5, H), (-1.0, 0.0)]),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 6`: 1 × 2 rectangles in a staircase: upright ones (long along z, type 1) and
@@ -171,6 +181,7 @@ const STAIRCASE: Layout = Layout {
         Tile::new(1, &[(0.0, 0.0), (1.0, 0.0), (1.0, 2.0), (0.0, 2.0)]),
         Tile::new(0, &[(-2.0, 1.0), (0.0, 1.0), (0.0, 2.0), (-2.0, 2.0)]),
     ],
+    zero_on_axes: false,
 };
 
 /// Half the width of a regular octagon of side 1: (1 + √2) / 2.
@@ -206,6 +217,7 @@ const OCTAGONS: Layout = Layout {
             ],
         ),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 8`: rows of unit squares (type 2) between rows of equilateral triangles, up
@@ -219,6 +231,7 @@ const SQUARES_AND_TRIANGLES: Layout = Layout {
         Tile::new(0, &[(0.0, 1.0), (1.0, 1.0), (0.5, 1.0 + H)]),
         Tile::new(1, &[(0.5, 1.0 + H), (1.0, 1.0), (1.5, 1.0 + H)]),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 9`: hexagons of side 1 (type 2) meeting at their corners, with the triangles
@@ -242,6 +255,7 @@ const HEXAGONS_AND_TRIANGLES: Layout = Layout {
         Tile::new(0, &[(1.0, 0.0), (2.0, 0.0), (1.5, H)]),
         Tile::new(1, &[(0.0, 0.0), (0.5, -H), (1.0, 0.0)]),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 10`: unit squares in rows, each row half a square along from the last.
@@ -253,6 +267,7 @@ const OFFSET_SQUARES: Layout = Layout {
         0,
         &[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)],
     )],
+    zero_on_axes: false,
 };
 
 /// `tiling 11`: unit squares (type 0), each with four 1 × 2 rectangles around it in a
@@ -268,6 +283,7 @@ const SQUARE_PINWHEELS: Layout = Layout {
         Tile::new(2, &[(0.0, 0.0), (1.0, 0.0), (1.0, 2.0), (0.0, 2.0)]),
         Tile::new(2, &[(2.0, 1.0), (3.0, 1.0), (3.0, 3.0), (2.0, 3.0)]),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 12`: blocks of four 1 × 2 rectangles, flat (type 1) and upright (type 2), in a
@@ -288,6 +304,7 @@ const BASKET_WEAVE: Layout = Layout {
         Tile::new(2, &[(2.0, 3.0), (3.0, 3.0), (3.0, 5.0), (2.0, 5.0)]),
         Tile::new(2, &[(3.0, 3.0), (4.0, 3.0), (4.0, 5.0), (3.0, 5.0)]),
     ],
+    zero_on_axes: false,
 };
 
 /// Half of √2: the offsets of `tiling 13` and `tiling 14`.
@@ -343,6 +360,7 @@ const TRAPEZOIDS: Layout = Layout {
         Tile::new(2, TRAPEZOID_RIGHT),
         Tile::new(2, TRAPEZOID_LEFT),
     ],
+    zero_on_axes: true,
 };
 
 /// `tiling 14`: `tiling 13` with each trapezoid of its own type: left 0, right 1, above 2,
@@ -358,6 +376,7 @@ const TRAPEZOIDS_FIVE: Layout = Layout {
         Tile::new(1, TRAPEZOID_RIGHT),
         Tile::new(0, TRAPEZOID_LEFT),
     ],
+    zero_on_axes: true,
 };
 
 /// `tiling 15`: unit squares (type 0) and squares of side 2 (type 1) in a pinwheel.
@@ -369,6 +388,7 @@ const TWO_SQUARES: Layout = Layout {
         Tile::new(0, &[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]),
         Tile::new(1, &[(-2.0, 0.0), (0.0, 0.0), (0.0, 2.0), (-2.0, 2.0)]),
     ],
+    zero_on_axes: false,
 };
 
 /// 1 + √3: the distance between neighbouring hexagons of `tiling 16`.
@@ -414,6 +434,7 @@ const HEXAGONS_SQUARES_TRIANGLES: Layout = Layout {
         Tile::new(1, HST_TRIANGLE_RIGHT),
         Tile::new(1, HST_TRIANGLE_LEFT),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 17`: the layout of `tiling 16` with six types: squares below a hexagon (0),
@@ -434,6 +455,7 @@ const HEXAGONS_SQUARES_TRIANGLES_SIX: Layout = Layout {
         Tile::new(4, HST_TRIANGLE_RIGHT),
         Tile::new(3, HST_TRIANGLE_LEFT),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 18`: 2 × 2 blocks of two 1 × 2 rectangles in a checkerboard, flat (type 0)
@@ -448,6 +470,7 @@ const RECTANGLE_PAIRS: Layout = Layout {
         Tile::new(0, &[(2.0, 0.0), (4.0, 0.0), (4.0, 1.0), (2.0, 1.0)]),
         Tile::new(0, &[(2.0, 1.0), (4.0, 1.0), (4.0, 2.0), (2.0, 2.0)]),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 19`: hexagons of side 1 (type 2, one centred at (−1, 0)) among equilateral
@@ -478,6 +501,7 @@ const SNUB_HEXAGONS_RIGHT: Layout = Layout {
         Tile::new(0, &[(1.5, H), (2.5, H), (2.0, 2.0 * H)]),
         Tile::new(0, &[(2.0, 0.0), (3.0, 0.0), (2.5, H)]),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 20`: the other hand of `tiling 19`, one hexagon centred at (1, √3).
@@ -506,6 +530,7 @@ const SNUB_HEXAGONS_LEFT: Layout = Layout {
         Tile::new(0, &[(0.0, 4.0 * H), (1.0, 4.0 * H), (0.5, 5.0 * H)]),
         Tile::new(0, &[(0.5, 3.0 * H), (1.5, 3.0 * H), (1.0, 4.0 * H)]),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 21`: unit squares in two orientations (types 4 and 5) and equilateral
@@ -523,6 +548,7 @@ const SNUB_SQUARES: Layout = Layout {
         Tile::new(1, &[(0.0, 0.5), (0.5, 0.5 + H), (-0.5, 0.5 + H)]),
         Tile::new(3, &[(0.0, -0.5), (-0.5, -0.5 - H), (0.5, -0.5 - H)]),
     ],
+    zero_on_axes: false,
 };
 
 /// The bevel widths of the edges of the dodecagon of `tiling 22`, from the edge facing +x
@@ -571,6 +597,7 @@ const DODECAGONS_TRIANGLES: Layout = Layout {
         Tile::new(0, &[(-0.5, 0.5), (0.5, 0.5), (0.0, 0.5 + H)]),
         Tile::new(1, &[(0.5 + H, 0.0), (1.5 + H, 0.0), (1.0 + H, -H)]),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 23`: dodecagons of side 1 (type 2, one centred at (0, −½ − √3/2)), hexagons
@@ -637,6 +664,7 @@ const DODECAGONS_HEXAGONS_SQUARES: Layout = Layout {
             &[(-0.5, 0.5), (-1.0, 0.5 + H), (-1.0 - H, H), (-0.5 - H, 0.0)],
         ),
     ],
+    zero_on_axes: false,
 };
 
 /// `tiling 24`: the layout of `tiling 23` with the squares typed by orientation: along
@@ -703,6 +731,7 @@ const DODECAGONS_HEXAGONS_SQUARES_FIVE: Layout = Layout {
             &[(-0.5, 0.5), (-1.0, 0.5 + H), (-1.0 - H, H), (-0.5 - H, 0.0)],
         ),
     ],
+    zero_on_axes: false,
 };
 
 /// The layout of a tiling number, `None` for numbers not (yet) supported.
@@ -746,6 +775,9 @@ pub fn tiling_value(number: u8, point: glam::DVec3) -> f64 {
     let Some(layout) = layout(number) else {
         return 0.0;
     };
+    if layout.zero_on_axes && (point.x as f32 == 0.0 || point.z as f32 == 0.0) {
+        return 0.0;
+    }
     // The point inside the period's parallelogram (lattice coordinates taken down to their
     // fractional parts); tiles reaching past it are tried shifted by one period each way.
     let [(ux, uz), (vx, vz)] = layout.period;
@@ -1167,5 +1199,11 @@ mod tests {
         assert!(hexagon_centre > 5.0 / 6.0 && hexagon_centre < 5.0 / 6.0 + 1e-6);
         let dodecagon_centre = tiling_value(22, DVec3::new(0.0, 0.0, -1.366));
         assert!(dodecagon_centre > 2.0 / 3.0 && dodecagon_centre < 2.0 / 3.0 + 1e-6);
+    }
+
+    #[test]
+    fn trapezoid_tilings_give_zero_on_the_axes() {
+        check(13, &[(0.5, 0.0, 0.0), (0.0, 0.5, 0.0), (0.5, 1e-300, 0.0)]);
+        check(14, &[(-2.25, 0.0, 0.0), (0.0, -1.0, 0.0)]);
     }
 }
