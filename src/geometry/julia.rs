@@ -30,6 +30,8 @@ const MAX_SAMPLES: u32 = 1 << 18;
 pub struct JuliaFractal {
     parameter: DVec4,
     algebra: JuliaAlgebra,
+    /// The function of the orbit (POV-Ray 3.7 iterates `hypercomplex cube` as `sqr`:
+    /// measured with `inside` and renders).
     function: JuliaFunction,
     max_iteration: u32,
     /// The smallest ray step: 1 / precision.
@@ -72,7 +74,10 @@ impl JuliaFractal {
         Some(JuliaFractal {
             parameter: spec.parameter,
             algebra: spec.algebra,
-            function: spec.function,
+            function: match (spec.algebra, spec.function) {
+                (JuliaAlgebra::Hypercomplex, JuliaFunction::Cube) => JuliaFunction::Sqr,
+                (_, function) => function,
+            },
             max_iteration: spec.max_iteration,
             step: 1.0 / spec.precision.max(1.0),
             slice_slope,
