@@ -19,6 +19,9 @@ use crate::accel::Aabb;
 use crate::scene::{JuliaAlgebra, JuliaFractal as JuliaSpec, JuliaFunction};
 use glam::{DVec2, DVec3, DVec4};
 
+/// How much the sphere searched along rays exceeds the bailout sphere (relative): where the
+/// set fills the bailout sphere (p = 0 gives the unit ball) the search must start outside it.
+const BOUND_MARGIN: f64 = 1e-6;
 /// Length of ray interval at which bisection stops.
 const TOLERANCE: f64 = 1e-7;
 /// Most inside tests one ray may spend (a huge precision would otherwise take hours); past it
@@ -195,9 +198,10 @@ impl JuliaFractal {
             return;
         }
         let direction = direction / length;
-        // The part of the line inside the bailout sphere.
+        // The part of the line inside the (slightly enlarged) bailout sphere.
         let half_b = origin.dot(direction);
-        let discriminant = half_b * half_b - (origin.length_squared() - self.bailout_squared);
+        let bound_squared = self.bailout_squared * (1.0 + BOUND_MARGIN).powi(2);
+        let discriminant = half_b * half_b - (origin.length_squared() - bound_squared);
         if discriminant.is_nan() || discriminant <= 0.0 {
             return;
         }
@@ -307,9 +311,175 @@ impl JuliaFractal {
         }
     }
 
-    /// The bailout sphere's box.
+    /// The box of the sphere searched along rays.
     pub fn bounds(&self) -> Aabb {
-        let radius = self.bailout_squared.sqrt();
+        let radius = self.bailout_squared.sqrt() * (1.0 + BOUND_MARGIN);
         Aabb::from_points([DVec3::splat(-radius), DVec3::splat(radius)])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fractal(parameter: DVec4, changes: impl FnOnce(&mut JuliaSpec)) -> JuliaFractal {
+        let mut spec = JuliaSpec {
+            parameter,
+            ..JuliaSpec::default()
+        };
+        changes(&mut spec);
+        JuliaFractal::new(&spec).unwrap()
+    }
+
+    fn crossings(shape: &JuliaFractal, origin: DVec3, direction: DVec3) -> Vec<f64> {
+        let mut roots = Roots::new();
+        shape.intersect(origin, direction, &mut roots);
+        roots.iter().map(|r| r.0).collect()
+    }
+
+    #[test]
+    fn zero_parameter_gives_the_unit_ball() {
+        let ball = fractal(DVec4::ZERO, |_| {});
+        assert!(ball.inside(DVec3::new(0.0, 0.99, 0.0)));
+        assert!(!ball.inside(DVec3::new(0.0, 1.01, 0.0)));
+        let found = crossings(&ball, DVec3::new(0.0, 0.0, -5.0), DVec3::new(0.0, 0.0, 2.0));
+        // The way out lies in the thin shell between the ball and the searched sphere, which
+        // the last step may jump over (as in POV-Ray, whose search stops at the same place).
+        assert!(!found.is_empty() && found.len() <= 2, "{found:?}");
+        assert!((found[0] - 2.0).abs() < 1e-6, "{found:?}");
+        let from_inside = crossings(&ball, DVec3::ZERO, DVec3::X);
+        assert!(
+            from_inside.iter().all(|&t| (t - 1.0).abs() < 1e-6),
+            "{from_inside:?}"
+        );
+        let normal = ball.normal(DVec3::new(0.6, 0.0, -0.8)).normalize();
+        assert!(normal.abs_diff_eq(DVec3::new(0.6, 0.0, -0.8), 1e-6));
+    }
+
+    #[test]
+    fn bailout_sphere_follows_the_parameter() {
+        // POV-Ray's `inside` with max_iteration 1 tests only the start point.
+        let near = fractal(DVec4::new(0.3, 0.2, 0.0, 0.0), |s| s.max_iteration = 1);
+        let radius = 1.0 + 0.13f64.sqrt();
+        assert!(near.inside(DVec3::new(radius - 1e-6, 0.0, 0.0)));
+        assert!(!near.inside(DVec3::new(radius + 1e-6, 0.0, 0.0)));
+        let far = fractal(DVec4::new(3.0, 0.0, 0.0, 0.0), |s| s.max_iteration = 1);
+        assert!((far.bounds().max.x - 2.0).abs() < 1e-5);
+        let hypercomplex = fractal(DVec4::new(3.0, 0.0, 0.0, 0.0), |s| {
+            s.algebra = JuliaAlgebra::Hypercomplex
+        });
+        assert!((hypercomplex.bounds().max.x - 4.0).abs() < 1e-5);
+    }
+
+    #[test]
+    fn slice_tilts_the_fourth_coordinate_into_space() {
+        // w = −z on the slice <0, 0, 1, 1>, 0, so the unit ball's z extent is 1/√2.
+        let tilted = fractal(DVec4::ZERO, |s| {
+            s.slice_normal = DVec4::new(0.0, 0.0, 1.0, 1.0)
+        });
+        let edge = 0.5f64.sqrt();
+        assert!(tilted.inside(DVec3::new(0.0, 0.0, edge - 1e-6)));
+        assert!(!tilted.inside(DVec3::new(0.0, 0.0, edge + 1e-6)));
+        assert!(tilted.inside(DVec3::new(0.99, 0.0, 0.0)));
+        // The distance moves the slice along its normal: w = 0.5 gives radius √0.75.
+        let moved = fractal(DVec4::ZERO, |s| s.slice_distance = 0.5);
+        let edge = 0.75f64.sqrt();
+        assert!(moved.inside(DVec3::new(edge - 1e-6, 0.0, 0.0)));
+        assert!(!moved.inside(DVec3::new(edge + 1e-6, 0.0, 0.0)));
+        let flat = JuliaSpec {
+            slice_normal: DVec4::new(1.0, 0.0, 0.0, 0.0),
+            ..JuliaSpec::default()
+        };
+        assert!(JuliaFractal::new(&flat).is_none());
+    }
+
+    /// |hₙ|² at `p`, with the orbit stopped where it escapes, as the normal sees it.
+    fn orbit_end_norm(shape: &JuliaFractal, p: DVec3) -> f64 {
+        let mut h = shape.lift(p);
+        for _ in 0..shape.max_iteration {
+            if shape.escaped(h.length_squared()) {
+                break;
+            }
+            h = shape.map(h);
+        }
+        h.length_squared()
+    }
+
+    #[test]
+    fn normals_are_the_gradient_of_the_orbit_norm() {
+        let parameter = DVec4::new(-0.083, 0.0, -0.83, -0.025);
+        let shapes = [
+            fractal(parameter, |s| s.max_iteration = 6),
+            fractal(parameter, |s| {
+                s.max_iteration = 5;
+                s.function = JuliaFunction::Cube;
+                s.slice_normal = DVec4::new(0.2, -0.1, 0.3, 1.0);
+                s.slice_distance = 0.1;
+            }),
+            fractal(parameter, |s| {
+                s.max_iteration = 5;
+                s.algebra = JuliaAlgebra::Hypercomplex;
+                s.function = JuliaFunction::Sin;
+                s.slice_normal = DVec4::new(0.0, 0.4, 0.0, 1.0);
+            }),
+        ];
+        for shape in &shapes {
+            for p in [DVec3::new(0.1, 0.2, 0.3), DVec3::new(-0.3, 0.05, 0.2)] {
+                let step = 1e-6;
+                let slope = |axis: DVec3| {
+                    (orbit_end_norm(shape, p + axis * step)
+                        - orbit_end_norm(shape, p - axis * step))
+                        / (2.0 * step)
+                };
+                let numeric = DVec3::new(slope(DVec3::X), slope(DVec3::Y), slope(DVec3::Z));
+                // The analytic normal is half the gradient of |hₙ|².
+                let analytic = 2.0 * shape.normal(p);
+                let scale = numeric.length().max(1.0);
+                assert!(
+                    (analytic - numeric).length() < 1e-4 * scale,
+                    "{analytic} vs {numeric}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn crossings_agree_with_the_inside_test() {
+        let shape = fractal(DVec4::new(-0.2, 0.4, 0.1, 0.0), |s| s.max_iteration = 3);
+        super::super::test_support::assert_crossings_flip_inside(
+            5,
+            3.0,
+            0.1,
+            1e-6,
+            |origin, direction, roots| shape.intersect(origin, direction, roots),
+            |point| shape.inside(point),
+        );
+    }
+
+    #[test]
+    fn hypercomplex_cube_iterates_as_square() {
+        let parameter = DVec4::new(0.4, 0.3, 0.1, 0.1);
+        let cube = fractal(parameter, |s| {
+            s.algebra = JuliaAlgebra::Hypercomplex;
+            s.function = JuliaFunction::Cube;
+        });
+        let square = fractal(parameter, |s| s.algebra = JuliaAlgebra::Hypercomplex);
+        for p in [DVec3::new(0.3, 0.7, -0.2), DVec3::new(1.1, -0.4, 0.6)] {
+            assert_eq!(cube.inside(p), square.inside(p));
+            assert_eq!(cube.normal(p), square.normal(p));
+        }
+    }
+
+    #[test]
+    fn huge_precision_gives_up_instead_of_hanging() {
+        let shape = fractal(DVec4::new(0.3, 0.2, 0.0, 0.0), |s| s.precision = 1e15);
+        let start = std::time::Instant::now();
+        crossings(&shape, DVec3::new(0.0, 3.0, -5.0), DVec3::Z);
+        assert!(start.elapsed().as_secs_f64() < 5.0);
+        let empty = JuliaSpec {
+            parameter: DVec4::new(f64::NAN, 0.0, 0.0, 0.0),
+            ..JuliaSpec::default()
+        };
+        assert!(JuliaFractal::new(&empty).is_none());
     }
 }
