@@ -5,7 +5,8 @@
 //! Holds: a local point (x, y, z) is the 4D point (x, y, z, w) on the slicing hyperplane; it
 //! is inside when none of h₀ … h₍ₙ₋₁₎ of the orbit hₖ₊₁ = f(hₖ) + p leaves the bailout
 //! sphere (radius min(1 + |p|, 2) for quaternions, 4 for hypercomplex numbers, as measured
-//! with POV-Ray's `inside`). That sphere also bounds the shape. Along a ray the search steps
+//! with POV-Ray's `inside`). That sphere, a hair larger, also bounds the shape; POV-Ray 3.7
+//! iterates `hypercomplex cube` as `sqr`, and so does durer. Along a ray the search steps
 //! by the distance estimate of escaping points, never less than 1 / precision, and bisects
 //! each change between inside and outside down to [`TOLERANCE`]; the hit is the inside end.
 //! The normal is the gradient of |hₙ|² by the point, carried forward through the orbit.
