@@ -133,6 +133,7 @@ impl Evaluator {
             "lathe" => self.eval_lathe(block.head_span, stream)?,
             "blob" => self.eval_blob(stream)?,
             "isosurface" => self.eval_isosurface(block.head_span, stream)?,
+            "julia_fractal" => self.eval_julia_fractal(block.head_span, stream)?,
             "height_field" => self.eval_height_field(block.head_span, stream)?,
             "sphere_sweep" => self.eval_sphere_sweep(block.head_span, stream)?,
             "bicubic_patch" => self.eval_bicubic_patch(block.head_span, stream)?,

@@ -11,6 +11,7 @@ mod blob;
 mod function;
 mod height_field;
 mod isosurface;
+mod julia;
 mod mesh;
 mod prism;
 mod sphere_sweep;

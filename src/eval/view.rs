@@ -60,6 +60,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "superellipsoid",
     "sor",
     "isosurface",
+    "julia_fractal",
     "height_field",
     "sphere_sweep",
     "bicubic_patch",
@@ -79,7 +80,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "irid",
     "subsurface",
     "media_attenuation",
-    "julia_fractal",
     "media",
     "parametric",
     "photons",
@@ -130,12 +130,11 @@ impl Evaluator {
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
             | "isosurface" | "height_field" | "sphere_sweep" | "bicubic_patch" | "object"
-            | "union" | "intersection" | "difference" | "merge" | "light_group" => {
-                Ok(match self.eval_object(head, block, stream)? {
-                    Some(object) => Value::Object(std::sync::Arc::new(object)),
-                    None => Value::Nothing,
-                })
-            }
+            | "julia_fractal" | "union" | "intersection" | "difference" | "merge"
+            | "light_group" => Ok(match self.eval_object(head, block, stream)? {
+                Some(object) => Value::Object(std::sync::Arc::new(object)),
+                None => Value::Nothing,
+            }),
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "spline" => self.eval_spline(block.span, stream),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),

@@ -14,6 +14,7 @@ use super::extrusion::ExtrudedOutline;
 use super::flat::{Cuboid, Disc, Plane, Triangle};
 use super::height_field::HeightField;
 use super::isosurface::Isosurface;
+use super::julia::JuliaFractal;
 use super::lathe::Lathe;
 use super::poly::PolySurface;
 use super::polygon::{Polygon, SmoothTriangle};
@@ -75,6 +76,8 @@ pub enum LocalShape {
     HeightField(Box<HeightField>),
     /// A sphere sweep.
     SphereSweep(Box<SphereSweep>),
+    /// A julia fractal.
+    JuliaFractal(Box<JuliaFractal>),
 }
 
 /// A triangle of a mesh (or bicubic patch) placed on its own, as in CSG: it keeps the uv
@@ -191,6 +194,9 @@ impl LocalShape {
             Shape::SphereSweep(ref spec) => {
                 SphereSweep::new(spec).map(|s| Self::SphereSweep(Box::new(s)))
             }
+            Shape::JuliaFractal(ref spec) => {
+                JuliaFractal::new(spec).map(|j| Self::JuliaFractal(Box::new(j)))
+            }
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -286,6 +292,7 @@ impl LocalShape {
             LocalShape::Isosurface(shape) => shape.intersect(origin, direction, roots),
             LocalShape::HeightField(shape) => shape.intersect(origin, direction, roots),
             LocalShape::SphereSweep(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::JuliaFractal(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -311,6 +318,7 @@ impl LocalShape {
             LocalShape::Isosurface(shape) => shape.inside(point),
             LocalShape::HeightField(shape) => shape.inside(point),
             LocalShape::SphereSweep(shape) => shape.inside(point),
+            LocalShape::JuliaFractal(shape) => shape.inside(point),
         }
     }
 
@@ -338,6 +346,7 @@ impl LocalShape {
             LocalShape::Isosurface(shape) => shape.normal(point, part),
             LocalShape::HeightField(shape) => shape.normal(point),
             LocalShape::SphereSweep(shape) => shape.normal(point),
+            LocalShape::JuliaFractal(shape) => shape.normal(point),
         }
     }
 
@@ -363,6 +372,7 @@ impl LocalShape {
             LocalShape::Isosurface(shape) => Some(shape.bounds()),
             LocalShape::HeightField(shape) => Some(shape.bounds()),
             LocalShape::SphereSweep(shape) => Some(shape.bounds()),
+            LocalShape::JuliaFractal(shape) => Some(shape.bounds()),
         }
     }
 

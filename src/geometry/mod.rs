@@ -16,6 +16,8 @@ mod flat;
 mod height_field;
 mod instance;
 mod isosurface;
+mod julia;
+mod julia_algebra;
 mod lathe;
 mod leaf;
 mod poly;

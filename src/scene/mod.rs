@@ -8,6 +8,7 @@ mod camera;
 mod colour;
 mod finish;
 mod implicit;
+mod julia;
 mod light;
 mod light_group;
 mod mesh;
@@ -23,6 +24,7 @@ pub use camera::{
 pub use colour::Colour;
 pub use finish::{Finish, Interior, Irid};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
+pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, LightSource, Spotlight};
 pub use light_group::{separate_light_groups, LightGroup};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
@@ -247,6 +249,8 @@ pub enum Shape {
     HeightField(Arc<HeightField>),
     /// `sphere_sweep { .. }`: a sphere moved along a spline.
     SphereSweep(Arc<SphereSweep>),
+    /// `julia_fractal { .. }`: a 3D slice of a 4D Julia set.
+    JuliaFractal(Arc<JuliaFractal>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,

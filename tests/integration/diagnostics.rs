@@ -676,3 +676,26 @@ fn tiling_number_out_of_range_is_refused() {
         &["the tiling number must be between 1 and 27", "this is 28"],
     );
 }
+
+#[test]
+fn quaternion_julia_fractal_refuses_other_functions() {
+    check(
+        "julia_quaternion_function",
+        2,
+        45,
+        &[
+            "quaternion julia fractals take only `sqr` or `cube`",
+            "needs `hypercomplex`",
+        ],
+    );
+}
+
+#[test]
+fn julia_slice_needs_a_fourth_component() {
+    check(
+        "julia_slice_without_w",
+        2,
+        34,
+        &["the slice normal needs a non-zero fourth component"],
+    );
+}

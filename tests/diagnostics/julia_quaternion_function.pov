@@ -1,0 +1,2 @@
+// A quaternion julia fractal cannot take exp.
+julia_fractal { <0.1, 0.2, 0, 0> quaternion exp }
