@@ -101,6 +101,7 @@ struct Flags {
     no_image: bool,
     no_reflection: bool,
     double_illuminate: bool,
+    hollow: bool,
     light_group: Option<crate::scene::LightGroup>,
 }
 
@@ -282,13 +283,21 @@ impl Builder {
                 self.placed_texture(texture, world_from_local);
         }
         if let Some(interior) = &object.interior {
-            appearance.interior = Arc::new(Interior::clone(interior));
+            let mut interior = Interior::clone(interior);
+            // Media densities move with the object, like its texture.
+            for media in &mut interior.media {
+                media.transform(world_from_local);
+            }
+            appearance.interior = Arc::new(interior);
             appearance.interior_key = InteriorKey::Owned(self.new_owner());
         }
         appearance.flags.no_shadow |= object.no_shadow;
         appearance.flags.no_image |= object.no_image;
         appearance.flags.no_reflection |= object.no_reflection;
         appearance.flags.double_illuminate |= object.double_illuminate;
+        if let Some(hollow) = object.hollow {
+            appearance.flags.hollow = hollow;
+        }
         // Nested light groups (measured): the innermost group's lights light an object,
         // the outermost group's `global_lights` decides whether scene lights do.
         if let Some(group) = object.light_group {
@@ -339,6 +348,7 @@ impl Builder {
             no_image: appearance.flags.no_image,
             no_reflection: appearance.flags.no_reflection,
             double_illuminate: appearance.flags.double_illuminate,
+            hollow: appearance.flags.hollow,
             uses_uv: texture_uses_uv(&appearance.texture),
             light_group: appearance.flags.light_group,
         });

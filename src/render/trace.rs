@@ -42,6 +42,7 @@ use super::atmosphere::AtmosphereShader;
 use super::dispersion::Bands;
 use super::encoding::is_legacy_scene;
 use super::lights::{prepare_lights, transmission, SceneLight};
+use super::media::{ActiveMedia, MediaShader, Stretch};
 use super::normal::perturbed_normal_at;
 use super::pattern::hit_surface;
 use super::reflection::{apply_exponent, interior_fade, reflection_colour};
@@ -93,6 +94,11 @@ impl Media {
         }
     }
 
+    /// The materials of the objects the ray is in, outermost first.
+    fn materials(&self) -> impl Iterator<Item = u32> + '_ {
+        self.entries[..self.len].iter().map(|entry| entry.0)
+    }
+
     /// The material of the innermost object the ray is in.
     fn innermost(&self) -> Option<u32> {
         self.len.checked_sub(1).map(|at| self.entries[at].0)
@@ -138,6 +144,8 @@ pub struct Tracer<'a> {
     any_no_image: bool,
     /// Some object is `no_reflection` (reflected rays must skip it).
     any_no_reflection: bool,
+    /// The scene has media (atmospheric or in some interior).
+    any_media: bool,
 }
 
 /// What a ray is for, which decides the objects it can see.
@@ -173,6 +181,8 @@ impl<'a> Tracer<'a> {
             lights: prepare_lights(scene),
             any_no_image: world.materials.iter().any(|m| m.no_image),
             any_no_reflection: world.materials.iter().any(|m| m.no_reflection),
+            any_media: !scene.atmosphere.media.is_empty()
+                || world.materials.iter().any(|m| !m.interior.media.is_empty()),
         }
     }
 
@@ -216,6 +226,12 @@ impl<'a> Tracer<'a> {
                 carried *= keep;
                 segment_start = end;
             }
+            if self.any_media {
+                let end = hit.as_ref().map_or(f64::INFINITY, |hit| hit.distance);
+                let (keep, add) = self.media_along(&ray, &media, travelled, end);
+                colour += carried * add;
+                carried *= keep;
+            }
             let Some(hit) = hit else {
                 return colour + carried * self.atmosphere.sky(ray.direction);
             };
@@ -244,6 +260,30 @@ impl<'a> Tracer<'a> {
             min_distance = hit.distance + SURFACE_EPSILON;
         }
         colour
+    }
+
+    /// What the media do along `ray` from `start` to `end` inside the objects of `inside`:
+    /// their interiors' media, and the atmospheric media unless one of them is not hollow.
+    fn media_along(&self, ray: &Ray, inside: &Media, start: f64, end: f64) -> (DVec3, DVec3) {
+        let mut active = ActiveMedia::NONE;
+        let mut all_hollow = true;
+        for id in inside.materials() {
+            if let Some(material) = self.world.materials.get(id as usize) {
+                active.extend(&material.interior.media);
+                all_hollow &= material.hollow;
+            }
+        }
+        if all_hollow {
+            active.extend(&self.scene.atmosphere.media);
+        }
+        let shader = MediaShader::new(self.world, &self.lights, &self.scene.atmosphere.media);
+        let stretch = Stretch {
+            origin: ray.origin,
+            direction: ray.direction,
+            start,
+            end,
+        };
+        shader.along(&active, stretch)
     }
 
     /// The nearest surface along `ray` beyond `min_distance` that a ray of this kind sees.

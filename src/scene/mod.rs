@@ -10,6 +10,7 @@ mod finish;
 mod implicit;
 mod light;
 mod light_group;
+mod media;
 mod mesh;
 mod texture;
 mod transform;
@@ -24,6 +25,7 @@ pub use finish::{Finish, Interior, Irid};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
 pub use light::{AreaLight, LightSource, Spotlight};
 pub use light_group::LightGroup;
+pub use media::{Media, Scattering, ScatteringKind};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
