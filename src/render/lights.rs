@@ -29,12 +29,13 @@
 //!   centre's unless `area_illumination` is on.
 
 use super::area_light::AreaArray;
+use super::media::transmittance;
 use super::normal::perturbed_normal;
 use super::pattern::hit_surface;
 use super::reflection::interior_fade;
 use super::texture::surface_pigment;
 use crate::geometry::{Material, Ray, SurfaceHit, World};
-use crate::scene::{Colour, LightSource, Scene, Spotlight};
+use crate::scene::{Colour, LightSource, Media, Scene, Spotlight};
 use glam::DVec3;
 
 /// A light ready for rendering: the source and what its shadow tests need.
@@ -43,6 +44,8 @@ pub struct SceneLight {
     pub source: LightSource,
     /// The `projected_through` object, ready for ray queries.
     pub projected_through: Option<World>,
+    /// The atmospheric media that dim this light on its way (`media_attenuation on`).
+    pub attenuating_media: Vec<Media>,
 }
 
 /// The scene's lights, ready for rendering.
@@ -56,6 +59,11 @@ pub fn prepare_lights(scene: &Scene) -> Vec<SceneLight> {
                 .projected_through
                 .as_ref()
                 .map(|object| World::build_from_objects(vec![(**object).clone()])),
+            attenuating_media: if source.media_attenuation {
+                scene.atmosphere.media.clone()
+            } else {
+                Vec::new()
+            },
         })
         .collect()
 }
@@ -117,11 +125,15 @@ fn filter_along(
             None => return DVec3::ZERO,
         }
     }
-    if can_be_shadowed {
+    let mut filter = if can_be_shadowed {
         shadow_filter(world, point, direction, limit)
     } else {
         DVec3::ONE
+    };
+    if !light.attenuating_media.is_empty() && filter != DVec3::ZERO {
+        filter *= transmittance(&light.attenuating_media, point, direction, 0.0, limit);
     }
+    filter
 }
 
 /// Shadow rays ignore surfaces closer than this to the lit point (measured in POV-Ray 3.7
@@ -283,6 +295,16 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
             };
             if let Some(kept) = interior_fade(&material.interior, hit.distance - since) {
                 filter *= kept;
+            }
+            // Absorbing and scattering media inside the object cast shadows.
+            if !material.interior.media.is_empty() {
+                filter *= transmittance(
+                    &material.interior.media,
+                    point,
+                    direction,
+                    since,
+                    hit.distance,
+                );
             }
             entered = None;
         }

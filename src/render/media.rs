@@ -45,7 +45,7 @@ pub const UNBOUNDED_MEDIA_LENGTH: f64 = 2e10;
 /// At most this many media blocks act together along one stretch of a ray.
 pub const MAX_ACTIVE_MEDIA: usize = 16;
 
-/// Samples taken along a shadow ray to dim a light through atmospheric media.
+/// Samples taken along a shadow ray to dim a light through media.
 const ATTENUATION_SAMPLES: u32 = 8;
 
 /// The media acting along one stretch of a ray (no allocation: a fixed array).
@@ -111,8 +111,6 @@ impl Sample {
 pub struct MediaShader<'a> {
     world: &'a World,
     lights: &'a [SceneLight],
-    /// The scene's atmospheric media (for `media_attenuation`).
-    atmospheric: &'a [Media],
 }
 
 /// A stretch of a ray: `origin + t · direction` for t in `start..end`.
@@ -130,12 +128,8 @@ pub struct Stretch {
 
 impl<'a> MediaShader<'a> {
     /// A shader lighting media with `lights`, shadowed by `world`.
-    pub fn new(world: &'a World, lights: &'a [SceneLight], atmospheric: &'a [Media]) -> Self {
-        MediaShader {
-            world,
-            lights,
-            atmospheric,
-        }
+    pub fn new(world: &'a World, lights: &'a [SceneLight]) -> Self {
+        MediaShader { world, lights }
     }
 
     /// What `active` media along `stretch` do: the light behind is multiplied by the first
@@ -151,11 +145,92 @@ impl<'a> MediaShader<'a> {
             return (DVec3::ONE, DVec3::ZERO);
         }
         let first = active.iter().next().map_or(3, |m| m.method);
-        if first == 3 {
-            self.adaptive(active, stretch, length)
-        } else {
-            self.even(active, stretch, length, first == 1)
+        if first != 3 {
+            return self.even(active, stretch, length, first == 1);
         }
+        // Method 3 samples each stretch between the edges of spotlight and cylinder beams
+        // on its own, so that narrow beams are not missed.
+        let mut edges = [0.0; MAX_BEAM_EDGES];
+        let count = self.beam_edges(
+            stretch.origin,
+            stretch.direction,
+            stretch.start,
+            end,
+            &mut edges,
+        );
+        let edges = &mut edges[..count];
+        edges.sort_unstable_by(f64::total_cmp);
+        let mut keep = DVec3::ONE;
+        let mut added = DVec3::ZERO;
+        let mut from = stretch.start;
+        for &to in edges.iter().chain(std::iter::once(&end)) {
+            if to > from {
+                let part = Stretch {
+                    start: from,
+                    end: to,
+                    ..stretch
+                };
+                let (part_keep, part_added) = self.adaptive(active, part, to - from);
+                added += keep * part_added;
+                keep *= part_keep;
+                from = to;
+            }
+        }
+        (keep, added)
+    }
+
+    /// Writes into `edges` the distances in `start..end` where the ray crosses the edge of a
+    /// spotlight cone or cylinder beam (of lights that light media); returns how many.
+    fn beam_edges(
+        &self,
+        origin: DVec3,
+        direction: DVec3,
+        start: f64,
+        end: f64,
+        edges: &mut [f64; MAX_BEAM_EDGES],
+    ) -> usize {
+        let mut count = 0;
+        for light in self.lights {
+            if !light.source.media_interaction {
+                continue;
+            }
+            let Some(spot) = &light.source.spotlight else {
+                continue;
+            };
+            let Some(axis) = (spot.point_at - light.source.position).try_normalize() else {
+                continue;
+            };
+            let apex = light.source.position;
+            let offset = origin - apex;
+            let roots = if spot.cylinder {
+                let radius = spot.falloff.max(spot.radius);
+                let across_offset = offset - offset.dot(axis) * axis;
+                let across_direction = direction - direction.dot(axis) * axis;
+                quadratic_roots(
+                    across_direction.length_squared(),
+                    2.0 * across_offset.dot(across_direction),
+                    across_offset.length_squared() - radius * radius,
+                )
+            } else {
+                let cos_edge = spot.falloff.max(spot.radius).to_radians().cos();
+                let cos2 = cos_edge * cos_edge;
+                let (d_axis, w_axis) = (direction.dot(axis), offset.dot(axis));
+                quadratic_roots(
+                    d_axis * d_axis - cos2,
+                    2.0 * (d_axis * w_axis - cos2 * direction.dot(offset)),
+                    w_axis * w_axis - cos2 * offset.length_squared(),
+                )
+            };
+            for t in roots.into_iter().flatten() {
+                // Only the forward nappe of a cone is lit.
+                let in_front = spot.cylinder || (offset + direction * t).dot(axis) >= 0.0;
+                if in_front && t > start && t < end && count < MAX_BEAM_EDGES {
+                    edges[count] = t;
+                    count += 1;
+                }
+            }
+        }
+        count
     }
 
     /// Method 3 (see the module rules).
@@ -313,34 +388,23 @@ impl<'a> MediaShader<'a> {
             if colour == DVec3::ZERO {
                 continue;
             }
-            if light.source.media_attenuation && !self.atmospheric.is_empty() {
-                colour *= self.attenuation(point, arriving.direction, arriving.distance);
-            }
             total += colour * phase(kind, direction.dot(arriving.direction));
         }
         total
     }
+}
 
-    /// What the atmospheric media let through from `point` over `distance` along
-    /// `direction` (towards a light).
-    fn attenuation(&self, point: DVec3, direction: DVec3, distance: f64) -> DVec3 {
-        let mut active = ActiveMedia::NONE;
-        active.extend(self.atmospheric);
-        let step = distance / f64::from(ATTENUATION_SAMPLES);
-        if !(step > 0.0 && step.is_finite()) {
-            return DVec3::ONE;
-        }
-        let mut depth = DVec3::ZERO;
-        for index in 0..ATTENUATION_SAMPLES {
-            let at = point + direction * ((f64::from(index) + 0.5) * step);
-            for media in active.iter() {
-                if media.extinguishes() {
-                    depth += extinction_of(media) * density_at(media, at) * step;
-                }
-            }
-        }
-        exp_neg(depth)
+/// At most this many beam edges split one stretch for method 3.
+const MAX_BEAM_EDGES: usize = 256;
+
+/// The real roots of `a t² + b t + c` (none for a degenerate or negative discriminant).
+fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
+    let discriminant = b * b - 4.0 * a * c;
+    if a.abs() < 1e-12 || !(discriminant >= 0.0) {
+        return [None, None];
     }
+    let root = discriminant.sqrt();
+    [Some((-b - root) / (2.0 * a)), Some((-b + root) / (2.0 * a))]
 }
 
 /// At most this many samples are taken along one stretch by methods 1 and 2.
@@ -366,6 +430,30 @@ impl Refinement<'_, '_> {
             t
         }
     }
+}
+
+/// What `media` let through along the ray from `origin` along unit `direction` between
+/// distances `start` and `end` (for shadow rays: the light's dimming on its way; sampled at
+/// the middles of equal pieces, exact for constant densities).
+pub fn transmittance(
+    media: &[Media],
+    origin: DVec3,
+    direction: DVec3,
+    start: f64,
+    end: f64,
+) -> DVec3 {
+    let step = (end - start) / f64::from(ATTENUATION_SAMPLES);
+    if !(step > 0.0 && step.is_finite()) || !media.iter().any(Media::extinguishes) {
+        return DVec3::ONE;
+    }
+    let mut depth = DVec3::ZERO;
+    for index in 0..ATTENUATION_SAMPLES {
+        let at = origin + direction * (start + (f64::from(index) + 0.5) * step);
+        for item in media.iter().filter(|m| m.extinguishes()) {
+            depth += extinction_of(item) * density_at(item, at) * step;
+        }
+    }
+    exp_neg(depth)
 }
 
 /// Absorption plus scattering extinction of `media` at density 1.
@@ -433,7 +521,7 @@ mod tests {
 
     fn shader_free_along(media: &[Media], length: f64) -> (DVec3, DVec3) {
         let world = World::build_from_objects(Vec::new());
-        let shader = MediaShader::new(&world, &[], &[]);
+        let shader = MediaShader::new(&world, &[]);
         let mut active = ActiveMedia::NONE;
         active.extend(media);
         shader.along(

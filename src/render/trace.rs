@@ -94,9 +94,9 @@ impl Media {
         }
     }
 
-    /// The materials of the objects the ray is in, outermost first.
-    fn materials(&self) -> impl Iterator<Item = u32> + '_ {
-        self.entries[..self.len].iter().map(|entry| entry.0)
+    /// The materials of the objects the ray is in, innermost first.
+    fn materials_innermost_first(&self) -> impl Iterator<Item = u32> + '_ {
+        self.entries[..self.len].iter().rev().map(|entry| entry.0)
     }
 
     /// The material of the innermost object the ray is in.
@@ -263,20 +263,25 @@ impl<'a> Tracer<'a> {
     }
 
     /// What the media do along `ray` from `start` to `end` inside the objects of `inside`:
-    /// their interiors' media, and the atmospheric media unless one of them is not hollow.
+    /// their interiors' media and the atmospheric media, except that a non-hollow object
+    /// shuts out the media around it (measured: media do not fill a non-hollow glass
+    /// sphere inside a media sphere).
     fn media_along(&self, ray: &Ray, inside: &Media, start: f64, end: f64) -> (DVec3, DVec3) {
         let mut active = ActiveMedia::NONE;
         let mut all_hollow = true;
-        for id in inside.materials() {
+        for id in inside.materials_innermost_first() {
             if let Some(material) = self.world.materials.get(id as usize) {
                 active.extend(&material.interior.media);
-                all_hollow &= material.hollow;
+                if !material.hollow {
+                    all_hollow = false;
+                    break;
+                }
             }
         }
         if all_hollow {
             active.extend(&self.scene.atmosphere.media);
         }
-        let shader = MediaShader::new(self.world, &self.lights, &self.scene.atmosphere.media);
+        let shader = MediaShader::new(self.world, &self.lights);
         let stretch = Stretch {
             origin: ray.origin,
             direction: ray.direction,
