@@ -400,7 +400,7 @@ const MAX_BEAM_EDGES: usize = 256;
 /// The real roots of `a t² + b t + c` (none for a degenerate or negative discriminant).
 fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
     let discriminant = b * b - 4.0 * a * c;
-    if a.abs() < 1e-12 || !(discriminant >= 0.0) {
+    if a.abs() < 1e-12 || discriminant.is_nan() || discriminant < 0.0 {
         return [None, None];
     }
     let root = discriminant.sqrt();
@@ -443,7 +443,7 @@ pub fn transmittance(
     end: f64,
 ) -> DVec3 {
     let step = (end - start) / f64::from(ATTENUATION_SAMPLES);
-    if !(step > 0.0 && step.is_finite()) || !media.iter().any(Media::extinguishes) {
+    if !(step > 0.0 && step.is_finite() && media.iter().any(Media::extinguishes)) {
         return DVec3::ONE;
     }
     let mut depth = DVec3::ZERO;
