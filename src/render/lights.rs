@@ -29,13 +29,14 @@
 //!   centre's unless `area_illumination` is on.
 
 use super::area_light::AreaArray;
+use super::atmosphere::fog_transmittance;
 use super::media::transmittance;
 use super::normal::perturbed_normal;
 use super::pattern::hit_surface;
 use super::reflection::interior_fade;
 use super::texture::surface_pigment;
 use crate::geometry::{Material, Ray, SurfaceHit, World};
-use crate::scene::{Colour, LightSource, Media, Scene, Spotlight};
+use crate::scene::{Colour, Fog, LightSource, Media, Scene, Spotlight};
 use glam::DVec3;
 
 /// A light ready for rendering: the source and what its shadow tests need.
@@ -46,6 +47,8 @@ pub struct SceneLight {
     pub projected_through: Option<World>,
     /// The atmospheric media that dim this light on its way (`media_attenuation on`).
     pub attenuating_media: Vec<Media>,
+    /// The fogs that dim this light on its way (`media_attenuation on`).
+    pub attenuating_fogs: Vec<Fog>,
 }
 
 /// The scene's lights, ready for rendering.
@@ -61,6 +64,11 @@ pub fn prepare_lights(scene: &Scene) -> Vec<SceneLight> {
                 .map(|object| World::build_from_objects(vec![(**object).clone()])),
             attenuating_media: if source.media_attenuation {
                 scene.atmosphere.media.clone()
+            } else {
+                Vec::new()
+            },
+            attenuating_fogs: if source.media_attenuation {
+                scene.atmosphere.fogs.clone()
             } else {
                 Vec::new()
             },
@@ -132,6 +140,9 @@ fn filter_along(
     };
     if !light.attenuating_media.is_empty() && filter != DVec3::ZERO {
         filter *= transmittance(&light.attenuating_media, point, direction, 0.0, limit);
+    }
+    for fog in &light.attenuating_fogs {
+        filter *= fog_transmittance(fog, point, direction, limit);
     }
     filter
 }

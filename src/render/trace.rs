@@ -219,11 +219,14 @@ impl<'a> Tracer<'a> {
             if !self.atmosphere.is_clear() {
                 let start = ray.origin + ray.direction * segment_start;
                 let end = hit.as_ref().map_or(f64::INFINITY, |hit| hit.distance);
-                let (keep, add) = self
-                    .atmosphere
-                    .along(start, ray.direction, end - segment_start);
-                colour += carried * add;
-                carried *= keep;
+                // Fog does not fill non-hollow objects.
+                if self.all_hollow(&media) {
+                    let (keep, add) =
+                        self.atmosphere
+                            .along(start, ray.direction, end - segment_start);
+                    colour += carried * add;
+                    carried *= keep;
+                }
                 segment_start = end;
             }
             if self.any_media {
@@ -260,6 +263,16 @@ impl<'a> Tracer<'a> {
             min_distance = hit.distance + SURFACE_EPSILON;
         }
         colour
+    }
+
+    /// Whether every object of `inside` is hollow (so fog and atmospheric media fill it).
+    fn all_hollow(&self, inside: &Media) -> bool {
+        inside.materials_innermost_first().all(|id| {
+            self.world
+                .materials
+                .get(id as usize)
+                .is_none_or(|material| material.hollow)
+        })
     }
 
     /// What the media do along `ray` from `start` to `end` inside the objects of `inside`:
