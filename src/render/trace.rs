@@ -76,6 +76,9 @@ pub struct Media {
     len: usize,
     /// For a ray of one dispersion band: the exponent applied to `dispersion`.
     band: Option<f64>,
+    /// The ray started inside a non-hollow object it does not know about (the camera is
+    /// inside one): no fog or media anywhere along it.
+    in_solid: bool,
 }
 
 impl Media {
@@ -84,6 +87,7 @@ impl Media {
         entries: [(0, 1.0); MEDIA_DEPTH],
         len: 0,
         band: None,
+        in_solid: false,
     };
 
     /// Index of refraction of the innermost medium.
@@ -146,6 +150,8 @@ pub struct Tracer<'a> {
     any_no_reflection: bool,
     /// The scene has media (atmospheric or in some interior).
     any_media: bool,
+    /// The camera is inside a non-hollow object (so camera rays see no fog or media).
+    camera_in_solid: bool,
 }
 
 /// What a ray is for, which decides the objects it can see.
@@ -183,12 +189,17 @@ impl<'a> Tracer<'a> {
             any_no_reflection: world.materials.iter().any(|m| m.no_reflection),
             any_media: !scene.atmosphere.media.is_empty()
                 || world.materials.iter().any(|m| !m.interior.media.is_empty()),
+            camera_in_solid: world.inside_solid(scene.camera.location),
         }
     }
 
     /// The colour seen along a camera ray.
     pub fn trace_camera_ray(&self, ray: &Ray) -> DVec3 {
-        let colour = self.trace(*ray, 1, RayWeight::CAMERA, &Media::OUTSIDE, RayKind::Camera);
+        let start = Media {
+            in_solid: self.camera_in_solid,
+            ..Media::OUTSIDE
+        };
+        let colour = self.trace(*ray, 1, RayWeight::CAMERA, &start, RayKind::Camera);
         if colour.is_finite() {
             colour
         } else {
@@ -265,35 +276,33 @@ impl<'a> Tracer<'a> {
         colour
     }
 
-    /// Whether every object of `inside` is hollow (so fog and atmospheric media fill it).
+    /// Whether every object of `inside` is hollow (so fog and media fill it).
     fn all_hollow(&self, inside: &Media) -> bool {
-        inside.materials_innermost_first().all(|id| {
-            self.world
-                .materials
-                .get(id as usize)
-                .is_none_or(|material| material.hollow)
-        })
+        !inside.in_solid
+            && inside.materials_innermost_first().all(|id| {
+                self.world
+                    .materials
+                    .get(id as usize)
+                    .is_none_or(|material| material.hollow)
+            })
     }
 
     /// What the media do along `ray` from `start` to `end` inside the objects of `inside`:
-    /// their interiors' media and the atmospheric media, except that a non-hollow object
-    /// shuts out the media around it (measured: media do not fill a non-hollow glass
-    /// sphere inside a media sphere).
+    /// their interiors' media and the atmospheric media, but nothing at all inside a
+    /// non-hollow object (measured: a non-hollow box shows none of its own media, nor of a
+    /// hollow box inside it, nor does a hollow media sphere inside a non-hollow plane that
+    /// holds the camera).
     fn media_along(&self, ray: &Ray, inside: &Media, start: f64, end: f64) -> (DVec3, DVec3) {
+        if !self.all_hollow(inside) {
+            return (DVec3::ONE, DVec3::ZERO);
+        }
         let mut active = ActiveMedia::NONE;
-        let mut all_hollow = true;
         for id in inside.materials_innermost_first() {
             if let Some(material) = self.world.materials.get(id as usize) {
                 active.extend(&material.interior.media);
-                if !material.hollow {
-                    all_hollow = false;
-                    break;
-                }
             }
         }
-        if all_hollow {
-            active.extend(&self.scene.atmosphere.media);
-        }
+        active.extend(&self.scene.atmosphere.media);
         let shader = MediaShader::new(self.world, &self.lights);
         let stretch = Stretch {
             origin: ray.origin,
