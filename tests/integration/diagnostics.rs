@@ -669,3 +669,13 @@ fn tiling_number_out_of_range_is_refused() {
         &["the tiling number must be between 1 and 27", "this is 28"],
     );
 }
+
+#[test]
+fn media_scattering_type_out_of_range_points_at_the_type() {
+    check(
+        "media_bad_scattering_type",
+        3,
+        35,
+        &["scattering type must be 1 to 5", "Henyey-Greenstein"],
+    );
+}
