@@ -715,7 +715,7 @@ fn set_pattern(pigment: &mut Pigment, spec: Pattern, map: PigmentMap) {
 /// The pattern that the pattern modifiers written in `pigment` change: the pattern of a
 /// patterned pigment, or the image pattern that carries an image map's turbulence and warps
 /// (made on first use). `None` for other pigments.
-fn modified_pattern(pigment: &mut Pigment) -> Option<&mut Pattern> {
+pub(super) fn modified_pattern(pigment: &mut Pigment) -> Option<&mut Pattern> {
     match pigment {
         Pigment::Pattern { pattern, .. } => Some(pattern),
         Pigment::Image { image, warps, .. } => Some(warps.get_or_insert_with(|| {
@@ -745,7 +745,7 @@ fn default_colours(pattern: &Pattern) -> Vec<(f64, Colour)> {
 }
 
 /// POV-Ray's map for a pattern without one: black to white.
-fn grey_ramp() -> Vec<(f64, Colour)> {
+pub(super) fn grey_ramp() -> Vec<(f64, Colour)> {
     vec![(0.0, Colour::BLACK), (1.0, Colour::WHITE)]
 }
 

@@ -255,10 +255,8 @@ impl Evaluator {
                 },
                 Item::Block(block) if matches!(&block.head, BlockHead::Word(w) if &**w == "media") =>
                 {
-                    self.warn(
-                        block.head_span,
-                        "`media` is not supported yet; it is ignored",
-                    );
+                    let mut body = Stream::new(block.body.clone());
+                    interior.media.push(self.eval_media(&mut body)?);
                 }
                 Item::Expr(expr) => match self.eval_expr(expr)? {
                     Value::Interior(i) => interior = Rc::unwrap_or_clone(i),

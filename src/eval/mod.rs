@@ -16,6 +16,7 @@ mod image_map;
 mod light;
 mod literals;
 mod macros;
+mod media;
 mod objects;
 mod pattern;
 mod scopes;
@@ -545,6 +546,7 @@ impl Evaluator {
             Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),
             Value::Light(light) => self.add_light(Rc::unwrap_or_clone(light)),
             Value::Atmospheric(effect) => self.add_atmospheric_effect(&effect),
+            Value::Media(media) => self.atmosphere.media.push(Rc::unwrap_or_clone(media)),
             Value::Colour(colour) if matches!(item, Item::Block(_)) => self.background = colour,
             Value::Nothing => {} // settings blocks and left-out features
             other => {

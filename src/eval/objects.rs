@@ -31,6 +31,16 @@ impl Evaluator {
                 match value {
                     Value::Object(o) => Arc::unwrap_or_clone(o),
                     Value::Nothing => return Ok(None),
+                    // `object { Light transforms }`: an empty union carrying the light, so
+                    // it moves with the transformations and with any CSG around it.
+                    Value::Light(light) => {
+                        let mut carrier = Object::new(Shape::Csg {
+                            operation: CsgOperation::Union,
+                            children: Vec::new(),
+                        });
+                        carrier.lights = Some(Box::new(vec![Rc::unwrap_or_clone(light)]));
+                        carrier
+                    }
                     other => {
                         return Err(self
                             .error(

@@ -43,6 +43,8 @@ pub enum AppearanceMap {
     Textures(Vec<(f64, Texture)>),
     /// `slope_map`.
     Slopes(Vec<SlopeEntry>),
+    /// `density_map`: densities are pigments whose colour is the density.
+    Densities(Vec<(f64, Pigment)>),
 }
 
 impl Evaluator {
@@ -195,7 +197,7 @@ impl Evaluator {
     /// The entries of a map block: `[key item]` entries whose item `parse_item` reads from
     /// the rest of the entry, or an identifier holding a map of the same kind
     /// (`declared` extracts its entries). Sorted by key.
-    fn eval_map<T>(
+    pub(super) fn eval_map<T>(
         &mut self,
         stream: &mut Stream,
         what: &str,

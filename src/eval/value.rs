@@ -30,6 +30,10 @@ pub enum Value {
     Finish(Rc<Finish>),
     /// An interior.
     Interior(Rc<Interior>),
+    /// A `media { }` block.
+    Media(Rc<crate::scene::Media>),
+    /// A `density { }` block (a pigment whose colour is the density).
+    Density(Rc<Pigment>),
     /// A `material`: a texture and, when it gives one, an interior.
     Material(Rc<(Texture, Option<Interior>)>),
     /// A colour map.
@@ -130,6 +134,8 @@ impl Value {
             Value::Pigment(_) => "a pigment",
             Value::Finish(_) => "a finish",
             Value::Interior(_) => "an interior",
+            Value::Media(_) => "a media",
+            Value::Density(_) => "a density",
             Value::Material(_) => "a material",
             Value::ColourMap(_) => "a colour map",
             Value::Normal(_) => "a normal",

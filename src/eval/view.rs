@@ -16,6 +16,9 @@ use std::sync::Arc;
 
 /// Block keywords durer evaluates.
 pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
+    "media",
+    "density",
+    "density_map",
     "background",
     "box",
     "camera",
@@ -80,12 +83,10 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "irid",
     "subsurface",
     "media_attenuation",
-    "media",
     "parametric",
     "photons",
     "ovus",
     "lemon",
-    "density",
     "interior_texture",
 ];
 
@@ -166,6 +167,11 @@ impl Evaluator {
             "pigment" => Ok(Value::Pigment(Rc::new(self.eval_pigment(stream)?))),
             "finish" => Ok(Value::Finish(Rc::new(self.eval_finish(stream, None)?))),
             "interior" => Ok(Value::Interior(Rc::new(self.eval_interior(stream)?))),
+            "media" => Ok(Value::Media(Rc::new(self.eval_media(stream)?))),
+            "density" => Ok(Value::Density(Rc::new(self.eval_density(stream)?))),
+            "density_map" => Ok(Value::Map(Rc::new(
+                super::texture_maps::AppearanceMap::Densities(self.eval_density_map(stream)?),
+            ))),
             "color_map" | "colour_map" => {
                 Ok(Value::ColourMap(Rc::new(self.eval_colour_map(stream)?)))
             }

@@ -102,6 +102,7 @@ struct Flags {
     no_image: bool,
     no_reflection: bool,
     double_illuminate: bool,
+    hollow: bool,
     light_group: Option<crate::scene::LightGroup>,
 }
 
@@ -313,41 +314,43 @@ impl Builder {
         world_from_local: &Transform,
         inherited: &'a Appearance,
     ) -> Cow<'a, Appearance> {
-        let adds_nothing = object.texture.is_none()
-            && object.interior.is_none()
-            && object.light_group.is_none()
-            && !(object.no_shadow
-                || object.no_image
-                || object.no_reflection
-                || object.double_illuminate);
-        if adds_nothing {
+        let mut flags = inherited.flags;
+        flags.no_shadow |= object.no_shadow;
+        flags.no_image |= object.no_image;
+        flags.no_reflection |= object.no_reflection;
+        flags.double_illuminate |= object.double_illuminate;
+        if let Some(hollow) = object.hollow {
+            flags.hollow = hollow;
+        }
+        // Nested light groups (measured): the innermost group's lights light an object,
+        // the outermost group's `global_lights` decides whether scene lights do.
+        if let Some(group) = object.light_group {
+            let global_lights = flags
+                .light_group
+                .map_or(group.global_lights, |outer| outer.global_lights);
+            flags.light_group = Some(crate::scene::LightGroup {
+                global_lights,
+                ..group
+            });
+        }
+        if object.texture.is_none() && object.interior.is_none() && flags == inherited.flags {
             // Most children of a generated union: no reference counts to touch.
             return Cow::Borrowed(inherited);
         }
         let mut appearance = inherited.clone();
+        appearance.flags = flags;
         if let Some(texture) = &object.texture {
             (appearance.texture, appearance.texture_key) =
                 self.placed_texture(texture, world_from_local);
         }
         if let Some(interior) = &object.interior {
-            appearance.interior = Arc::new(Interior::clone(interior));
+            let mut interior = Interior::clone(interior);
+            // Media densities move with the object, like its texture.
+            for media in &mut interior.media {
+                media.transform(world_from_local);
+            }
+            appearance.interior = Arc::new(interior);
             appearance.interior_key = InteriorKey::Owned(self.new_owner());
-        }
-        appearance.flags.no_shadow |= object.no_shadow;
-        appearance.flags.no_image |= object.no_image;
-        appearance.flags.no_reflection |= object.no_reflection;
-        appearance.flags.double_illuminate |= object.double_illuminate;
-        // Nested light groups (measured): the innermost group's lights light an object,
-        // the outermost group's `global_lights` decides whether scene lights do.
-        if let Some(group) = object.light_group {
-            let global_lights = appearance
-                .flags
-                .light_group
-                .map_or(group.global_lights, |outer| outer.global_lights);
-            appearance.flags.light_group = Some(crate::scene::LightGroup {
-                global_lights,
-                ..group
-            });
         }
         Cow::Owned(appearance)
     }
@@ -394,6 +397,7 @@ impl Builder {
             no_image: appearance.flags.no_image,
             no_reflection: appearance.flags.no_reflection,
             double_illuminate: appearance.flags.double_illuminate,
+            hollow: appearance.flags.hollow,
             uses_uv: texture_uses_uv(&appearance.texture),
             light_group: appearance.flags.light_group,
         });

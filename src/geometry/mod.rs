@@ -156,6 +156,8 @@ pub struct Material {
     pub no_reflection: bool,
     /// `double_illuminate`: lit from both sides.
     pub double_illuminate: bool,
+    /// `hollow`: atmospheric media and fog fill the object's inside.
+    pub hollow: bool,
     /// The texture evaluates a pigment at uv coordinates (`uv_mapping`), so hits need them.
     pub uses_uv: bool,
     /// The `light_group` the material's object sits in (its lights and `global_lights`).

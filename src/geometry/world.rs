@@ -135,6 +135,26 @@ impl World {
             })
     }
 
+    /// True when `point` is inside an object that is not `hollow` (fog and media stay out
+    /// of such objects).
+    pub fn inside_solid(&self, point: DVec3) -> bool {
+        let solid = |material: u32| {
+            self.materials
+                .get(material as usize)
+                .is_some_and(|material| !material.hollow)
+        };
+        self.primitives
+            .iter()
+            .chain(&self.unbounded)
+            .any(|primitive| match primitive {
+                Primitive::Leaf(leaf) => solid(leaf.material()) && leaf.inside(point),
+                Primitive::Mesh(instance) => solid(instance.material()) && instance.inside(point),
+                Primitive::Csg(tree) => {
+                    tree.leaves.iter().any(|leaf| solid(leaf.material())) && tree.inside(point)
+                }
+            })
+    }
+
     /// Nearest hit with `min_distance < distance < max_distance`.
     pub fn first_hit(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<SurfaceHit> {
         self.search(ray, min_distance, max_distance, false, &|_| false)

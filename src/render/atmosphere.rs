@@ -153,6 +153,16 @@ fn mix_layer(keep: &mut DVec3, add: &mut DVec3, share: f64, colour: Colour) {
     *add += own;
 }
 
+/// The fraction of light that passes `fog` from `origin` over `depth` along unit
+/// `direction` (lights with `media_attenuation` are dimmed so; turbulence is left out).
+pub fn fog_transmittance(fog: &Fog, origin: DVec3, direction: DVec3, depth: f64) -> f64 {
+    let calm = Fog {
+        turbulence: None,
+        ..fog.clone()
+    };
+    1.0 - fog_share(&calm, origin, direction, depth, NoiseGenerator::default())
+}
+
 /// The fraction `1 − a` of fog between a ray's start and `depth`, with turbulence read
 /// from `generator`.
 fn fog_share(

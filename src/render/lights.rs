@@ -30,12 +30,14 @@
 //!   centre's unless `area_illumination` is on.
 
 use super::area_light::AreaArray;
+use super::atmosphere::fog_transmittance;
+use super::media::transmittance;
 use super::normal::perturbed_normal;
 use super::pattern::hit_surface;
 use super::reflection::interior_fade;
 use super::texture::surface_pigment;
 use crate::geometry::{Material, Ray, SurfaceHit, World};
-use crate::scene::{Colour, LightSource, Scene, Spotlight};
+use crate::scene::{Colour, Fog, LightSource, Media, Scene, Spotlight};
 use glam::DVec3;
 
 /// A light ready for rendering: the source and what its shadow tests need.
@@ -44,6 +46,10 @@ pub struct SceneLight {
     pub source: LightSource,
     /// The `projected_through` object, ready for ray queries.
     pub projected_through: Option<World>,
+    /// The atmospheric media that dim this light on its way (`media_attenuation on`).
+    pub attenuating_media: Vec<Media>,
+    /// The fogs that dim this light on its way (`media_attenuation on`).
+    pub attenuating_fogs: Vec<Fog>,
 }
 
 /// The scene's lights, ready for rendering.
@@ -57,6 +63,16 @@ pub fn prepare_lights(scene: &Scene) -> Vec<SceneLight> {
                 .projected_through
                 .as_ref()
                 .map(|object| World::build_from_objects(vec![(**object).clone()])),
+            attenuating_media: if source.media_attenuation {
+                scene.atmosphere.media.clone()
+            } else {
+                Vec::new()
+            },
+            attenuating_fogs: if source.media_attenuation {
+                scene.atmosphere.fogs.clone()
+            } else {
+                Vec::new()
+            },
         })
         .collect()
 }
@@ -118,11 +134,18 @@ fn filter_along(
             None => return DVec3::ZERO,
         }
     }
-    if can_be_shadowed {
+    let mut filter = if can_be_shadowed {
         shadow_filter(world, point, direction, limit)
     } else {
         DVec3::ONE
+    };
+    if !light.attenuating_media.is_empty() && filter != DVec3::ZERO {
+        filter *= transmittance(&light.attenuating_media, point, direction, 0.0, limit);
     }
+    for fog in &light.attenuating_fogs {
+        filter *= fog_transmittance(fog, point, direction, limit);
+    }
+    filter
 }
 
 /// Shadow rays ignore surfaces closer than this to the lit point (measured in POV-Ray 3.7
@@ -289,6 +312,16 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
                 if let Some(kept) = interior_fade(&material.interior, hit.distance - since) {
                     filter *= kept;
                 }
+            }
+            // Absorbing and scattering media inside the object cast shadows.
+            if !material.interior.media.is_empty() {
+                filter *= transmittance(
+                    &material.interior.media,
+                    point,
+                    direction,
+                    since,
+                    hit.distance,
+                );
             }
             entered = None;
         }

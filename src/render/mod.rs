@@ -24,6 +24,7 @@ pub mod focal_blur;
 pub mod image_map;
 pub mod iridescence;
 pub mod lights;
+pub mod media;
 pub mod mesh_camera;
 pub mod normal;
 pub mod output;

@@ -42,6 +42,7 @@ use super::atmosphere::AtmosphereShader;
 use super::dispersion::Bands;
 use super::encoding::is_legacy_scene;
 use super::lights::{prepare_lights, transmission, SceneLight};
+use super::media::{ActiveMedia, MediaShader, Stretch};
 use super::normal::perturbed_normal_at;
 use super::pattern::hit_surface;
 use super::reflection::{apply_exponent, interior_fade, reflection_colour};
@@ -75,6 +76,9 @@ pub struct Media {
     len: usize,
     /// For a ray of one dispersion band: the exponent applied to `dispersion`.
     band: Option<f64>,
+    /// The ray started inside a non-hollow object it does not know about (the camera is
+    /// inside one): no fog or media anywhere along it.
+    in_solid: bool,
 }
 
 impl Media {
@@ -83,6 +87,7 @@ impl Media {
         entries: [(0, 1.0); MEDIA_DEPTH],
         len: 0,
         band: None,
+        in_solid: false,
     };
 
     /// Index of refraction of the innermost medium.
@@ -91,6 +96,11 @@ impl Media {
             0 => 1.0,
             n => self.entries[n - 1].1,
         }
+    }
+
+    /// The materials of the objects the ray is in, innermost first.
+    fn materials_innermost_first(&self) -> impl Iterator<Item = u32> + '_ {
+        self.entries[..self.len].iter().rev().map(|entry| entry.0)
     }
 
     /// The material of the innermost object the ray is in.
@@ -140,6 +150,10 @@ pub struct Tracer<'a> {
     any_no_reflection: bool,
     /// How far camera rays see (a mesh camera's `max_distance`; else infinite).
     camera_reach: f64,
+    /// The scene has media (atmospheric or in some interior).
+    any_media: bool,
+    /// The camera is inside a non-hollow object (so camera rays see no fog or media).
+    camera_in_solid: bool,
 }
 
 /// What a ray is for, which decides the objects it can see.
@@ -180,12 +194,19 @@ impl<'a> Tracer<'a> {
                 .mesh
                 .as_ref()
                 .map_or(f64::INFINITY, |m| m.reach()),
+            any_media: !scene.atmosphere.media.is_empty()
+                || world.materials.iter().any(|m| !m.interior.media.is_empty()),
+            camera_in_solid: world.inside_solid(scene.camera.location),
         }
     }
 
     /// The colour seen along a camera ray.
     pub fn trace_camera_ray(&self, ray: &Ray) -> DVec3 {
-        let colour = self.trace(*ray, 1, RayWeight::CAMERA, &Media::OUTSIDE, RayKind::Camera);
+        let start = Media {
+            in_solid: self.camera_in_solid,
+            ..Media::OUTSIDE
+        };
+        let colour = self.trace(*ray, 1, RayWeight::CAMERA, &start, RayKind::Camera);
         if colour.is_finite() {
             colour
         } else {
@@ -216,12 +237,21 @@ impl<'a> Tracer<'a> {
             if !self.atmosphere.is_clear() {
                 let start = ray.origin + ray.direction * segment_start;
                 let end = hit.as_ref().map_or(f64::INFINITY, |hit| hit.distance);
-                let (keep, add) = self
-                    .atmosphere
-                    .along(start, ray.direction, end - segment_start);
+                // Fog does not fill non-hollow objects.
+                if self.all_hollow(&media) {
+                    let (keep, add) =
+                        self.atmosphere
+                            .along(start, ray.direction, end - segment_start);
+                    colour += carried * add;
+                    carried *= keep;
+                }
+                segment_start = end;
+            }
+            if self.any_media {
+                let end = hit.as_ref().map_or(f64::INFINITY, |hit| hit.distance);
+                let (keep, add) = self.media_along(&ray, &media, travelled, end);
                 colour += carried * add;
                 carried *= keep;
-                segment_start = end;
             }
             let Some(hit) = hit else {
                 return colour + carried * self.atmosphere.sky(ray.direction);
@@ -251,6 +281,43 @@ impl<'a> Tracer<'a> {
             min_distance = hit.distance + SURFACE_EPSILON;
         }
         colour
+    }
+
+    /// Whether every object of `inside` is hollow (so fog and media fill it).
+    fn all_hollow(&self, inside: &Media) -> bool {
+        !inside.in_solid
+            && inside.materials_innermost_first().all(|id| {
+                self.world
+                    .materials
+                    .get(id as usize)
+                    .is_none_or(|material| material.hollow)
+            })
+    }
+
+    /// What the media do along `ray` from `start` to `end` inside the objects of `inside`:
+    /// their interiors' media and the atmospheric media, but nothing at all inside a
+    /// non-hollow object (measured: a non-hollow box shows none of its own media, nor of a
+    /// hollow box inside it, nor does a hollow media sphere inside a non-hollow plane that
+    /// holds the camera).
+    fn media_along(&self, ray: &Ray, inside: &Media, start: f64, end: f64) -> (DVec3, DVec3) {
+        if !self.all_hollow(inside) {
+            return (DVec3::ONE, DVec3::ZERO);
+        }
+        let mut active = ActiveMedia::NONE;
+        for id in inside.materials_innermost_first() {
+            if let Some(material) = self.world.materials.get(id as usize) {
+                active.extend(&material.interior.media);
+            }
+        }
+        active.extend(&self.scene.atmosphere.media);
+        let shader = MediaShader::new(self.world, &self.lights);
+        let stretch = Stretch {
+            origin: ray.origin,
+            direction: ray.direction,
+            start,
+            end,
+        };
+        shader.along(&active, stretch)
     }
 
     /// The nearest surface along `ray` beyond `min_distance` that a ray of this kind sees.

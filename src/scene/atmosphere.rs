@@ -16,6 +16,8 @@ pub struct Atmosphere {
     pub sky_sphere: Option<SkySphere>,
     /// Rainbows, in scene order.
     pub rainbows: Vec<Rainbow>,
+    /// Atmospheric `media { }` blocks, filling all space outside non-hollow objects.
+    pub media: Vec<super::Media>,
 }
 
 impl Atmosphere {

@@ -109,6 +109,8 @@ pub struct Interior {
     /// `caustics`: fake caustics, brightening shadow rays that cross the surface nearly
     /// along its normal (0 is off).
     pub caustics: f64,
+    /// `media { }` blocks inside the object; their effects add.
+    pub media: Vec<super::Media>,
 }
 
 impl Default for Interior {
@@ -121,6 +123,7 @@ impl Default for Interior {
             fade_power: 0.0,
             fade_colour: DVec3::ZERO,
             caustics: 0.0,
+            media: Vec::new(),
         }
     }
 }

@@ -11,6 +11,7 @@ mod implicit;
 mod julia;
 mod light;
 mod light_group;
+mod media;
 mod mesh;
 mod texture;
 mod transform;
@@ -27,6 +28,7 @@ pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline}
 pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, LightSource, Spotlight};
 pub use light_group::{separate_light_groups, LightGroup};
+pub use media::{Media, Scattering, ScatteringKind};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,

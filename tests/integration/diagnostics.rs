@@ -699,3 +699,13 @@ fn julia_slice_needs_a_fourth_component() {
         &["the slice normal needs a non-zero fourth component"],
     );
 }
+
+#[test]
+fn media_scattering_type_out_of_range_points_at_the_type() {
+    check(
+        "media_bad_scattering_type",
+        3,
+        35,
+        &["scattering type must be 1 to 5", "Henyey-Greenstein"],
+    );
+}

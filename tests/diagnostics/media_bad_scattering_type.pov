@@ -1,0 +1,4 @@
+// A scattering type outside 1..5.
+box { -1, 1 hollow pigment { rgbt 1 }
+  interior { media { scattering { 7, rgb 0.1 } } }
+}
