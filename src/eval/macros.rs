@@ -1,10 +1,11 @@
 //! Macro calls: argument binding (by reference for plain identifiers), expansion in place
-//! as stream items, and evaluation as a single value inside expressions.
+//! as stream items (a text body is run token by token first, see `token_macro`), and
+//! evaluation as a single value inside expressions.
 
 use super::stream::Stream;
 use super::value::Value;
 use super::{Entered, Entering, EvalResult, Evaluator};
-use crate::syntax::ast::{Call, Expr, Item};
+use crate::syntax::ast::{Call, Expr, Item, MacroBody};
 use std::rc::Rc;
 
 impl Evaluator {
@@ -12,16 +13,6 @@ impl Evaluator {
     pub(crate) fn enter_macro(&mut self, call: &Rc<Call>, stream: &mut Stream) -> EvalResult<()> {
         let Some(Value::Macro(definition)) = self.lookup(&call.name).cloned() else {
             return Err(self.undefined(&call.name, call.name_span).into());
-        };
-        let Some(body) = definition.body.clone() else {
-            return Err(self
-                .error(call.span, format!("cannot run macro `{}`", definition.name))
-                .with_label("called here")
-                .with_secondary(
-                    definition.header_span,
-                    "its body mixes directives and braces in a way durer cannot follow",
-                )
-                .into());
         };
         let values = self.macro_arguments(call)?;
         let required = definition.parameters.iter().filter(|p| !p.optional).count();
@@ -57,6 +48,18 @@ impl Evaluator {
             span: call.span,
         });
         self.scopes.push(scope);
+        let body = match &definition.body {
+            MacroBody::Items(items) => items.clone(),
+            MacroBody::Text { text, span } => match self.expand_text_macro(text, *span) {
+                Ok(items) => items,
+                Err(error) => {
+                    self.scopes.pop();
+                    self.trace.pop();
+                    self.nesting -= 1;
+                    return Err(error);
+                }
+            },
+        };
         stream.push_macro(body);
         Ok(())
     }

@@ -1,0 +1,645 @@
+//! Text macros: running a macro body whose directives cut across braces, token by token.
+//!
+//! In: a macro's body text ([`MacroBody::Text`](crate::syntax::ast::MacroBody)), called with
+//! its arguments already bound in the innermost scope. Out: the items the body produced,
+//! parsed from the text it emitted, for the caller's stream; directives (`#if`, loops,
+//! `#local`, `#write` whose argument list spans directives, ...) run as they are met, as in
+//! POV-Ray's token stream. Holds: a name bound to a variable when it is emitted is replaced by
+//! a hidden name bound (in the macro's scope) to a snapshot of its value at that moment, so
+//! `P[J]` emitted inside a loop keeps that iteration's `J`; spans of everything parsed from
+//! the emitted text point into the macro body.
+
+use super::stream::{for_continues, Stream};
+use super::value::Value;
+use super::{EvalResult, Evaluator, LOOP_ITERATION_LIMIT};
+use crate::diag::{Diagnostic, FileId, Span};
+use crate::syntax::ast::{Expr, Item};
+use crate::syntax::mapping::OffsetMap;
+use crate::syntax::tokens::{next_token, skip_trivia, Token, TokenKind};
+use crate::syntax::{parse_generated, parse_prefix, Prefix, Rule};
+use std::collections::HashMap;
+use std::rc::Rc;
+
+/// Text emitted by a text macro, with the map leading it back to the body.
+#[derive(Default)]
+struct Emitted {
+    text: String,
+    map: OffsetMap,
+    /// Body offset just past the last token emitted: a gap before the next one becomes a space.
+    last_end: Option<usize>,
+}
+
+impl Emitted {
+    /// Appends `text` standing for the body token `token` (at `source` in its file).
+    fn push(&mut self, token: Token, text: &str, source: Span) {
+        if self.last_end != Some(token.start) && !self.text.is_empty() {
+            self.text.push(' ');
+        }
+        self.map.record(self.text.len(), source);
+        self.text.push_str(text);
+        self.last_end = Some(token.end);
+    }
+}
+
+/// A `#write(` whose argument list runs across directives, collected until its `)`.
+struct PendingWrite {
+    emitted: Emitted,
+    /// Parentheses open in the collected text.
+    depth: usize,
+    /// The `#write` directive's span.
+    span: Span,
+}
+
+/// An open conditional or loop of the body, innermost last.
+enum Control {
+    /// Running the chosen branch of an `#if`/`#ifdef`/`#ifndef`.
+    If,
+    /// Running a `#while` body that starts at body offset `body`.
+    While {
+        condition: Expr,
+        body: usize,
+        iterations: u64,
+        span: Span,
+    },
+    /// Running a `#for` body that starts at body offset `body`.
+    For {
+        variable: Rc<str>,
+        end: f64,
+        step: f64,
+        body: usize,
+        iterations: u64,
+        span: Span,
+    },
+    /// Running a `#switch` clause (falling through the following ones without `#break`).
+    Switch,
+}
+
+/// The state of one text macro call.
+struct TextRun<'t> {
+    text: &'t str,
+    file: FileId,
+    /// File offset of the body's first byte.
+    base: usize,
+    /// Body offset of the next token to read.
+    position: usize,
+    controls: Vec<Control>,
+    emitted: Emitted,
+    write: Option<PendingWrite>,
+    /// Whether the last token emitted was `.` (a following word is a member, not a name).
+    after_dot: bool,
+    /// The hidden name and value last snapshotted for each name.
+    snapshots: HashMap<Rc<str>, (Rc<str>, Value)>,
+    hidden_names: usize,
+}
+
+impl TextRun<'_> {
+    /// The file span of body bytes `start..end`.
+    fn span(&self, start: usize, end: usize) -> Span {
+        Span::new(self.file, self.base + start, self.base + end)
+    }
+
+    /// The map for text parsed straight from the body at `start`.
+    fn map_from(&self, start: usize) -> OffsetMap {
+        OffsetMap::copied(self.span(start, self.text.len()))
+    }
+
+    /// Skips to just past the `#end` closing the innermost open directive, passing over
+    /// nested ones.
+    fn skip_to_end(&mut self) {
+        self.skip_to(&[]);
+    }
+
+    /// Skips to just past the next directive among `stops` (or `#end`) that is not nested in
+    /// another directive, and returns its word (`None` at the end of the text).
+    fn skip_to(&mut self, stops: &[&str]) -> Option<&'static str> {
+        let mut depth = 0usize;
+        while let Some(token) = next_token(self.text, self.position) {
+            self.position = token.end;
+            let word = token.directive_word(self.text);
+            match word {
+                "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro" => depth += 1,
+                "end" if depth == 0 => return Some("end"),
+                "end" => depth -= 1,
+                _ if depth == 0 => {
+                    if let Some(stop) = stops.iter().find(|stop| **stop == word) {
+                        return Some(static_word(stop));
+                    }
+                }
+                _ => {}
+            }
+        }
+        None
+    }
+}
+
+/// The directive words `skip_to` stops at, as static strings.
+fn static_word(word: &str) -> &'static str {
+    match word {
+        "elseif" => "elseif",
+        "else" => "else",
+        "case" => "case",
+        "range" => "range",
+        _ => "end",
+    }
+}
+
+/// Whether two snapshots are the same value, so one hidden name serves both (cheap checks
+/// only: numbers, vectors and shared values; anything else gets a new name).
+fn same_snapshot(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Float(x), Value::Float(y)) => x.to_bits() == y.to_bits(),
+        (Value::Vector(x), Value::Vector(y)) => x == y,
+        (Value::String(x), Value::String(y)) => Rc::ptr_eq(x, y),
+        (Value::Array(x), Value::Array(y)) => Rc::ptr_eq(x, y),
+        (Value::Object(x), Value::Object(y)) => std::sync::Arc::ptr_eq(x, y),
+        (Value::Function(x), Value::Function(y)) => Rc::ptr_eq(x, y),
+        _ => false,
+    }
+}
+
+/// The grammar rule of a directive run whole when met (the conditionals and loops are run
+/// token by token instead).
+fn directive_rule(word: &str) -> Option<Rule> {
+    Some(match word {
+        "declare" => Rule::declare,
+        "local" => Rule::local,
+        "undef" => Rule::undef,
+        "include" => Rule::include,
+        "version" => Rule::version,
+        "default" => Rule::default,
+        "debug" => Rule::debug,
+        "warning" => Rule::warning,
+        "error" => Rule::error,
+        "fopen" => Rule::fopen,
+        "fclose" => Rule::fclose,
+        "read" => Rule::read,
+        "write" => Rule::write,
+        "macro" => Rule::macro_directive,
+        _ => return None,
+    })
+}
+
+impl Evaluator {
+    /// Runs a text macro's body (its arguments bound in the innermost scope) and returns the
+    /// items it produced.
+    pub(crate) fn expand_text_macro(&mut self, text: &str, span: Span) -> EvalResult<Rc<[Item]>> {
+        let mut run = TextRun {
+            text,
+            file: span.file,
+            base: span.start as usize,
+            position: 0,
+            controls: Vec::new(),
+            emitted: Emitted::default(),
+            write: None,
+            after_dot: false,
+            snapshots: HashMap::new(),
+            hidden_names: 0,
+        };
+        loop {
+            let Some(token) = next_token(text, run.position) else {
+                // The grammar ends every text body with its `#end`.
+                return Err(self
+                    .error(span, "macro body ends without `#end`")
+                    .with_label("this body")
+                    .into());
+            };
+            run.position = token.end;
+            if token.kind != TokenKind::Directive {
+                self.emit(&mut run, token)?;
+            } else if self.text_directive(&mut run, token)? {
+                break;
+            }
+        }
+        if let Some(write) = &run.write {
+            return Err(self
+                .error(write.span, "`#write` is never closed")
+                .with_label("its `(` has no matching `)` before the macro ends")
+                .into());
+        }
+        parse_generated(&run.emitted.text, &run.emitted.map).map_err(|mut d| {
+            d.trace = self.trace_for_diagnostic();
+            d.message = format!("in the text this macro produced: {}", d.message);
+            d
+        })
+    }
+
+    /// Appends a token to the emitted text (or to a pending `#write`), naming snapshots for
+    /// names bound to variables.
+    fn emit(&mut self, run: &mut TextRun, token: Token) -> EvalResult<()> {
+        let text = token.text(run.text);
+        let hidden = if token.kind == TokenKind::Word && !run.after_dot {
+            self.snapshot_name(run, text)
+        } else {
+            None
+        };
+        run.after_dot = text == ".";
+        let source = run.span(token.start, token.end);
+        let shown = hidden.as_deref().unwrap_or(text);
+        let Some(write) = &mut run.write else {
+            run.emitted.push(token, shown, source);
+            return Ok(());
+        };
+        write.emitted.push(token, shown, source);
+        match text {
+            "(" => write.depth += 1,
+            ")" => write.depth = write.depth.saturating_sub(1),
+            _ => {}
+        }
+        if write.depth > 0 {
+            return Ok(());
+        }
+        let Some(write) = run.write.take() else {
+            return Ok(());
+        };
+        let (parsed, length) = parse_prefix(Rule::write, &write.emitted.text, &write.emitted.map)?;
+        if length < write.emitted.text.len() {
+            return Err(self
+                .error(
+                    write.span,
+                    "this `#write` is followed by more than its arguments",
+                )
+                .with_label("`#write` collected across directives")
+                .into());
+        }
+        self.run_whole_directive(parsed)
+    }
+
+    /// A hidden name bound to a snapshot of `name`'s current value, or `None` when `name` is
+    /// no variable (a keyword, a function's parameter, a macro).
+    fn snapshot_name(&mut self, run: &mut TextRun, name: &str) -> Option<Rc<str>> {
+        let value = self.lookup(name)?;
+        if matches!(value, Value::Macro(_)) {
+            return None;
+        }
+        if let Some((hidden, snapshot)) = run.snapshots.get(name) {
+            if same_snapshot(snapshot, value) {
+                return Some(hidden.clone());
+            }
+        }
+        let value = value.clone();
+        let hidden: Rc<str> =
+            Rc::from(format!("__text_macro{}_{}", self.nesting, run.hidden_names));
+        run.hidden_names += 1;
+        let innermost = self.scopes.len() - 1;
+        self.scopes.insert(innermost, hidden.clone(), value.clone());
+        run.snapshots
+            .insert(Rc::from(name), (hidden.clone(), value));
+        Some(hidden)
+    }
+
+    /// Runs the directive `token` of a text body; returns whether it ended the body.
+    fn text_directive(&mut self, run: &mut TextRun, token: Token) -> EvalResult<bool> {
+        let word = token.directive_word(run.text);
+        let span = run.span(token.start, token.end);
+        match word {
+            "if" => {
+                let chosen = self.text_condition(run)?;
+                self.enter_branch(run, chosen)?;
+            }
+            "ifdef" | "ifndef" => {
+                self.expect_punctuation(run, "(", span)?;
+                let start = skip_trivia(run.text, run.position);
+                let (target, length) =
+                    parse_prefix(Rule::ifdef_target, &run.text[start..], &run.map_from(start))?;
+                run.position = start + length;
+                self.expect_punctuation(run, ")", span)?;
+                let Prefix::Target(target) = target else {
+                    return Ok(false);
+                };
+                let defined = self.is_defined(&target)?;
+                self.enter_branch(run, defined != (word == "ifndef"))?;
+            }
+            "elseif" | "else" => match run.controls.last() {
+                Some(Control::Switch) if word == "else" => {}
+                Some(Control::If) => {
+                    run.controls.pop();
+                    run.skip_to_end();
+                }
+                _ => return Err(self.stray(span, word)),
+            },
+            "end" => return self.text_end(run),
+            "while" => {
+                let condition = self.text_expression(run, Rule::expr)?;
+                if self.eval_condition(&condition)? {
+                    run.controls.push(Control::While {
+                        condition,
+                        body: run.position,
+                        iterations: 0,
+                        span,
+                    });
+                } else {
+                    run.skip_to_end();
+                }
+            }
+            "for" => self.text_for(run, span)?,
+            "switch" => self.text_switch(run)?,
+            "case" | "range" => {
+                if !matches!(run.controls.last(), Some(Control::Switch)) {
+                    return Err(self.stray(span, word));
+                }
+                // Falling through from the clause before: the label is not tested.
+                self.switch_label(run, word, span)?;
+            }
+            "break" => return Ok(self.text_break(run)),
+            "write" => {
+                let map = run.map_from(token.start);
+                match parse_prefix(Rule::write, &run.text[token.start..], &map) {
+                    Ok((directive, length)) => {
+                        run.position = token.start + length;
+                        self.run_whole_directive(directive)?;
+                    }
+                    Err(_) if run.write.is_none() => {
+                        // The argument list runs across directives: collect it.
+                        let mut emitted = Emitted::default();
+                        emitted.push(token, "#write", span);
+                        run.write = Some(PendingWrite {
+                            emitted,
+                            depth: 0,
+                            span,
+                        });
+                    }
+                    Err(d) => return Err(d),
+                }
+            }
+            _ => {
+                let Some(rule) = directive_rule(word) else {
+                    return Err(self.stray(span, word));
+                };
+                let map = run.map_from(token.start);
+                let (directive, length) = parse_prefix(rule, &run.text[token.start..], &map)?;
+                run.position = token.start + length;
+                self.run_whole_directive(directive)?;
+            }
+        }
+        Ok(false)
+    }
+
+    /// An error for a directive that belongs to no open directive of the body.
+    fn stray(&self, span: Span, word: &str) -> Box<Diagnostic> {
+        self.error(
+            span,
+            format!("`#{word}` outside the directive it belongs to"),
+        )
+        .with_label("nothing open here takes it")
+        .into()
+    }
+
+    /// Runs a directive parsed whole (`#local`, `#write`, `#include` ...) at once.
+    fn run_whole_directive(&mut self, parsed: Prefix) -> EvalResult<()> {
+        let Prefix::Directive(directive) = parsed else {
+            return Ok(());
+        };
+        let directive = Rc::new(directive);
+        let mut stream = Stream::empty();
+        self.run_directive(&directive, &mut stream)?;
+        // A file included here may declare things, but its items have no place to go.
+        if let Some(item) = self.next_item(&mut stream)? {
+            while !stream.is_empty() {
+                self.unwind_frame(&mut stream);
+            }
+            return Err(self
+                .error(
+                    item.span(),
+                    "a file included inside a text macro may only declare",
+                )
+                .with_label("this item")
+                .into());
+        }
+        Ok(())
+    }
+
+    /// Parses an expression at the run's position (`rule` is `expr` or `full_expr`).
+    fn text_expression(&mut self, run: &mut TextRun, rule: Rule) -> EvalResult<Expr> {
+        let start = skip_trivia(run.text, run.position);
+        let (parsed, length) = parse_prefix(rule, &run.text[start..], &run.map_from(start))?;
+        run.position = start + length;
+        match parsed {
+            Prefix::Expr(expr) => Ok(expr),
+            _ => Err(self
+                .error(run.span(start, start + length), "expected an expression")
+                .into()),
+        }
+    }
+
+    /// Parses and tests a condition at the run's position.
+    fn text_condition(&mut self, run: &mut TextRun) -> EvalResult<bool> {
+        let condition = self.text_expression(run, Rule::expr)?;
+        self.eval_condition(&condition)
+    }
+
+    /// Reads the punctuation `expected` at the run's position.
+    fn expect_punctuation(&self, run: &mut TextRun, expected: &str, at: Span) -> EvalResult<()> {
+        match next_token(run.text, run.position) {
+            Some(token) if token.text(run.text) == expected => {
+                run.position = token.end;
+                Ok(())
+            }
+            found => {
+                let span = found.map_or(at, |token| run.span(token.start, token.end));
+                Err(self
+                    .error(span, format!("expected `{expected}`"))
+                    .with_label(format!("expected `{expected}` here"))
+                    .into())
+            }
+        }
+    }
+
+    /// Enters the branch of an `#if` whose first condition gave `chosen`: runs it, or skips to
+    /// the first `#elseif` that holds or the `#else` (or past the `#end`).
+    fn enter_branch(&mut self, run: &mut TextRun, mut chosen: bool) -> EvalResult<()> {
+        loop {
+            if chosen {
+                run.controls.push(Control::If);
+                return Ok(());
+            }
+            match run.skip_to(&["elseif", "else"]) {
+                Some("elseif") => chosen = self.text_condition(run)?,
+                Some("else") => chosen = true,
+                _ => return Ok(()),
+            }
+        }
+    }
+
+    /// `#end`: closes the innermost open directive, repeating a loop whose condition holds;
+    /// returns whether it ended the body.
+    fn text_end(&mut self, run: &mut TextRun) -> EvalResult<bool> {
+        match run.controls.pop() {
+            None => return Ok(true),
+            Some(Control::If | Control::Switch) => {}
+            Some(Control::While {
+                condition,
+                body,
+                iterations,
+                span,
+            }) => {
+                if iterations + 1 >= LOOP_ITERATION_LIMIT {
+                    return Err(self.text_loop_limit(span));
+                }
+                if self.eval_condition(&condition)? {
+                    run.position = body;
+                    run.controls.push(Control::While {
+                        condition,
+                        body,
+                        iterations: iterations + 1,
+                        span,
+                    });
+                }
+            }
+            Some(Control::For {
+                variable,
+                end,
+                step,
+                body,
+                iterations,
+                span,
+            }) => {
+                if iterations + 1 >= LOOP_ITERATION_LIMIT {
+                    return Err(self.text_loop_limit(span));
+                }
+                // POV-Ray reads the loop variable back, so the body may change it.
+                let current = match self.lookup(&variable) {
+                    Some(Value::Float(value)) => *value,
+                    _ => end,
+                };
+                let next = current + step;
+                self.assign_local(&variable, Value::Float(next));
+                if for_continues(next, end, step) {
+                    run.position = body;
+                    run.controls.push(Control::For {
+                        variable,
+                        end,
+                        step,
+                        body,
+                        iterations: iterations + 1,
+                        span,
+                    });
+                }
+            }
+        }
+        Ok(false)
+    }
+
+    fn text_loop_limit(&self, span: Span) -> Box<Diagnostic> {
+        self.error(
+            span,
+            format!("loop ran {LOOP_ITERATION_LIMIT} times without ending"),
+        )
+        .with_label("this loop")
+        .with_help("check that the loop condition eventually becomes false")
+        .into()
+    }
+
+    /// `#for (Name, start, end[, step])`.
+    fn text_for(&mut self, run: &mut TextRun, span: Span) -> EvalResult<()> {
+        self.expect_punctuation(run, "(", span)?;
+        let name = next_token(run.text, run.position)
+            .filter(|token| token.kind == TokenKind::Word)
+            .ok_or_else(|| {
+                Box::new(
+                    self.error(span, "expected the loop variable")
+                        .with_label("`#for` needs `(Name, start, end)`"),
+                )
+            })?;
+        run.position = name.end;
+        let variable: Rc<str> = Rc::from(name.text(run.text));
+        self.expect_punctuation(run, ",", span)?;
+        let start = self.text_expression(run, Rule::full_expr)?;
+        self.expect_punctuation(run, ",", span)?;
+        let end = self.text_expression(run, Rule::full_expr)?;
+        let step = match next_token(run.text, run.position) {
+            Some(token) if token.text(run.text) == "," => {
+                run.position = token.end;
+                Some(self.text_expression(run, Rule::full_expr)?)
+            }
+            _ => None,
+        };
+        self.expect_punctuation(run, ")", span)?;
+        let start = self.eval_float(&start)?;
+        let end = self.eval_float(&end)?;
+        let step = match step {
+            Some(step) => self.eval_float(&step)?,
+            None => 1.0,
+        };
+        if step == 0.0 {
+            return Err(self
+                .error(span, "`#for` step is zero")
+                .with_label("this loop would never end")
+                .into());
+        }
+        self.assign_local(&variable, Value::Float(start));
+        if for_continues(start, end, step) {
+            run.controls.push(Control::For {
+                variable,
+                end,
+                step,
+                body: run.position,
+                iterations: 0,
+                span,
+            });
+        } else {
+            run.skip_to_end();
+        }
+        Ok(())
+    }
+
+    /// `#switch (value)`: runs from the first `#case`/`#range` that holds, or the `#else`.
+    fn text_switch(&mut self, run: &mut TextRun) -> EvalResult<()> {
+        let value = self.text_expression(run, Rule::expr)?;
+        let value = self.eval_float(&value)?;
+        loop {
+            let label_start = run.position;
+            match run.skip_to(&["case", "range", "else"]) {
+                Some(word @ ("case" | "range")) => {
+                    let span = run.span(label_start, run.position);
+                    let (low, high) = self.switch_label(run, word, span)?;
+                    let holds = match high {
+                        None => (self.eval_float(&low)? - value).abs() < 1e-10,
+                        Some(high) => {
+                            let low = self.eval_float(&low)?;
+                            low <= value && value <= self.eval_float(&high)?
+                        }
+                    };
+                    if holds {
+                        run.controls.push(Control::Switch);
+                        return Ok(());
+                    }
+                }
+                Some("else") => {
+                    run.controls.push(Control::Switch);
+                    return Ok(());
+                }
+                _ => return Ok(()),
+            }
+        }
+    }
+
+    /// Reads a `#case (value)` or `#range (low, high)` label: the value, or low and high.
+    fn switch_label(
+        &mut self,
+        run: &mut TextRun,
+        word: &str,
+        span: Span,
+    ) -> EvalResult<(Expr, Option<Expr>)> {
+        if word == "case" {
+            return Ok((self.text_expression(run, Rule::expr)?, None));
+        }
+        self.expect_punctuation(run, "(", span)?;
+        let low = self.text_expression(run, Rule::full_expr)?;
+        self.expect_punctuation(run, ",", span)?;
+        let high = self.text_expression(run, Rule::full_expr)?;
+        self.expect_punctuation(run, ")", span)?;
+        Ok((low, Some(high)))
+    }
+
+    /// `#break`: leaves the innermost loop or switch, or the macro when none is open; returns
+    /// whether it ended the body.
+    fn text_break(&mut self, run: &mut TextRun) -> bool {
+        while let Some(control) = run.controls.pop() {
+            run.skip_to_end();
+            if !matches!(control, Control::If) {
+                return false;
+            }
+        }
+        true
+    }
+}
