@@ -90,7 +90,12 @@ struct TextRun<'t> {
     /// The hidden name and value last snapshotted for each name.
     snapshots: HashMap<Rc<str>, (Rc<str>, Value)>,
     hidden_names: usize,
+    /// What was parsed at each body offset, so loops parse their directives once.
+    parsed: HashMap<usize, Parsed>,
 }
+
+/// A piece parsed from the body and its length, or why it does not parse.
+type Parsed = Result<(Rc<Prefix>, usize), Box<Diagnostic>>;
 
 impl TextRun<'_> {
     /// The file span of body bytes `start..end`.
@@ -101,6 +106,17 @@ impl TextRun<'_> {
     /// The map for text parsed straight from the body at `start`.
     fn map_from(&self, start: usize) -> OffsetMap {
         OffsetMap::copied(self.span(start, self.text.len()))
+    }
+
+    /// Parses `rule` at body offset `start` (once per offset).
+    fn parse_at(&mut self, rule: Rule, start: usize) -> Parsed {
+        if let Some(parsed) = self.parsed.get(&start) {
+            return parsed.clone();
+        }
+        let parsed = parse_prefix(rule, &self.text[start..], &self.map_from(start))
+            .map(|(prefix, length)| (Rc::new(prefix), length));
+        self.parsed.insert(start, parsed.clone());
+        parsed
     }
 
     /// Skips to just past the `#end` closing the innermost open directive, passing over
@@ -140,6 +156,30 @@ fn static_word(word: &str) -> &'static str {
         "case" => "case",
         "range" => "range",
         _ => "end",
+    }
+}
+
+/// A finite float or vector written as SDL that reads back as the same value (negative
+/// numbers in parentheses, so that they stay one operand).
+fn literal(value: &Value) -> Option<String> {
+    let number = |x: f64| {
+        if x < 0.0 || (x == 0.0 && x.is_sign_negative()) {
+            format!("({x:?})")
+        } else {
+            format!("{x:?}")
+        }
+    };
+    match value {
+        Value::Float(x) if x.is_finite() => Some(number(*x)),
+        Value::Vector(vector) if vector.len >= 2 => {
+            let components = &vector.components[..usize::from(vector.len)];
+            if !components.iter().all(|x| x.is_finite()) {
+                return None;
+            }
+            let parts: Vec<String> = components.iter().map(|x| number(*x)).collect();
+            Some(format!("<{}>", parts.join(",")))
+        }
+        _ => None,
     }
 }
 
@@ -194,6 +234,7 @@ impl Evaluator {
             after_dot: false,
             snapshots: HashMap::new(),
             hidden_names: 0,
+            parsed: HashMap::new(),
         };
         loop {
             let Some(token) = next_token(text, run.position) else {
@@ -251,7 +292,11 @@ impl Evaluator {
         let Some(write) = run.write.take() else {
             return Ok(());
         };
-        let (parsed, length) = parse_prefix(Rule::write, &write.emitted.text, &write.emitted.map)?;
+        let (parsed, length) = self.traced(parse_prefix(
+            Rule::write,
+            &write.emitted.text,
+            &write.emitted.map,
+        ))?;
         if length < write.emitted.text.len() {
             return Err(self
                 .error(
@@ -261,13 +306,17 @@ impl Evaluator {
                 .with_label("`#write` collected across directives")
                 .into());
         }
-        self.run_whole_directive(parsed)
+        self.run_whole_directive(&parsed)
     }
 
-    /// A hidden name bound to a snapshot of `name`'s current value, or `None` when `name` is
-    /// no variable (a keyword, a function's parameter, a macro).
+    /// What to emit for `name`: its value written out when it is a finite number or vector,
+    /// else a hidden name bound to a snapshot of its value; `None` when `name` is no variable
+    /// (a keyword, a function's parameter, a macro).
     fn snapshot_name(&mut self, run: &mut TextRun, name: &str) -> Option<Rc<str>> {
         let value = self.lookup(name)?;
+        if let Some(literal) = literal(value) {
+            return Some(Rc::from(literal));
+        }
         if matches!(value, Value::Macro(_)) {
             return None;
         }
@@ -277,8 +326,7 @@ impl Evaluator {
             }
         }
         let value = value.clone();
-        let hidden: Rc<str> =
-            Rc::from(format!("__text_macro{}_{}", self.nesting, run.hidden_names));
+        let hidden: Rc<str> = Rc::from(format!("_text{}_{}", self.nesting, run.hidden_names));
         run.hidden_names += 1;
         let innermost = self.scopes.len() - 1;
         self.scopes.insert(innermost, hidden.clone(), value.clone());
@@ -299,14 +347,13 @@ impl Evaluator {
             "ifdef" | "ifndef" => {
                 self.expect_punctuation(run, "(", span)?;
                 let start = skip_trivia(run.text, run.position);
-                let (target, length) =
-                    parse_prefix(Rule::ifdef_target, &run.text[start..], &run.map_from(start))?;
+                let (target, length) = self.traced(run.parse_at(Rule::ifdef_target, start))?;
                 run.position = start + length;
                 self.expect_punctuation(run, ")", span)?;
-                let Prefix::Target(target) = target else {
+                let Prefix::Target(target) = &*target else {
                     return Ok(false);
                 };
-                let defined = self.is_defined(&target)?;
+                let defined = self.is_defined(target)?;
                 self.enter_branch(run, defined != (word == "ifndef"))?;
             }
             "elseif" | "else" => match run.controls.last() {
@@ -342,11 +389,10 @@ impl Evaluator {
             }
             "break" => return Ok(self.text_break(run)),
             "write" => {
-                let map = run.map_from(token.start);
-                match parse_prefix(Rule::write, &run.text[token.start..], &map) {
+                match run.parse_at(Rule::write, token.start) {
                     Ok((directive, length)) => {
                         run.position = token.start + length;
-                        self.run_whole_directive(directive)?;
+                        self.run_whole_directive(&directive)?;
                     }
                     Err(_) if run.write.is_none() => {
                         // The argument list runs across directives: collect it.
@@ -358,20 +404,27 @@ impl Evaluator {
                             span,
                         });
                     }
-                    Err(d) => return Err(d),
+                    Err(d) => return Err(self.traced(Err(d))?),
                 }
             }
             _ => {
                 let Some(rule) = directive_rule(word) else {
                     return Err(self.stray(span, word));
                 };
-                let map = run.map_from(token.start);
-                let (directive, length) = parse_prefix(rule, &run.text[token.start..], &map)?;
+                let (directive, length) = self.traced(run.parse_at(rule, token.start))?;
                 run.position = token.start + length;
-                self.run_whole_directive(directive)?;
+                self.run_whole_directive(&directive)?;
             }
         }
         Ok(false)
+    }
+
+    /// A parse result whose error carries the macro call trace.
+    fn traced<T>(&self, parsed: Result<T, Box<Diagnostic>>) -> EvalResult<T> {
+        parsed.map_err(|mut d| {
+            d.trace = self.trace_for_diagnostic();
+            d
+        })
     }
 
     /// An error for a directive that belongs to no open directive of the body.
@@ -385,13 +438,12 @@ impl Evaluator {
     }
 
     /// Runs a directive parsed whole (`#local`, `#write`, `#include` ...) at once.
-    fn run_whole_directive(&mut self, parsed: Prefix) -> EvalResult<()> {
+    fn run_whole_directive(&mut self, parsed: &Prefix) -> EvalResult<()> {
         let Prefix::Directive(directive) = parsed else {
             return Ok(());
         };
-        let directive = Rc::new(directive);
         let mut stream = Stream::empty();
-        self.run_directive(&directive, &mut stream)?;
+        self.run_directive(directive, &mut stream)?;
         // A file included here may declare things, but its items have no place to go.
         if let Some(item) = self.next_item(&mut stream)? {
             while !stream.is_empty() {
@@ -411,10 +463,10 @@ impl Evaluator {
     /// Parses an expression at the run's position (`rule` is `expr` or `full_expr`).
     fn text_expression(&mut self, run: &mut TextRun, rule: Rule) -> EvalResult<Expr> {
         let start = skip_trivia(run.text, run.position);
-        let (parsed, length) = parse_prefix(rule, &run.text[start..], &run.map_from(start))?;
+        let (parsed, length) = self.traced(run.parse_at(rule, start))?;
         run.position = start + length;
-        match parsed {
-            Prefix::Expr(expr) => Ok(expr),
+        match &*parsed {
+            Prefix::Expr(expr) => Ok(expr.clone()),
             _ => Err(self
                 .error(run.span(start, start + length), "expected an expression")
                 .into()),

@@ -49,7 +49,7 @@ pub fn parse_generated(text: &str, map: &OffsetMap) -> Result<Rc<[ast::Item]>, B
 /// A piece of SDL parsed from the start of some text, with the length it took.
 pub enum Prefix {
     /// A directive other than the conditionals and loops (`#local`, `#write`, ...).
-    Directive(ast::Directive),
+    Directive(Rc<ast::Directive>),
     /// An expression.
     Expr(ast::Expr),
     /// An `#ifdef` target.
@@ -72,7 +72,7 @@ pub fn parse_prefix(
                 Rule::expr => Prefix::Expr(lowerer.expr(pair)),
                 Rule::full_expr => Prefix::Expr(lowerer.full_expression(pair)),
                 Rule::ifdef_target => Prefix::Target(lowerer.ifdef_target(pair)),
-                _ => Prefix::Directive(lowerer.directive_item(pair)),
+                _ => Prefix::Directive(Rc::new(lowerer.directive_item(pair))),
             };
             Ok((piece, length))
         }
