@@ -41,13 +41,35 @@ impl Emitted {
     }
 }
 
-/// A `#write(` whose argument list runs across directives, collected until its `)`.
-struct PendingWrite {
+/// A directive that runs across other directives, collected token by token until it is
+/// complete: a `#write(` until its `)`, a `#local`/`#declare` whose value is a block opened
+/// under an `#if` until that block's `}` (or a `;`).
+struct PendingDirective {
+    /// `write`, `local` or `declare`.
+    rule: Rule,
     emitted: Emitted,
-    /// Parentheses open in the collected text.
+    /// Parentheses (`#write`) or braces (declarations) open in the collected text.
     depth: usize,
-    /// The `#write` directive's span.
+    /// The directive word's span.
     span: Span,
+}
+
+impl PendingDirective {
+    /// Counts the brackets of `token`; returns whether it completes the directive.
+    fn completed_by(&mut self, token: &str) -> bool {
+        let (open, close) = if self.rule == Rule::write {
+            ("(", ")")
+        } else {
+            ("{", "}")
+        };
+        if token == open {
+            self.depth += 1;
+        } else if token == close && self.depth > 0 {
+            self.depth -= 1;
+            return self.depth == 0;
+        }
+        self.rule != Rule::write && self.depth == 0 && token == ";"
+    }
 }
 
 /// An open conditional or loop of the body, innermost last.
@@ -84,7 +106,7 @@ struct TextRun<'t> {
     position: usize,
     controls: Vec<Control>,
     emitted: Emitted,
-    write: Option<PendingWrite>,
+    pending: Option<PendingDirective>,
     /// Whether the last token emitted was `.` (a following word is a member, not a name).
     after_dot: bool,
     /// The hidden name and value last snapshotted for each name.
@@ -230,7 +252,7 @@ impl Evaluator {
             position: 0,
             controls: Vec::new(),
             emitted: Emitted::default(),
-            write: None,
+            pending: None,
             after_dot: false,
             snapshots: HashMap::new(),
             hidden_names: 0,
@@ -251,10 +273,10 @@ impl Evaluator {
                 break;
             }
         }
-        if let Some(write) = &run.write {
+        if let Some(pending) = &run.pending {
             return Err(self
-                .error(write.span, "`#write` is never closed")
-                .with_label("its `(` has no matching `)` before the macro ends")
+                .error(pending.span, "this directive is never completed")
+                .with_label("its arguments or value do not end before the macro does")
                 .into());
         }
         parse_generated(&run.emitted.text, &run.emitted.map).map_err(|mut d| {
@@ -264,8 +286,8 @@ impl Evaluator {
         })
     }
 
-    /// Appends a token to the emitted text (or to a pending `#write`), naming snapshots for
-    /// names bound to variables.
+    /// Appends a token to the emitted text (or to a pending directive, running it once it
+    /// is complete), naming snapshots for names bound to variables.
     fn emit(&mut self, run: &mut TextRun, token: Token) -> EvalResult<()> {
         let text = token.text(run.text);
         let hidden = if token.kind == TokenKind::Word && !run.after_dot {
@@ -276,37 +298,59 @@ impl Evaluator {
         run.after_dot = text == ".";
         let source = run.span(token.start, token.end);
         let shown = hidden.as_deref().unwrap_or(text);
-        let Some(write) = &mut run.write else {
+        let Some(pending) = &mut run.pending else {
             run.emitted.push(token, shown, source);
             return Ok(());
         };
-        write.emitted.push(token, shown, source);
-        match text {
-            "(" => write.depth += 1,
-            ")" => write.depth = write.depth.saturating_sub(1),
-            _ => {}
-        }
-        if write.depth > 0 {
+        pending.emitted.push(token, shown, source);
+        if !pending.completed_by(text) {
             return Ok(());
         }
-        let Some(write) = run.write.take() else {
+        let Some(pending) = run.pending.take() else {
             return Ok(());
         };
-        let (parsed, length) = self.traced(parse_prefix(
-            Rule::write,
-            &write.emitted.text,
-            &write.emitted.map,
-        ))?;
-        if length < write.emitted.text.len() {
+        let collected = &pending.emitted;
+        let (parsed, length) =
+            self.traced(parse_prefix(pending.rule, &collected.text, &collected.map))?;
+        if length < collected.text.trim_end().len() {
+            let rest = collected.map.span(length, collected.text.len());
             return Err(self
-                .error(
-                    write.span,
-                    "this `#write` is followed by more than its arguments",
-                )
-                .with_label("`#write` collected across directives")
+                .error(rest, "unexpected text after the directive")
+                .with_label("the directive, collected across other directives, ends before this")
+                .with_secondary(pending.span, "the directive")
                 .into());
         }
         self.run_whole_directive(&parsed)
+    }
+
+    /// Starts collecting the directive `token` (`rule`), which runs across other directives.
+    /// A declaration's target is copied as written (it names no value).
+    fn start_pending(&mut self, run: &mut TextRun, token: Token, rule: Rule) -> EvalResult<()> {
+        let span = run.span(token.start, token.end);
+        if run.pending.is_some() {
+            return Err(self
+                .error(span, "directive runs across directives inside another such directive")
+                .with_label("durer cannot collect this one")
+                .into());
+        }
+        let mut emitted = Emitted::default();
+        emitted.push(token, token.text(run.text), span);
+        if rule != Rule::write {
+            if let Some(target) = next_token(run.text, run.position)
+                .filter(|target| target.kind == TokenKind::Word)
+            {
+                let target_span = run.span(target.start, target.end);
+                emitted.push(target, target.text(run.text), target_span);
+                run.position = target.end;
+            }
+        }
+        run.pending = Some(PendingDirective {
+            rule,
+            emitted,
+            depth: 0,
+            span,
+        });
+        Ok(())
     }
 
     /// What to emit for `name`: its value written out when it is a finite number or vector,
@@ -388,32 +432,22 @@ impl Evaluator {
                 self.switch_label(run, word, span)?;
             }
             "break" => return Ok(self.text_break(run)),
-            "write" => {
-                match run.parse_at(Rule::write, token.start) {
-                    Ok((directive, length)) => {
-                        run.position = token.start + length;
-                        self.run_whole_directive(&directive)?;
-                    }
-                    Err(_) if run.write.is_none() => {
-                        // The argument list runs across directives: collect it.
-                        let mut emitted = Emitted::default();
-                        emitted.push(token, "#write", span);
-                        run.write = Some(PendingWrite {
-                            emitted,
-                            depth: 0,
-                            span,
-                        });
-                    }
-                    Err(d) => return Err(self.traced(Err(d))?),
-                }
-            }
             _ => {
                 let Some(rule) = directive_rule(word) else {
                     return Err(self.stray(span, word));
                 };
-                let (directive, length) = self.traced(run.parse_at(rule, token.start))?;
-                run.position = token.start + length;
-                self.run_whole_directive(&directive)?;
+                match run.parse_at(rule, token.start) {
+                    Ok((directive, length)) => {
+                        run.position = token.start + length;
+                        self.run_whole_directive(&directive)?;
+                    }
+                    // `#write(` whose arguments, or a declaration whose value, run across
+                    // directives: collect it.
+                    Err(_) if matches!(rule, Rule::write | Rule::local | Rule::declare) => {
+                        self.start_pending(run, token, rule)?
+                    }
+                    Err(d) => return Err(self.traced(Err(d))?),
+                }
             }
         }
         Ok(false)
