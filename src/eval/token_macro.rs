@@ -13,7 +13,7 @@ use super::stream::{for_continues, Stream};
 use super::value::Value;
 use super::{EvalResult, Evaluator, LOOP_ITERATION_LIMIT};
 use crate::diag::{Diagnostic, FileId, Span};
-use crate::syntax::ast::{Expr, Item};
+use crate::syntax::ast::{Expr, Item, MacroBody};
 use crate::syntax::mapping::OffsetMap;
 use crate::syntax::tokens::{next_token, skip_trivia, Token, TokenKind};
 use crate::syntax::{parse_generated, parse_prefix, Prefix, Rule};
@@ -25,19 +25,20 @@ use std::rc::Rc;
 struct Emitted {
     text: String,
     map: OffsetMap,
-    /// Body offset just past the last token emitted: a gap before the next one becomes a space.
-    last_end: Option<usize>,
+    /// Where the last token emitted ends in its file: a gap before the next one (or a token
+    /// from elsewhere) becomes a space.
+    last_end: Option<(FileId, u32)>,
 }
 
 impl Emitted {
-    /// Appends `text` standing for the body token `token` (at `source` in its file).
-    fn push(&mut self, token: Token, text: &str, source: Span) {
-        if self.last_end != Some(token.start) && !self.text.is_empty() {
+    /// Appends `text` standing for the source token at `source`.
+    fn push(&mut self, text: &str, source: Span) {
+        if self.last_end != Some((source.file, source.start)) && !self.text.is_empty() {
             self.text.push(' ');
         }
         self.map.record(self.text.len(), source);
         self.text.push_str(text);
-        self.last_end = Some(token.end);
+        self.last_end = Some((source.file, source.end));
     }
 }
 
@@ -96,8 +97,24 @@ enum Control {
     Switch,
 }
 
-/// The state of one text macro call.
-struct TextRun<'t> {
+/// What a text macro call emits, shared with the macro calls spliced into it.
+struct Sink {
+    emitted: Emitted,
+    pending: Option<PendingDirective>,
+    /// Whether the last token emitted was `.` (a following word is a member, not a name).
+    after_dot: bool,
+    /// The scope of the text macro call, where hidden names are bound.
+    bind_scope: usize,
+    hidden_names: usize,
+    /// What was parsed at each file offset, so loops and repeated calls parse once.
+    parsed: HashMap<(FileId, usize), Parsed>,
+}
+
+/// A piece parsed from a body and its length, or why it does not parse.
+type Parsed = Result<(Rc<Prefix>, usize), Box<Diagnostic>>;
+
+/// The state of running one macro body token by token.
+struct TextRun<'t, 's> {
     text: &'t str,
     file: FileId,
     /// File offset of the body's first byte.
@@ -105,21 +122,12 @@ struct TextRun<'t> {
     /// Body offset of the next token to read.
     position: usize,
     controls: Vec<Control>,
-    emitted: Emitted,
-    pending: Option<PendingDirective>,
-    /// Whether the last token emitted was `.` (a following word is a member, not a name).
-    after_dot: bool,
     /// The hidden name and value last snapshotted for each name.
     snapshots: HashMap<Rc<str>, (Rc<str>, Value)>,
-    hidden_names: usize,
-    /// What was parsed at each body offset, so loops parse their directives once.
-    parsed: HashMap<usize, Parsed>,
+    sink: &'s mut Sink,
 }
 
-/// A piece parsed from the body and its length, or why it does not parse.
-type Parsed = Result<(Rc<Prefix>, usize), Box<Diagnostic>>;
-
-impl TextRun<'_> {
+impl TextRun<'_, '_> {
     /// The file span of body bytes `start..end`.
     fn span(&self, start: usize, end: usize) -> Span {
         Span::new(self.file, self.base + start, self.base + end)
@@ -132,12 +140,13 @@ impl TextRun<'_> {
 
     /// Parses `rule` at body offset `start` (once per offset).
     fn parse_at(&mut self, rule: Rule, start: usize) -> Parsed {
-        if let Some(parsed) = self.parsed.get(&start) {
+        let key = (self.file, self.base + start);
+        if let Some(parsed) = self.sink.parsed.get(&key) {
             return parsed.clone();
         }
         let parsed = parse_prefix(rule, &self.text[start..], &self.map_from(start))
             .map(|(prefix, length)| (Rc::new(prefix), length));
-        self.parsed.insert(start, parsed.clone());
+        self.sink.parsed.insert(key, parsed.clone());
         parsed
     }
 
@@ -245,68 +254,125 @@ impl Evaluator {
     /// Runs a text macro's body (its arguments bound in the innermost scope) and returns the
     /// items it produced.
     pub(crate) fn expand_text_macro(&mut self, text: &str, span: Span) -> EvalResult<Rc<[Item]>> {
-        let mut run = TextRun {
-            text,
-            file: span.file,
-            base: span.start as usize,
-            position: 0,
-            controls: Vec::new(),
+        let mut sink = Sink {
             emitted: Emitted::default(),
             pending: None,
             after_dot: false,
-            snapshots: HashMap::new(),
+            bind_scope: self.scopes.len() - 1,
             hidden_names: 0,
             parsed: HashMap::new(),
         };
-        loop {
-            let Some(token) = next_token(text, run.position) else {
-                // The grammar ends every text body with its `#end`.
-                return Err(self
-                    .error(span, "macro body ends without `#end`")
-                    .with_label("this body")
-                    .into());
-            };
-            run.position = token.end;
-            if token.kind != TokenKind::Directive {
-                self.emit(&mut run, token)?;
-            } else if self.text_directive(&mut run, token)? {
-                break;
-            }
-        }
-        if let Some(pending) = &run.pending {
+        self.run_body(text, span, &mut sink)?;
+        if let Some(pending) = &sink.pending {
             return Err(self
                 .error(pending.span, "this directive is never completed")
                 .with_label("its arguments or value do not end before the macro does")
                 .into());
         }
-        parse_generated(&run.emitted.text, &run.emitted.map).map_err(|mut d| {
+        parse_generated(&sink.emitted.text, &sink.emitted.map).map_err(|mut d| {
             d.trace = self.trace_for_diagnostic();
             d.message = format!("in the text this macro produced: {}", d.message);
             d
         })
     }
 
+    /// Runs one macro body (`text`, at `span`) token by token into `sink`, up to its closing
+    /// `#end` or the end of the text.
+    fn run_body(&mut self, text: &str, span: Span, sink: &mut Sink) -> EvalResult<()> {
+        let mut run = TextRun {
+            text,
+            file: span.file,
+            base: span.start as usize,
+            position: 0,
+            controls: Vec::new(),
+            snapshots: HashMap::new(),
+            sink,
+        };
+        loop {
+            let Some(token) = next_token(text, run.position) else {
+                if run.controls.is_empty() {
+                    return Ok(());
+                }
+                return Err(self
+                    .error(span, "macro body ends inside a directive")
+                    .with_label("a directive here has no `#end`")
+                    .into());
+            };
+            run.position = token.end;
+            match token.kind {
+                TokenKind::Directive => {
+                    if self.text_directive(&mut run, token)? {
+                        return Ok(());
+                    }
+                }
+                TokenKind::Word if !run.sink.after_dot && self.is_macro_call(&run, token) => {
+                    self.splice_call(&mut run, token)?
+                }
+                _ => self.emit(&mut run, token)?,
+            }
+        }
+    }
+
+    /// Whether `token` names a macro and a `(` follows it.
+    fn is_macro_call(&self, run: &TextRun, token: Token) -> bool {
+        matches!(self.lookup(token.text(run.text)), Some(Value::Macro(_)))
+            && next_token(run.text, token.end).is_some_and(|next| next.text(run.text) == "(")
+    }
+
+    /// Runs a macro call met in a text body at once, as POV-Ray does: its arguments are
+    /// evaluated now and its body's tokens are spliced into the output (directives in it run
+    /// in order with the caller's).
+    fn splice_call(&mut self, run: &mut TextRun, token: Token) -> EvalResult<()> {
+        let (parsed, length) = self.traced(run.parse_at(Rule::call, token.start))?;
+        run.position = token.start + length;
+        let Prefix::Call(call) = &*parsed else {
+            return Ok(());
+        };
+        let definition = self.bind_macro_call(call)?;
+        let result = match &definition.body {
+            MacroBody::Text { text, span } => self.run_body(text, *span, run.sink),
+            MacroBody::Items(_, span) => {
+                let text = self
+                    .sources
+                    .file(span.file)
+                    .map(|file| file.text.clone())
+                    .and_then(|text| {
+                        text.get(span.start as usize..span.end as usize)
+                            .map(Rc::from)
+                    });
+                match text {
+                    Some(text) => self.run_body(&text, *span, run.sink),
+                    None => Err(self
+                        .error(call.span, "cannot find the text of this macro's body")
+                        .into()),
+                }
+            }
+        };
+        self.leave_macro_call();
+        result
+    }
+
     /// Appends a token to the emitted text (or to a pending directive, running it once it
     /// is complete), naming snapshots for names bound to variables.
     fn emit(&mut self, run: &mut TextRun, token: Token) -> EvalResult<()> {
         let text = token.text(run.text);
-        let hidden = if token.kind == TokenKind::Word && !run.after_dot {
+        let hidden = if token.kind == TokenKind::Word && !run.sink.after_dot {
             self.snapshot_name(run, text)
         } else {
             None
         };
-        run.after_dot = text == ".";
+        run.sink.after_dot = text == ".";
         let source = run.span(token.start, token.end);
         let shown = hidden.as_deref().unwrap_or(text);
-        let Some(pending) = &mut run.pending else {
-            run.emitted.push(token, shown, source);
+        let Some(pending) = &mut run.sink.pending else {
+            run.sink.emitted.push(shown, source);
             return Ok(());
         };
-        pending.emitted.push(token, shown, source);
+        pending.emitted.push(shown, source);
         if !pending.completed_by(text) {
             return Ok(());
         }
-        let Some(pending) = run.pending.take() else {
+        let Some(pending) = run.sink.pending.take() else {
             return Ok(());
         };
         let collected = &pending.emitted;
@@ -327,24 +393,26 @@ impl Evaluator {
     /// A declaration's target is copied as written (it names no value).
     fn start_pending(&mut self, run: &mut TextRun, token: Token, rule: Rule) -> EvalResult<()> {
         let span = run.span(token.start, token.end);
-        if run.pending.is_some() {
+        if run.sink.pending.is_some() {
             return Err(self
-                .error(span, "directive runs across directives inside another such directive")
+                .error(
+                    span,
+                    "directive runs across directives inside another such directive",
+                )
                 .with_label("durer cannot collect this one")
                 .into());
         }
         let mut emitted = Emitted::default();
-        emitted.push(token, token.text(run.text), span);
+        emitted.push(token.text(run.text), span);
         if rule != Rule::write {
-            if let Some(target) = next_token(run.text, run.position)
-                .filter(|target| target.kind == TokenKind::Word)
+            if let Some(target) =
+                next_token(run.text, run.position).filter(|target| target.kind == TokenKind::Word)
             {
-                let target_span = run.span(target.start, target.end);
-                emitted.push(target, target.text(run.text), target_span);
+                emitted.push(target.text(run.text), run.span(target.start, target.end));
                 run.position = target.end;
             }
         }
-        run.pending = Some(PendingDirective {
+        run.sink.pending = Some(PendingDirective {
             rule,
             emitted,
             depth: 0,
@@ -370,10 +438,10 @@ impl Evaluator {
             }
         }
         let value = value.clone();
-        let hidden: Rc<str> = Rc::from(format!("_text{}_{}", self.nesting, run.hidden_names));
-        run.hidden_names += 1;
-        let innermost = self.scopes.len() - 1;
-        self.scopes.insert(innermost, hidden.clone(), value.clone());
+        let hidden: Rc<str> = Rc::from(format!("_text_{}", run.sink.hidden_names));
+        run.sink.hidden_names += 1;
+        self.scopes
+            .insert(run.sink.bind_scope, hidden.clone(), value.clone());
         run.snapshots
             .insert(Rc::from(name), (hidden.clone(), value));
         Some(hidden)

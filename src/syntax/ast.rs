@@ -337,8 +337,9 @@ pub struct MacroDefinition {
 /// A macro's body: items, or text when its directives cut across braces.
 #[derive(Debug)]
 pub enum MacroBody {
-    /// A body with a tree shape.
-    Items(Rc<[Item]>),
+    /// A body with a tree shape, and where its items are in their file (the span lets a
+    /// text macro that calls this macro run its text token by token).
+    Items(Rc<[Item]>, Span),
     /// A body whose directives cut across braces (`#if (F) #write(..) #else mesh2 { #end`),
     /// kept as text up to and including its closing `#end`; it is run token by token.
     Text {

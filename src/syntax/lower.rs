@@ -52,6 +52,11 @@ impl<'m> Lowerer<'m> {
         self.directive(pair)
     }
 
+    /// Lowers a `call` pair.
+    pub fn macro_call(&self, pair: Pair<Rule>) -> Call {
+        self.call(pair)
+    }
+
     /// Lowers a `full_expr` pair.
     pub fn full_expression(&self, pair: Pair<Rule>) -> Expr {
         self.full_expr(pair)
@@ -563,12 +568,15 @@ impl<'m> Lowerer<'m> {
                 let header_span = span.join(self.span(&params));
                 let parameters = self.parameters(params);
                 let body = match inner.next() {
-                    Some(p) if p.as_rule() == Rule::items => MacroBody::Items(self.items(p)),
+                    Some(p) if p.as_rule() == Rule::items => {
+                        let span = self.span(&p);
+                        MacroBody::Items(self.items(p), span)
+                    }
                     Some(p) => MacroBody::Text {
                         span: self.span(&p),
                         text: Rc::from(p.as_str()),
                     },
-                    None => MacroBody::Items(Rc::from(Vec::new())),
+                    None => MacroBody::Items(Rc::from(Vec::new()), header_span),
                 };
                 DirectiveKind::Macro(Rc::new(MacroDefinition {
                     name: Rc::from(name.as_str()),

@@ -54,10 +54,12 @@ pub enum Prefix {
     Expr(ast::Expr),
     /// An `#ifdef` target.
     Target(ast::Target),
+    /// A call `Name(arguments)`.
+    Call(Rc<ast::Call>),
 }
 
 /// Parses the longest start of `text` that `rule` matches (a directive rule, `expr`,
-/// `full_expr` or `ifdef_target`); `map` leads offsets of `text` back to the source.
+/// `full_expr`, `ifdef_target` or `call`); `map` leads offsets of `text` back to the source.
 pub fn parse_prefix(
     rule: Rule,
     text: &str,
@@ -72,6 +74,7 @@ pub fn parse_prefix(
                 Rule::expr => Prefix::Expr(lowerer.expr(pair)),
                 Rule::full_expr => Prefix::Expr(lowerer.full_expression(pair)),
                 Rule::ifdef_target => Prefix::Target(lowerer.ifdef_target(pair)),
+                Rule::call => Prefix::Call(Rc::new(lowerer.macro_call(pair))),
                 _ => Prefix::Directive(Rc::new(lowerer.directive_item(pair))),
             };
             Ok((piece, length))
