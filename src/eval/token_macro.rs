@@ -478,7 +478,7 @@ impl Evaluator {
             },
             "end" => return self.text_end(run),
             "while" => {
-                let condition = self.text_expression(run, Rule::expr)?;
+                let condition = self.directive_operand(run)?;
                 if self.eval_condition(&condition)? {
                     run.controls.push(Control::While {
                         condition,
@@ -577,8 +577,20 @@ impl Evaluator {
 
     /// Parses and tests a condition at the run's position.
     fn text_condition(&mut self, run: &mut TextRun) -> EvalResult<bool> {
-        let condition = self.text_expression(run, Rule::expr)?;
+        let condition = self.directive_operand(run)?;
         self.eval_condition(&condition)
+    }
+
+    /// Parses the operand of `#if`, `#while`, `#switch` or `#case`: as in POV-Ray, just the
+    /// parenthesised expression when there is one (`#if (A) -1 #end` emits `-1`).
+    fn directive_operand(&mut self, run: &mut TextRun) -> EvalResult<Expr> {
+        let start = skip_trivia(run.text, run.position);
+        let rule = if run.text[start..].starts_with('(') {
+            Rule::paren
+        } else {
+            Rule::expr
+        };
+        self.text_expression(run, rule)
     }
 
     /// Reads the punctuation `expected` at the run's position.
@@ -738,7 +750,7 @@ impl Evaluator {
 
     /// `#switch (value)`: runs from the first `#case`/`#range` that holds, or the `#else`.
     fn text_switch(&mut self, run: &mut TextRun) -> EvalResult<()> {
-        let value = self.text_expression(run, Rule::expr)?;
+        let value = self.directive_operand(run)?;
         let value = self.eval_float(&value)?;
         loop {
             let label_start = run.position;
@@ -775,7 +787,7 @@ impl Evaluator {
         span: Span,
     ) -> EvalResult<(Expr, Option<Expr>)> {
         if word == "case" {
-            return Ok((self.text_expression(run, Rule::expr)?, None));
+            return Ok((self.directive_operand(run)?, None));
         }
         self.expect_punctuation(run, "(", span)?;
         let low = self.text_expression(run, Rule::full_expr)?;

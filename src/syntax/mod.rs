@@ -59,7 +59,7 @@ pub enum Prefix {
 }
 
 /// Parses the longest start of `text` that `rule` matches (a directive rule, `expr`,
-/// `full_expr`, `ifdef_target` or `call`); `map` leads offsets of `text` back to the source.
+/// `full_expr`, `paren`, `ifdef_target` or `call`); `map` leads offsets of `text` back to the source.
 pub fn parse_prefix(
     rule: Rule,
     text: &str,
@@ -73,6 +73,9 @@ pub fn parse_prefix(
             let piece = match rule {
                 Rule::expr => Prefix::Expr(lowerer.expr(pair)),
                 Rule::full_expr => Prefix::Expr(lowerer.full_expression(pair)),
+                Rule::paren => Prefix::Expr(
+                    lowerer.full_expression(pair.into_inner().next().expect("parenthesised")),
+                ),
                 Rule::ifdef_target => Prefix::Target(lowerer.ifdef_target(pair)),
                 Rule::call => Prefix::Call(Rc::new(lowerer.macro_call(pair))),
                 _ => Prefix::Directive(Rc::new(lowerer.directive_item(pair))),
