@@ -11,9 +11,9 @@
 
 use super::stream::{for_continues, Stream};
 use super::value::Value;
-use super::{EvalResult, Evaluator, LOOP_ITERATION_LIMIT};
+use super::{Entered, Entering, EvalResult, Evaluator, Scope, LOOP_ITERATION_LIMIT};
 use crate::diag::{Diagnostic, FileId, Span};
-use crate::syntax::ast::{Expr, Item, MacroBody};
+use crate::syntax::ast::{DirectiveKind, Expr, Item, MacroBody};
 use crate::syntax::mapping::OffsetMap;
 use crate::syntax::tokens::{next_token, skip_trivia, Token, TokenKind};
 use crate::syntax::{parse_generated, parse_prefix, Prefix, Rule};
@@ -235,7 +235,6 @@ fn directive_rule(word: &str) -> Option<Rule> {
         "declare" => Rule::declare,
         "local" => Rule::local,
         "undef" => Rule::undef,
-        "include" => Rule::include,
         "version" => Rule::version,
         "default" => Rule::default,
         "debug" => Rule::debug,
@@ -349,6 +348,36 @@ impl Evaluator {
             }
         };
         self.leave_macro_call();
+        result
+    }
+
+    /// Runs an included file token by token into `sink`, as POV-Ray reads it into the macro's
+    /// token stream (in its own scope, as any included file).
+    fn splice_include(&mut self, name: &str, span: Span, sink: &mut Sink) -> EvalResult<()> {
+        let path = self.find_file(name, span, "include file", "included here")?;
+        self.enter_nesting(span)?;
+        self.trace.push(Entered {
+            what: Entering::File(Rc::from(name)),
+            span,
+        });
+        let result = self.load_file(&path, Some(span)).and_then(|_| {
+            let key = path.canonicalize().unwrap_or_else(|_| path.clone());
+            let file = self.parsed.get(&key).map(|(file, _)| *file);
+            let text = file
+                .and_then(|file| self.sources.file(file))
+                .map(|f| f.text.clone());
+            let (Some(file), Some(text)) = (file, text) else {
+                return Err(self
+                    .error(span, format!("cannot find the text of `{name}`"))
+                    .into());
+            };
+            self.scopes.push(Scope::default());
+            let result = self.run_body(&text, Span::new(file, 0, text.len()), sink);
+            self.scopes.pop();
+            result
+        });
+        self.trace.pop();
+        self.nesting -= 1;
         result
     }
 
@@ -500,6 +529,16 @@ impl Evaluator {
                 self.switch_label(run, word, span)?;
             }
             "break" => return Ok(self.text_break(run)),
+            "include" => {
+                let (parsed, length) = self.traced(run.parse_at(Rule::include, token.start))?;
+                run.position = token.start + length;
+                if let Prefix::Directive(directive) = &*parsed {
+                    if let DirectiveKind::Include(name) = &directive.kind {
+                        let name = self.eval_string(name)?;
+                        self.splice_include(&name, directive.span, run.sink)?;
+                    }
+                }
+            }
             _ => {
                 let Some(rule) = directive_rule(word) else {
                     return Err(self.stray(span, word));
@@ -539,27 +578,13 @@ impl Evaluator {
         .into()
     }
 
-    /// Runs a directive parsed whole (`#local`, `#write`, `#include` ...) at once.
+    /// Runs a directive parsed whole (`#local`, `#write`, `#fopen` ...) at once.
     fn run_whole_directive(&mut self, parsed: &Prefix) -> EvalResult<()> {
         let Prefix::Directive(directive) = parsed else {
             return Ok(());
         };
-        let mut stream = Stream::empty();
-        self.run_directive(directive, &mut stream)?;
-        // A file included here may declare things, but its items have no place to go.
-        if let Some(item) = self.next_item(&mut stream)? {
-            while !stream.is_empty() {
-                self.unwind_frame(&mut stream);
-            }
-            return Err(self
-                .error(
-                    item.span(),
-                    "a file included inside a text macro may only declare",
-                )
-                .with_label("this item")
-                .into());
-        }
-        Ok(())
+        // None of these directives streams anything.
+        self.run_directive(directive, &mut Stream::empty())
     }
 
     /// Parses an expression at the run's position (`rule` is `expr` or `full_expr`).

@@ -85,3 +85,16 @@ Check((A = 1 & B = 2 & C = 3 & D = 4), "#write collects its arguments across dir
 Check((max_extent(Lensed).z < 1), "a declaration's block closed under a later #if")
 #declare Lensed = Lens(false)
 Check(Near(max_extent(Lensed).z, 0.5), "the declaration without the block")
+
+// An #include inside a text macro is read into its token stream: here it opens no block of
+// its own but fills the object the macro opened.
+#fopen Out "text_macros_row.tmp" write
+#write(Out, "sphere { <4, 0, 0>, 1 }\n")
+#fclose Out
+#macro Use(FromFile, Scale)
+  #if (FromFile) object { #include "text_macros_row.tmp" #else union { sphere { 0, 1 } #end scale Scale }
+#end
+#declare Used = Use(true, 2)
+Check(Near(max_extent(Used).x, 10), "an included file's items inside a text macro")
+#declare Used = Use(false, 2)
+Check(Near(max_extent(Used).x, 2), "the other branch of the include")
