@@ -1,27 +1,37 @@
 //! Macro calls: argument binding (by reference for plain identifiers), expansion in place
-//! as stream items, and evaluation as a single value inside expressions.
+//! as stream items (a text body is run token by token first, see `token_macro`), and
+//! evaluation as a single value inside expressions.
 
 use super::stream::Stream;
 use super::value::Value;
 use super::{Entered, Entering, EvalResult, Evaluator};
-use crate::syntax::ast::{Call, Expr, Item};
+use crate::syntax::ast::{Call, Expr, Item, MacroBody, MacroDefinition};
 use std::rc::Rc;
 
 impl Evaluator {
-    /// Expands a macro call in place: binds the arguments in a new scope and streams the body.
+    /// Expands a macro call in place: binds the arguments in a new scope and streams the body
+    /// (a text body is run token by token first and its output streamed).
     pub(crate) fn enter_macro(&mut self, call: &Rc<Call>, stream: &mut Stream) -> EvalResult<()> {
+        let definition = self.bind_macro_call(call)?;
+        let body = match &definition.body {
+            MacroBody::Items(items, _) => items.clone(),
+            MacroBody::Text { text, span } => match self.expand_text_macro(text, *span) {
+                Ok(items) => items,
+                Err(error) => {
+                    self.leave_macro_call();
+                    return Err(error);
+                }
+            },
+        };
+        stream.push_macro(body);
+        Ok(())
+    }
+
+    /// Starts a macro call: evaluates and binds its arguments in a new scope and records the
+    /// call in the trace (undone by [`Self::leave_macro_call`] or the stream's macro frame).
+    pub(crate) fn bind_macro_call(&mut self, call: &Rc<Call>) -> EvalResult<Rc<MacroDefinition>> {
         let Some(Value::Macro(definition)) = self.lookup(call.name).cloned() else {
             return Err(self.undefined(&call.name, call.name_span).into());
-        };
-        let Some(body) = definition.body.clone() else {
-            return Err(self
-                .error(call.span, format!("cannot run macro `{}`", definition.name))
-                .with_label("called here")
-                .with_secondary(
-                    definition.header_span,
-                    "its body mixes directives and braces in a way durer cannot follow",
-                )
-                .into());
         };
         let values = self.macro_arguments(call)?;
         let required = definition.parameters.iter().filter(|p| !p.optional).count();
@@ -52,8 +62,14 @@ impl Evaluator {
         });
         let names = definition.parameters.iter().map(|parameter| parameter.name);
         self.scopes.push(names.zip(values));
-        stream.push_macro(body);
-        Ok(())
+        Ok(definition)
+    }
+
+    /// Ends a macro call started by [`Self::bind_macro_call`]: drops its scope and trace entry.
+    pub(crate) fn leave_macro_call(&mut self) {
+        self.scopes.pop();
+        self.trace.pop();
+        self.nesting -= 1;
     }
 
     /// Evaluates a macro call's arguments in the caller's scope. Plain identifiers are passed

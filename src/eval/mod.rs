@@ -24,6 +24,7 @@ mod shapes;
 mod splines;
 mod stream;
 mod texture_maps;
+mod token_macro;
 mod value;
 mod view;
 

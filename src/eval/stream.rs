@@ -269,7 +269,11 @@ impl Evaluator {
     }
 
     /// Runs one directive, possibly pushing frames onto the stream.
-    fn run_directive(&mut self, directive: &Rc<Directive>, stream: &mut Stream) -> EvalResult<()> {
+    pub(crate) fn run_directive(
+        &mut self,
+        directive: &Rc<Directive>,
+        stream: &mut Stream,
+    ) -> EvalResult<()> {
         let span = directive.span;
         match &directive.kind {
             DirectiveKind::Declare {
@@ -484,7 +488,7 @@ impl Evaluator {
     }
 
     /// Whether `#ifdef` finds the target (an identifier or an assigned array element).
-    fn is_defined(&mut self, target: &crate::syntax::ast::Target) -> EvalResult<bool> {
+    pub(crate) fn is_defined(&mut self, target: &crate::syntax::ast::Target) -> EvalResult<bool> {
         let Some(value) = self.lookup(target.name).cloned() else {
             return Ok(false);
         };
@@ -577,7 +581,7 @@ pub(crate) fn array_offset(sizes: &[usize], indices: &[f64]) -> Option<usize> {
     Some(offset)
 }
 
-fn for_continues(value: f64, end: f64, step: f64) -> bool {
+pub(crate) fn for_continues(value: f64, end: f64, step: f64) -> bool {
     if step > 0.0 {
         value <= end + 1e-10
     } else {

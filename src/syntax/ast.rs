@@ -328,10 +328,26 @@ pub struct MacroDefinition {
     pub name: Name,
     /// Its parameters.
     pub parameters: Vec<Parameter>,
-    /// The body; `None` when it could not be given a tree shape.
-    pub body: Option<Rc<[Item]>>,
+    /// The body.
+    pub body: MacroBody,
     /// Span of the `#macro ... )` header.
     pub header_span: Span,
+}
+
+/// A macro's body: items, or text when its directives cut across braces.
+#[derive(Debug)]
+pub enum MacroBody {
+    /// A body with a tree shape, and where its items are in their file (the span lets a
+    /// text macro that calls this macro run its text token by token).
+    Items(Rc<[Item]>, Span),
+    /// A body whose directives cut across braces (`#if (F) #write(..) #else mesh2 { #end`),
+    /// kept as text up to and including its closing `#end`; it is run token by token.
+    Text {
+        /// The body's text.
+        text: Rc<str>,
+        /// Where the text is in its file.
+        span: Span,
+    },
 }
 
 /// A directive with its span.

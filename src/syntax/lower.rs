@@ -2,15 +2,17 @@
 
 use super::ast::*;
 use super::grammar::Rule;
+use super::mapping::OffsetMap;
 use crate::diag::{FileId, Span};
 use pest::iterators::Pair;
 use pest::pratt_parser::{Assoc, Op, PrattParser};
 use std::rc::Rc;
 use std::sync::OnceLock;
 
-/// Lowers pairs of one file into AST nodes.
-pub struct Lowerer {
+/// Lowers pairs of one file (or of generated text, through its offset map) into AST nodes.
+pub struct Lowerer<'m> {
     file: FileId,
+    map: Option<&'m OffsetMap>,
 }
 
 fn pratt() -> &'static PrattParser<Rule> {
@@ -23,15 +25,56 @@ fn pratt() -> &'static PrattParser<Rule> {
     })
 }
 
-impl Lowerer {
+impl<'m> Lowerer<'m> {
     /// A lowerer for the file with this id.
-    pub fn new(file: FileId) -> Lowerer {
-        Lowerer { file }
+    pub fn new(file: FileId) -> Lowerer<'m> {
+        Lowerer { file, map: None }
+    }
+
+    /// A lowerer for generated text whose offsets `map` leads back to source files.
+    pub fn mapped(map: &'m OffsetMap) -> Lowerer<'m> {
+        Lowerer {
+            file: 0,
+            map: Some(map),
+        }
     }
 
     fn span(&self, pair: &Pair<Rule>) -> Span {
         let s = pair.as_span();
-        Span::new(self.file, s.start(), s.end())
+        match self.map {
+            Some(map) => map.span(s.start(), s.end()),
+            None => Span::new(self.file, s.start(), s.end()),
+        }
+    }
+
+    /// Lowers one directive pair (`declare`, `write`, ...).
+    pub fn directive_item(&self, pair: Pair<Rule>) -> Directive {
+        self.directive(pair)
+    }
+
+    /// Lowers a `call` pair.
+    pub fn macro_call(&self, pair: Pair<Rule>) -> Call {
+        self.call(pair)
+    }
+
+    /// Lowers a `full_expr` pair.
+    pub fn full_expression(&self, pair: Pair<Rule>) -> Expr {
+        self.full_expr(pair)
+    }
+
+    /// Lowers an `ifdef_target` pair.
+    pub fn ifdef_target(&self, pair: Pair<Rule>) -> Target {
+        let span = self.span(&pair);
+        let mut inner = pair.into_inner();
+        let name = Name::from(inner.next().map(|p| p.as_str()).unwrap_or(""));
+        let indices = inner
+            .map(|p| self.full_expr(p.into_inner().next().expect("index")))
+            .collect();
+        Target {
+            name,
+            indices,
+            span,
+        }
     }
 
     /// Lowers an `items` pair.
@@ -442,18 +485,7 @@ impl Lowerer {
                 DirectiveKind::If { branches, end_span }
             }
             Rule::ifdef_directive | Rule::ifndef_directive => {
-                let target_pair = inner.next().expect("ifdef target");
-                let tspan = self.span(&target_pair);
-                let mut tinner = target_pair.into_inner();
-                let name = Name::from(tinner.next().map(|p| p.as_str()).unwrap_or(""));
-                let indices = tinner
-                    .map(|p| self.full_expr(p.into_inner().next().expect("index")))
-                    .collect();
-                let target = Target {
-                    name,
-                    indices,
-                    span: tspan,
-                };
+                let target = self.ifdef_target(inner.next().expect("ifdef target"));
                 let then = self.items(inner.next().expect("ifdef body"));
                 let (rest, _) = self.branches(inner);
                 DirectiveKind::IfDefined {
@@ -535,10 +567,17 @@ impl Lowerer {
                 let params = inner.next().expect("macro parameters");
                 let header_span = span.join(self.span(&params));
                 let parameters = self.parameters(params);
-                let body = inner.next().and_then(|p| match p.as_rule() {
-                    Rule::items => Some(self.items(p)),
-                    _ => None,
-                });
+                let body = match inner.next() {
+                    Some(p) if p.as_rule() == Rule::items => {
+                        let span = self.span(&p);
+                        MacroBody::Items(self.items(p), span)
+                    }
+                    Some(p) => MacroBody::Text {
+                        span: self.span(&p),
+                        text: Rc::from(p.as_str()),
+                    },
+                    None => MacroBody::Items(Rc::from(Vec::new()), header_span),
+                };
                 DirectiveKind::Macro(Rc::new(MacroDefinition {
                     name: Name::from(name.as_str()),
                     parameters,

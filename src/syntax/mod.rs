@@ -7,11 +7,14 @@ pub mod ast;
 mod grammar;
 pub mod keywords;
 mod lower;
+pub mod mapping;
+pub mod tokens;
 pub mod symbol;
 
 pub use grammar::{Rule, SdlParser};
 
 use crate::diag::{did_you_mean, Diagnostic, FileId, Span};
+use mapping::OffsetMap;
 use pest::Parser;
 use std::rc::Rc;
 
@@ -27,12 +30,78 @@ pub fn parse(text: &str, file: FileId) -> Result<Rc<[ast::Item]>, Box<Diagnostic
     }
 }
 
+/// Parses generated text (a text macro's expansion) into items; spans, including a syntax
+/// error's, point to where `map` says each piece came from.
+pub fn parse_generated(text: &str, map: &OffsetMap) -> Result<Rc<[ast::Item]>, Box<Diagnostic>> {
+    match SdlParser::parse(Rule::file, text) {
+        Ok(mut pairs) => {
+            let file_pair = pairs.next().expect("file rule");
+            let items = file_pair.into_inner().next().expect("items");
+            Ok(lower::Lowerer::mapped(map).items(items))
+        }
+        Err(error) => {
+            let mut d = syntax_diagnostic(text, 0, error);
+            d.span = map.span(d.span.start as usize, d.span.end as usize);
+            Err(Box::new(d))
+        }
+    }
+}
+
+/// A piece of SDL parsed from the start of some text, with the length it took.
+pub enum Prefix {
+    /// A directive other than the conditionals and loops (`#local`, `#write`, ...).
+    Directive(Rc<ast::Directive>),
+    /// An expression.
+    Expr(ast::Expr),
+    /// An `#ifdef` target.
+    Target(ast::Target),
+    /// A call `Name(arguments)`.
+    Call(Rc<ast::Call>),
+}
+
+/// Parses the longest start of `text` that `rule` matches (a directive rule, `expr`,
+/// `full_expr`, `paren`, `ifdef_target` or `call`); `map` leads offsets of `text` back to the source.
+pub fn parse_prefix(
+    rule: Rule,
+    text: &str,
+    map: &OffsetMap,
+) -> Result<(Prefix, usize), Box<Diagnostic>> {
+    match SdlParser::parse(rule, text) {
+        Ok(mut pairs) => {
+            let pair = pairs.next().expect("matched rule");
+            let length = pair.as_span().end();
+            let lowerer = lower::Lowerer::mapped(map);
+            let piece = match rule {
+                Rule::expr => Prefix::Expr(lowerer.expr(pair)),
+                Rule::full_expr => Prefix::Expr(lowerer.full_expression(pair)),
+                Rule::paren => Prefix::Expr(
+                    lowerer.full_expression(pair.into_inner().next().expect("parenthesised")),
+                ),
+                Rule::ifdef_target => Prefix::Target(lowerer.ifdef_target(pair)),
+                Rule::call => Prefix::Call(Rc::new(lowerer.macro_call(pair))),
+                _ => Prefix::Directive(Rc::new(lowerer.directive_item(pair))),
+            };
+            Ok((piece, length))
+        }
+        Err(error) => {
+            let mut d = pest_diagnostic(text, 0, error);
+            d.span = map.span(d.span.start as usize, d.span.end as usize);
+            Err(Box::new(d))
+        }
+    }
+}
+
 /// Turns a pest error into a diagnostic, preferring an unclosed brace or directive when the
 /// text has one (pest would report where the file ended instead).
 fn syntax_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) -> Diagnostic {
     if let Some(d) = unbalanced(text, file) {
         return d;
     }
+    pest_diagnostic(text, file, error)
+}
+
+/// Turns a pest error into a diagnostic at the place pest stopped.
+fn pest_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) -> Diagnostic {
     let offset = match error.location {
         pest::error::InputLocation::Pos(p) => p,
         pest::error::InputLocation::Span((s, _)) => s,

@@ -709,3 +709,51 @@ fn media_scattering_type_out_of_range_points_at_the_type() {
         &["scattering type must be 1 to 5", "Henyey-Greenstein"],
     );
 }
+
+#[test]
+fn errors_in_text_macro_output_point_into_the_body() {
+    check(
+        "text_macro_error",
+        3,
+        17,
+        &[
+            "undefined identifier `Radius`",
+            "in macro `Wall`, called at",
+            "text_macro_error.pov:6:10",
+        ],
+    );
+}
+
+/// A text macro whose output leaves a brace open is reported at that brace in the body.
+
+#[test]
+fn unbalanced_text_macro_output_points_at_the_open_brace() {
+    check(
+        "text_macro_unbalanced",
+        2,
+        20,
+        &[
+            "in the text this macro produced: unclosed `{`",
+            "in macro `Open`, called at",
+            "text_macro_unbalanced.pov:5:10",
+        ],
+    );
+}
+
+/// An error in a macro called from a text macro's loop shows both calls.
+
+#[test]
+fn errors_in_calls_from_text_macros_show_the_call_trace() {
+    check(
+        "text_macro_call",
+        2,
+        14,
+        &[
+            "cannot combine a float and a string",
+            "in macro `Bad`, called at",
+            "text_macro_call.pov:7:5",
+            "in macro `Rows`, called at",
+            "text_macro_call.pov:11:10",
+        ],
+    );
+}

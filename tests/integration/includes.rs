@@ -939,12 +939,17 @@ fn embedded_shape_queries_match_povray() {
     assert_eq!(ours, run(true));
 }
 
-/// Renders tests/stdlib/NAME.pov with durer's embedded files only and requires it to match
+/// Renders tests/stdlib/NAME.pov with durer's embedded files only (or, when `installed`,
+/// with POV-Ray's installed files, if there are any) and requires it to match
 /// tests/stdlib/NAME.png, POV-Ray's render (at most 2% of pixels over 24/255).
-fn stdlib_scene_renders_like_povray(name: &str) {
+fn stdlib_scene_renders_like_povray(name: &str, installed: bool) {
+    if installed && povray_include_folder().is_none() {
+        eprintln!("POV-Ray's include files are not installed; skipping {name} with them");
+        return;
+    }
     let path = crate::tests_folder().join(format!("stdlib/{name}.pov"));
     let options = durer::eval::EvalOptions {
-        search_installed_povray: false,
+        search_installed_povray: installed,
         ..Default::default()
     };
     let evaluated = evaluate_with(&path, options);
@@ -975,12 +980,14 @@ fn stdlib_scene_renders_like_povray(name: &str) {
     );
 }
 
-/// The HF_ macros, which durer cannot run from POV-Ray's shapes.inc (they interleave
-/// `#write` with braces), render tests/stdlib/shapes_hf.pov like POV-Ray did, and the
-/// meshes they write to files render like the ones they make directly.
+/// The HF_ macros render tests/stdlib/shapes_hf.pov like POV-Ray did, from durer's
+/// shapes.inc and from POV-Ray's (whose HF macros interleave `#write` argument lists and
+/// braces with directives: durer runs them token by token), and the meshes they write to
+/// files render like the ones they make directly.
 #[test]
 fn embedded_height_field_macros_render_like_povray() {
-    stdlib_scene_renders_like_povray("shapes_hf");
+    stdlib_scene_renders_like_povray("shapes_hf", false);
+    stdlib_scene_renders_like_povray("shapes_hf", true);
 
     let dir = scratch("hf-files");
     let ripple = "#declare Ripple = function (x, y, z) { sin(x * 5) * 0.1 + z * z * 0.2 }\n";
@@ -990,7 +997,13 @@ fn embedded_height_field_macros_render_like_povray() {
         "HF_Cylinder(Ripple, 0, 0, <8, 5>, 0, FILE, <1, -1, 0>, <1.4, 0, 0.3>, 0.5, 0.5)",
         "HF_Torus(Ripple, 1, 0, 12, 1, FILE, 0.8, 0.2, 0.5)",
     ];
-    for (index, call) in calls.iter().enumerate() {
+    let sources = [false, true]
+        .into_iter()
+        .filter(|installed| !installed || povray_include_folder().is_some());
+    for (index, (call, installed)) in sources
+        .flat_map(|installed| calls.iter().map(move |call| (call, installed)))
+        .enumerate()
+    {
         let includes = format!("#version 3.7;\n#include \"shapes.inc\"\n{ripple}");
         let direct = format!(
             "object {{ {} pigment {{ rgb <1, 0.6, 0.3> }} }}",
@@ -1001,8 +1014,20 @@ fn embedded_height_field_macros_render_like_povray() {
             "{}\nobject {{ #include \"{file}\" pigment {{ rgb <1, 0.6, 0.3> }} }}",
             call.replace("FILE", &format!("\"{file}\""))
         );
-        let a = render_shape_scene(&dir, &format!("direct{index}"), &includes, &direct, false);
-        let b = render_shape_scene(&dir, &format!("written{index}"), &includes, &written, false);
+        let a = render_shape_scene(
+            &dir,
+            &format!("direct{index}"),
+            &includes,
+            &direct,
+            installed,
+        );
+        let b = render_shape_scene(
+            &dir,
+            &format!("written{index}"),
+            &includes,
+            &written,
+            installed,
+        );
         let differing = a
             .pixels
             .iter()
@@ -1252,11 +1277,13 @@ fn embedded_shapes3_macros_render_like_povray() {
     );
 }
 
-/// The shapes3.inc macros durer cannot run from POV-Ray's file render
-/// tests/stdlib/shapes3.pov with durer's file like POV-Ray did with its own.
+/// The shapes3.inc macros whose POV-Ray text opens and closes braces under separate
+/// `#if`s render tests/stdlib/shapes3.pov like POV-Ray did, with durer's file and with
+/// POV-Ray's (run token by token).
 #[test]
 fn embedded_shapes3_segments_and_tubes_render_like_povray() {
-    stdlib_scene_renders_like_povray("shapes3");
+    stdlib_scene_renders_like_povray("shapes3", false);
+    stdlib_scene_renders_like_povray("shapes3", true);
 }
 
 /// Calls of makegrass.inc's MakeBlade (inside a mesh) and MakePrairie, plain and smooth,
@@ -1295,14 +1322,24 @@ fn embedded_makegrass_blades_render_like_povray() {
 
 /// MakeGrassPatch writes the mesh files POV-Ray wrote for tests/stdlib/makegrass.pov (same
 /// random blades, numbers equal to the printed precision), and without a file it makes the
-/// mesh it would have written.
+/// mesh it would have written: with durer's makegrass.inc and with POV-Ray's (a text macro:
+/// its `mesh {` and `}` are under separate `#if`s, its blades' `#write`s run in order).
 #[test]
 fn embedded_makegrass_patches_match_povray() {
+    makegrass_patches_match_povray(false);
+    if povray_include_folder().is_some() {
+        makegrass_patches_match_povray(true);
+    }
+}
+
+/// The checks of [`embedded_makegrass_patches_match_povray`] with durer's makegrass.inc, or
+/// POV-Ray's when `installed`.
+fn makegrass_patches_match_povray(installed: bool) {
     let folder = crate::tests_folder().join("stdlib");
-    let probe = scratch("makegrass-probe");
+    let probe = scratch(&format!("makegrass-probe-{installed}"));
     let scene = probe.join("makegrass.pov");
     std::fs::copy(folder.join("makegrass.pov"), &scene).expect("copy probe scene");
-    evaluate_cleanly(&scene, false, "makegrass.inc");
+    evaluate_cleanly(&scene, installed, "makegrass.inc");
     let words = |text: &str| -> Vec<String> {
         text.lines()
             .map(|line| line.replace([',', '<', '>', '{', '}'], " "))
@@ -1324,7 +1361,7 @@ fn embedded_makegrass_patches_match_povray() {
         }
     }
 
-    let dir = scratch("makegrass-patch");
+    let dir = scratch(&format!("makegrass-patch-{installed}"));
     let includes = "#version 3.7;\n#include \"makegrass.inc\"\n";
     let call = "MakeGrassPatch(2, 4, 60, 5, 1.5, 0.1, 0.03, true, <0, 1, 0.3>, <0, -1, 2>, 3, 459, 1, 360, 3, 0.5, true, FILE, NAME)";
     let direct = format!(
@@ -1336,8 +1373,8 @@ fn embedded_makegrass_patches_match_povray() {
         call.replace("FILE", "true")
             .replace("NAME", "\"patch.inc\"")
     );
-    let a = render_shape_scene(&dir, "direct", includes, &direct, false);
-    let b = render_shape_scene(&dir, "written", includes, &written, false);
+    let a = render_shape_scene(&dir, "direct", includes, &direct, installed);
+    let b = render_shape_scene(&dir, "written", includes, &written, installed);
     let differing = a
         .pixels
         .iter()
@@ -1347,5 +1384,40 @@ fn embedded_makegrass_patches_match_povray() {
     assert!(
         differing * 50 <= a.pixels.len(),
         "the written patch renders unlike the direct one"
+    );
+}
+
+/// meshmaker.inc's macros render tests/stdlib/meshmaker.pov like POV-Ray did (POV-Ray's
+/// text: BuildWriteMesh2 interleaves `#write` argument lists and `mesh2 {` with directives),
+/// and a mesh written to a file renders, read back, like the one made directly.
+#[test]
+fn meshmaker_macros_render_like_povray() {
+    stdlib_scene_renders_like_povray("meshmaker", true);
+    if povray_include_folder().is_none() {
+        return;
+    }
+    let dir = scratch("meshmaker-files");
+    let includes = "#version 3.7;\n#include \"meshmaker.inc\"\n\
+        #declare Wave = function(u, v) { sin(u * 3) * 0.3 + v * v * 0.1 }\n";
+    let call = "TwoVarSurf(Wave, <-1, 1>, <-1, 1>, 12, 10, FILE)";
+    let direct = format!(
+        "object {{ {} pigment {{ rgb <1, 0.6, 0.3> }} }}",
+        call.replace("FILE", "\"\"")
+    );
+    let written = format!(
+        "object {{ {} pigment {{ rgb <1, 0.6, 0.3> }} }}",
+        call.replace("FILE", "\"surface.inc\"")
+    );
+    let a = render_shape_scene(&dir, "direct", includes, &direct, true);
+    // The first run writes surface.inc, the second reads it back.
+    let b = render_shape_scene(&dir, "written", includes, &written, true);
+    let c = render_shape_scene(&dir, "read", includes, &written, true);
+    assert!(
+        dir.join("surface.inc").is_file(),
+        "TwoVarSurf wrote no file"
+    );
+    assert!(
+        a == b && b == c,
+        "the written surface renders unlike the direct one"
     );
 }

@@ -1,9 +1,9 @@
-// The shapes3.inc macros whose POV-Ray text durer cannot run (it opens and closes braces
+// The shapes3.inc macros whose POV-Ray text is a text macro (it opens and closes braces
 // under separate #if directives): segments of objects, tube rings and tori, round tube
 // polygons and round cylinder tubes, each with a few argument sets, on a 4 x 4 grid.
 // shapes3.png is POV-Ray 3.7's render with its own shapes3.inc, made like the reference
 // images (povray -D +Ishapes3.pov +Oshapes3.png +W160 +H120 +WT1 -GA); the includes test
-// renders this scene with durer's embedded shapes3.inc and compares.
+// renders this scene with durer's embedded shapes3.inc and with POV-Ray's and compares.
 #version 3.7;
 #include "shapes3.inc"
 camera { location <0, 0, -24> look_at <0, 0, 0> angle 40 }

@@ -2,7 +2,7 @@
 // and without smoothing, their heights from a function of the point or of (u, v).
 // shapes_hf.png is POV-Ray 3.7's render with its own shapes.inc, made like the reference
 // images (povray -D +Ishapes_hf.pov +Oshapes_hf.png +W160 +H120 +WT1 -GA); the includes
-// test renders this scene with durer's embedded shapes.inc and compares.
+// test renders this scene with durer's embedded shapes.inc and with POV-Ray's and compares.
 #version 3.7;
 #include "shapes.inc"
 global_settings { assumed_gamma 1 }

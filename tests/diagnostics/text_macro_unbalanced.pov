@@ -1,0 +1,5 @@
+#macro Open(Flag)
+  #if (Flag) union { #else merge { #end
+    sphere { 0, 1 }
+#end
+object { Open(true) }
