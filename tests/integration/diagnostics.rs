@@ -669,3 +669,13 @@ fn tiling_number_out_of_range_is_refused() {
         &["the tiling number must be between 1 and 27", "this is 28"],
     );
 }
+
+#[test]
+fn pavement_pattern_out_of_range_names_the_count() {
+    check(
+        "pavement_pattern_out_of_range",
+        2,
+        77,
+        &["`pattern` of this pavement must be between 1 and 2"],
+    );
+}

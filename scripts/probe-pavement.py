@@ -1,0 +1,164 @@
+#!/usr/bin/env python3
+"""Measure POV-Ray 3.7's `pavement` pattern: the pavings' layouts and known answers.
+
+`tables`: for every square paving (number_of_tiles 1-6, every pattern) finds which unit
+edges are tile borders (a border edge's midpoint has the value 1), finds the smallest
+rectangle the paving repeats over and prints the SQUARE_PAVINGS table of
+src/pattern/pavement.rs (per cell: bit 0 bottom edge, bit 1 left edge).
+
+`answers`: evaluates every paving at seeded random points under random form / exterior /
+interior settings and writes src/pattern/pavement_answers.txt, one line per point:
+`sides tiles pattern form exterior interior x z value`; the unit tests in pavement.rs
+compare against it.
+
+Values come from `pigment { pavement .. color_map { [0 rgb 0] [1 rgb 1] } }` read through a
+pigment function (.red, single precision), one povray run per paving (+W1 +H1, #debug).
+
+usage: scripts/probe-pavement.py tables | answers [--output PATH]
+"""
+import argparse
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DEFAULT_OUTPUT = os.path.join(HERE, "..", "src", "pattern", "pavement_answers.txt")
+
+# Patterns per number of tiles (manual, "Pavement Pattern"), by number of sides.
+PATTERN_COUNTS = {
+    3: [1, 1, 1, 3, 4, 12],
+    4: [1, 1, 2, 5, 12, 35],
+    6: [1, 1, 3, 7, 22],
+}
+# The polygons durer computes; the others are left out of the answers.
+MEASURED_SIDES = [4]
+# Edges sampled per axis when looking for a square paving's period.
+WINDOW = 36
+
+
+def evaluate(spec, points):
+    """The pavement's values at the (x, y, z) points, from one povray run."""
+    lines = [
+        "#version 3.7;\n",
+        "#declare F_ = function { pigment { %s color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+        % spec,
+    ]
+    for point in points:
+        lines.append('#debug concat("PROBE ", str(F_(%r, %r, %r).red, 0, 9), "\\n")\n' % point)
+    handle, path = tempfile.mkstemp(suffix=".pov")
+    try:
+        with os.fdopen(handle, "w") as scene:
+            scene.write("".join(lines))
+        result = subprocess.run(
+            ["povray", "-D", "+I" + path, "+W1", "+H1", "-F", "-O/dev/null"],
+            capture_output=True,
+            text=True,
+            check=False,
+        )
+    finally:
+        os.unlink(path)
+    values = [
+        float(line.split()[1])
+        for line in result.stderr.splitlines()
+        if line.startswith("PROBE ")
+    ]
+    if len(values) != len(points):
+        sys.exit("povray failed on %s:\n%s" % (spec, result.stderr[-2000:]))
+    return values
+
+
+def spec_of(sides, tiles, pattern, form=0, exterior=0, interior=0):
+    return (
+        "pavement number_of_sides %d number_of_tiles %d pattern %d form %d exterior %d "
+        "interior %d" % (sides, tiles, pattern, form, exterior, interior)
+    )
+
+
+def square_borders(tiles, pattern):
+    """{(kind, x, z): is a border} for the unit edges of a WINDOW x WINDOW square of cells;
+    kind 'h' is the edge from (x, z) to (x + 1, z), 'v' the edge from (x, z) to (x, z + 1)."""
+    keys, points = [], []
+    for z in range(WINDOW):
+        for x in range(WINDOW):
+            keys.append(("h", x, z))
+            points.append((x + 0.5, 0.0, float(z)))
+            keys.append(("v", x, z))
+            points.append((float(x), 0.0, z + 0.5))
+    values = evaluate(spec_of(4, tiles, pattern), points)
+    return {key: value > 0.999 for key, value in zip(keys, values)}
+
+
+def period(borders, along_x):
+    """The smallest shift along x (or z) that maps the sampled borders onto themselves."""
+    for shift in range(1, WINDOW // 2 + 1):
+        if all(
+            borders[(kind, x + shift, z) if along_x else (kind, x, z + shift)] == border
+            for (kind, x, z), border in borders.items()
+            if (x + shift if along_x else z + shift) < WINDOW
+        ):
+            return shift
+    sys.exit("no period found within %d cells" % WINDOW)
+
+
+def print_tables():
+    print("const SQUARE_PAVINGS: [&[&[&str]]; 6] = [")
+    for tiles, count in enumerate(PATTERN_COUNTS[4], start=1):
+        print("    // %d square%s" % (tiles, "" if tiles == 1 else "s"))
+        print("    &[")
+        for pattern in range(1, count + 1):
+            borders = square_borders(tiles, pattern)
+            width, height = period(borders, True), period(borders, False)
+            rows = [
+                "".join(
+                    str(int(borders[("h", x, z)]) + 2 * int(borders[("v", x, z)]))
+                    for x in range(width)
+                )
+                for z in range(height)
+            ]
+            print("        &[%s]," % ", ".join('"%s"' % row for row in rows))
+        print("    ],")
+    print("];")
+
+
+def write_answers(output):
+    rng = random.Random(1963)
+    rows = []
+    for sides in MEASURED_SIDES:
+        forms = 4 if sides == 4 else 3
+        for tiles, count in enumerate(PATTERN_COUNTS[sides], start=1):
+            for pattern in range(1, count + 1):
+                for _ in range(3):
+                    settings = (rng.randrange(forms), rng.randrange(3), rng.randrange(3))
+                    points = [
+                        (round(rng.uniform(-12, 12), 6), 0.0, round(rng.uniform(-12, 12), 6))
+                        for _ in range(8)
+                    ]
+                    values = evaluate(spec_of(sides, tiles, pattern, *settings), points)
+                    for (x, _, z), value in zip(points, values):
+                        rows.append(
+                            "%d %d %d %d %d %d %r %r %.9g\n"
+                            % ((sides, tiles, pattern) + settings + (x, z, value))
+                        )
+    with open(output, "w") as table:
+        table.write(
+            "# sides tiles pattern form exterior interior x z value: POV-Ray 3.7 pavement\n"
+        )
+        table.write("# written by scripts/probe-pavement.py answers\n")
+        table.writelines(rows)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("mode", choices=["tables", "answers"])
+    parser.add_argument("--output", default=DEFAULT_OUTPUT)
+    args = parser.parse_args()
+    if args.mode == "tables":
+        print_tables()
+    else:
+        write_answers(args.output)
+
+
+if __name__ == "__main__":
+    main()

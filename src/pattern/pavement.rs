@@ -1,0 +1,443 @@
+//! The `pavement` pattern: the x-z plane paved with copies of one polyform tile (a shape
+//! made of joined unit squares, equilateral triangles or hexagons), each tile shaded from 1
+//! on its border to 0 half a cell inside.
+//!
+//! In: a pattern-space point (y is ignored) and the pavement settings. Out: the value in
+//! [0, 1]. Holds: static tables of the measured pavings, no allocation.
+//!
+//! Measured against POV-Ray 3.7 (scripts/probe-pavement.py: `pigment { pavement .. }`
+//! through a black-to-white colour map, sampled with `#debug`):
+//! - Squares are the integer lattice. Each paving repeats over a rectangle of cells; the
+//!   tables below give, for every cell of that rectangle, whether its bottom edge and its
+//!   left edge are tile borders.
+//! - The value is `1 - 2 d`, clamped to [0, 1], where `d` is a distance to the tile's border
+//!   measured in the quarter of the cell around the point (every border farther away gives
+//!   a value of 0 anyway). Along a border edge `d` is the distance to that edge.
+//! - At a convex corner (both cell edges at the corner are borders) `exterior` shapes the
+//!   corner: 0 square (`d` is the distance to the nearer edge), 1 cut by the line through
+//!   the two half-edge midpoints (`d = u + w - 1/2`), 2 rounded about the cell's centre.
+//! - At a concave corner (neither cell edge is a border but the corner is on the border)
+//!   `interior` picks the distance to the corner point: 0 Chebyshev, 1 Manhattan,
+//!   2 Euclidean.
+//! - A cell where the tile turns (exactly two adjacent border edges, the opposite corner
+//!   concave) follows `form` as a whole: 0 square inside and out (whatever `exterior` and
+//!   `interior` say), 1 the middle line cut straight across the turn, 2 the middle line a
+//!   quarter circle about the concave corner; 3 treats the cell like any other, so the
+//!   corners follow `exterior` and `interior`.
+//! - Settings are truncated to integers and wrap like unsigned numbers: `form` modulo 4,
+//!   `exterior` and `interior` modulo 3 (so -1 gives 3 and 0).
+
+/// The pavings of unit squares, by number of squares per tile (1 to 6) and pattern number
+/// (from 1). Each paving is its repeating rectangle of cells, one string per row from
+/// z = 0 upwards, one digit per cell from x = 0: bit 0 set when the cell's bottom edge is a
+/// border, bit 1 when its left edge is.
+#[rustfmt::skip]
+const SQUARE_PAVINGS: [&[&[&str]]; 6] = [
+    // 1 square
+    &[
+        &["3"],
+    ],
+    // 2 squares
+    &[
+        &["3", "2"],
+    ],
+    // 3 squares
+    &[
+        &["311"],
+        &["331", "212"],
+    ],
+    // 4 squares
+    &[
+        &["3111"],
+        &["3311", "2112"],
+        &["3112", "1231"],
+        &["31", "20"],
+        &["13", "30", "31", "03"],
+    ],
+    // 5 squares
+    &[
+        &["31111"],
+        &["33111", "21112"],
+        &["13131", "30020", "31131", "20300", "31311", "00203", "11313", "03002", "13113", "02030"],
+        &["31112", "11231", "23111", "11123", "12311"],
+        &["30123", "12330", "33012", "01233", "23301"],
+        &["3221131122", "2211311223", "2113112232", "1131122322", "1311223221", "3112232211", "1122322113", "1223221131", "2232211311", "2322113112"],
+        &["2321213121", "3212131212", "2121312123", "1213121232", "2131212321", "1312123212", "3121232121", "1212321213", "2123212131", "1232121312"],
+        &["3112323210", "2323210311", "3210311232", "0311232321", "1232321031", "2321031123", "1031123232", "1123232103", "3232103112", "2103112323"],
+        &["32112", "21123", "11232", "12321", "23211"],
+        &["33012", "21123", "12330", "23211", "30123", "11232", "23301", "32112", "01233", "12321"],
+        &["13113", "30310", "31311", "03031", "13131", "10303", "11313", "31030", "31131", "03103"],
+        &["3113012232", "3231130122", "2232311301", "0122323113", "1301223231"],
+    ],
+    // 6 squares
+    &[
+        &["311111"],
+        &["311113", "231110"],
+        &["311113", "123110"],
+        &["311113", "112310"],
+        &["303111", "130311", "113031", "111303", "311130", "031113"],
+        &["311131", "203100"],
+        &["131311", "300120"],
+        &["310311", "131031", "113103", "311310", "031131", "103113"],
+        &["131", "300"],
+        &["311", "200"],
+        &["3311", "2120", "2012"],
+        &["311212", "112123", "121231", "212311", "123112", "231121"],
+        &["3111", "3232", "2101"],
+        &["311", "123", "221", "013"],
+        &["310", "320", "031", "032", "103", "203"],
+        &["330120", "012033", "203301"],
+        &["301132", "323101", "011323", "231013", "113230", "310132", "132301", "101323", "323011", "013231", "230113", "132310"],
+        &["323110", "211132", "231103", "111322", "311032", "113221", "110323", "132211", "103231", "322111", "032311", "221113"],
+        &["321122", "211223", "112232", "122321", "223211", "232112"],
+        &["231103", "323110", "032311", "103231", "110323", "311032"],
+        &["223111", "122311", "112231", "111223", "311122", "231112"],
+        &["3111", "2332", "1021"],
+        &["2301", "2112", "3232"],
+        &["313102", "321121", "023131", "213211", "310231", "112132"],
+        &["31", "12", "21"],
+        &["31", "20", "12"],
+        &["31", "03", "21"],
+        &["321121", "211213", "112132", "121321", "213211", "132112"],
+        &["312321", "121031", "213123", "311210", "232131", "103112"],
+        &["132112", "301231", "112132", "231301"],
+        &["310132", "231103", "132310", "103231"],
+        &["323101", "013231", "310132"],
+        &["311", "312", "230", "211"],
+        &["301132323110", "231103011323", "113232311030", "110301132323", "323231103011", "030113232311", "323110301132", "011323231103", "311030113232", "132323110301", "103011323231", "232311030113"],
+        &["2310", "2112", "2332", "1023", "1221", "3223"],
+    ],
+];
+
+/// The basic polygon a pavement tile is made of (`number_of_sides`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PavementPolygon {
+    /// Equilateral triangles (`number_of_sides 3`, the default).
+    Triangle,
+    /// Unit squares (`number_of_sides 4`).
+    Square,
+    /// Hexagons (`number_of_sides 6`).
+    Hexagon,
+}
+
+impl PavementPolygon {
+    /// The polygon for a `number_of_sides` value; `None` for anything but 3, 4 or 6.
+    pub fn from_sides(sides: f64) -> Option<Self> {
+        match sides.trunc() {
+            3.0 => Some(Self::Triangle),
+            4.0 => Some(Self::Square),
+            6.0 => Some(Self::Hexagon),
+            _ => None,
+        }
+    }
+
+    /// The largest `number_of_tiles` allowed: 6, or 5 for hexagons (not every tile of six
+    /// hexagons paves the plane).
+    pub fn max_tiles(self) -> u8 {
+        match self {
+            Self::Hexagon => 5,
+            Self::Triangle | Self::Square => 6,
+        }
+    }
+
+    /// How many patterns there are for tiles of `tiles` polygons (manual, "Pavement
+    /// Pattern"); 0 when `tiles` is out of range.
+    pub fn pattern_count(self, tiles: u8) -> u8 {
+        const TRIANGLES: [u8; 6] = [1, 1, 1, 3, 4, 12];
+        const HEXAGONS: [u8; 5] = [1, 1, 3, 7, 22];
+        let index = usize::from(tiles).wrapping_sub(1);
+        match self {
+            Self::Triangle => TRIANGLES.get(index).copied().unwrap_or(0),
+            Self::Square => SQUARE_PAVINGS.get(index).map_or(0, |p| p.len() as u8),
+            Self::Hexagon => HEXAGONS.get(index).copied().unwrap_or(0),
+        }
+    }
+
+    /// Whether durer computes this polygon's pavings (the others give 0).
+    pub fn is_supported(self) -> bool {
+        self == Self::Square
+    }
+}
+
+/// The settings of one `pavement` pattern.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pavement {
+    /// `number_of_sides`.
+    pub polygon: PavementPolygon,
+    /// `number_of_tiles`: polygons per tile, 1 to [`PavementPolygon::max_tiles`].
+    pub tiles: u8,
+    /// `pattern`: which tile of that size, from 1 to [`PavementPolygon::pattern_count`].
+    pub pattern: u8,
+    /// `form`: how the tile turns (see the module header).
+    pub form: u8,
+    /// `exterior`: how convex corners look.
+    pub exterior: u8,
+    /// `interior`: how concave corners look.
+    pub interior: u8,
+}
+
+impl Default for Pavement {
+    /// POV-Ray's defaults: single triangles, everything else 0.
+    fn default() -> Self {
+        Self {
+            polygon: PavementPolygon::Triangle,
+            tiles: 1,
+            pattern: 1,
+            form: 0,
+            exterior: 0,
+            interior: 0,
+        }
+    }
+}
+
+/// A corner setting as POV-Ray reads it: truncated, wrapped like an unsigned 32-bit number,
+/// then taken modulo `choices`.
+pub fn corner_setting(value: f64, choices: u32) -> u8 {
+    let truncated = if value.is_finite() {
+        value.trunc()
+    } else {
+        0.0
+    };
+    ((truncated as i64 as u32) % choices) as u8
+}
+
+impl Pavement {
+    /// The value in [0, 1] at pattern-space point `p`.
+    pub fn value(&self, x: f64, z: f64) -> f64 {
+        match self.polygon {
+            PavementPolygon::Square => self.square_value(x, z),
+            PavementPolygon::Triangle | PavementPolygon::Hexagon => 0.0,
+        }
+    }
+
+    /// The value of a square paving.
+    fn square_value(&self, x: f64, z: f64) -> f64 {
+        let Some(rows) = usize::from(self.tiles)
+            .checked_sub(1)
+            .and_then(|tiles| SQUARE_PAVINGS.get(tiles))
+            .and_then(|pavings| pavings.get(usize::from(self.pattern).saturating_sub(1)))
+        else {
+            return 0.0;
+        };
+        let grid = SquareGrid { rows };
+        let (cell_x, cell_z) = (x.floor(), z.floor());
+        let (u, w) = (x - cell_x, z - cell_z);
+        let column = cell_x.rem_euclid(grid.width() as f64) as usize % grid.width();
+        let row = cell_z.rem_euclid(grid.height() as f64) as usize % grid.height();
+        let cell = grid.cell(column, row);
+        if self.form != 3 {
+            if let Some(value) = self.turn_value(&grid, &cell, u, w) {
+                return value;
+            }
+        }
+        // The quarter of the cell the point is in: its corner and the distances from it.
+        let (right, du) = if u < 0.5 { (false, u) } else { (true, 1.0 - u) };
+        let (top, dw) = if w < 0.5 { (false, w) } else { (true, 1.0 - w) };
+        let horizontal_border = if top { cell.top } else { cell.bottom };
+        let vertical_border = if right { cell.right } else { cell.left };
+        let distance = match (horizontal_border, vertical_border) {
+            (true, true) => match self.exterior {
+                0 => du.min(dw),
+                1 => (du + dw - 0.5).max(0.0),
+                _ => (0.5 - (0.5 - du).hypot(0.5 - dw)).max(0.0),
+            },
+            (true, false) => dw,
+            (false, true) => du,
+            (false, false) if grid.corner_is_concave(column, row, right, top) => {
+                match self.interior {
+                    0 => du.max(dw),
+                    1 => du + dw,
+                    _ => du.hypot(dw),
+                }
+            }
+            (false, false) => 0.5,
+        };
+        (1.0 - 2.0 * distance).clamp(0.0, 1.0)
+    }
+
+    /// In a cell where the tile turns (two adjacent border edges, the opposite corner
+    /// concave), the value `form` 0, 1 or 2 gives; `None` for other cells.
+    fn turn_value(&self, grid: &SquareGrid, cell: &SquareCell, u: f64, w: f64) -> Option<f64> {
+        let borders = [cell.bottom, cell.top, cell.left, cell.right];
+        if borders.iter().filter(|&&border| border).count() != 2
+            || cell.bottom == cell.top
+            || cell.left == cell.right
+        {
+            return None;
+        }
+        // s and t: distances from the two border edges; the concave candidate is (1, 1).
+        let s = if cell.left { u } else { 1.0 - u };
+        let t = if cell.bottom { w } else { 1.0 - w };
+        if !grid.corner_is_concave(cell.column, cell.row, cell.left, cell.bottom) {
+            return None;
+        }
+        let value = match self.form {
+            1 => 2.0 * (s + t - 1.5).abs(),
+            2 => 2.0 * ((1.0 - s).hypot(1.0 - t) - 0.5).abs(),
+            _ => 1.0 - 2.0 * s.min(t).min((1.0 - s).max(1.0 - t)),
+        };
+        Some(value.clamp(0.0, 1.0))
+    }
+}
+
+/// One repeating rectangle of a square paving.
+struct SquareGrid {
+    /// The rows of border digits (see [`SQUARE_PAVINGS`]).
+    rows: &'static [&'static str],
+}
+
+/// Which edges of one cell are tile borders.
+struct SquareCell {
+    /// The cell's column in the grid.
+    column: usize,
+    /// The cell's row in the grid.
+    row: usize,
+    /// Edge at z = cell's bottom.
+    bottom: bool,
+    /// Edge at the cell's top.
+    top: bool,
+    /// Edge at x = cell's left.
+    left: bool,
+    /// Edge at the cell's right.
+    right: bool,
+}
+
+impl SquareGrid {
+    /// Cells across.
+    fn width(&self) -> usize {
+        self.rows[0].len()
+    }
+
+    /// Cells up.
+    fn height(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// The border digit of a cell, the coordinates wrapping around the grid.
+    fn digit(&self, column: usize, row: usize) -> u8 {
+        let row = self.rows[row % self.height()].as_bytes();
+        row[column % row.len()] - b'0'
+    }
+
+    /// Whether the bottom edge of a cell is a border.
+    fn bottom_edge(&self, column: usize, row: usize) -> bool {
+        self.digit(column, row) & 1 != 0
+    }
+
+    /// Whether the left edge of a cell is a border.
+    fn left_edge(&self, column: usize, row: usize) -> bool {
+        self.digit(column, row) & 2 != 0
+    }
+
+    /// The cell at (column, row), both below the grid's size.
+    fn cell(&self, column: usize, row: usize) -> SquareCell {
+        let (right_column, top_row) = (column + 1, row + 1);
+        SquareCell {
+            column,
+            row,
+            bottom: self.bottom_edge(column, row),
+            top: self.bottom_edge(column, top_row),
+            left: self.left_edge(column, row),
+            right: self.left_edge(right_column, row),
+        }
+    }
+
+    /// Whether the corner of cell (column, row) on the `right`/`top` side (else left /
+    /// bottom) is on a border reached only by the two edges leading away from the cell: a
+    /// concave corner of the cell's tile when neither cell edge there is a border.
+    fn corner_is_concave(&self, column: usize, row: usize, right: bool, top: bool) -> bool {
+        let (width, height) = (self.width(), self.height());
+        let corner_column = if right { column + 1 } else { column };
+        let corner_row = if top { row + 1 } else { row };
+        // The horizontal edge leaving the corner away from the cell, and the vertical one.
+        let away_column = if right {
+            corner_column
+        } else {
+            corner_column + width - 1
+        };
+        let away_row = if top {
+            corner_row
+        } else {
+            corner_row + height - 1
+        };
+        self.bottom_edge(away_column, corner_row) || self.left_edge(corner_column, away_row)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The pavement a line of `pavement_answers.txt` was measured with, and its point and
+    /// value.
+    fn answer(line: &str) -> (Pavement, f64, f64, f64) {
+        let fields: Vec<f64> = line
+            .split_whitespace()
+            .map(|field| field.parse().unwrap())
+            .collect();
+        let pavement = Pavement {
+            polygon: PavementPolygon::from_sides(fields[0]).unwrap(),
+            tiles: fields[1] as u8,
+            pattern: fields[2] as u8,
+            form: fields[3] as u8,
+            exterior: fields[4] as u8,
+            interior: fields[5] as u8,
+        };
+        (pavement, fields[6], fields[7], fields[8])
+    }
+
+    #[test]
+    fn pavements_match_povray_known_answers() {
+        let table = include_str!("pavement_answers.txt");
+        let mut checked = 0;
+        for line in table.lines().filter(|line| !line.starts_with('#')) {
+            let (pavement, x, z, expected) = answer(line);
+            let ours = pavement.value(x, z);
+            // povray's colours are single precision.
+            assert!((ours - expected).abs() < 1e-6, "{line}: durer gives {ours}");
+            checked += 1;
+        }
+        assert!(checked > 1000);
+    }
+
+    #[test]
+    fn pattern_counts_follow_the_manual() {
+        let counts = |polygon: PavementPolygon| -> Vec<u8> {
+            (1..=polygon.max_tiles())
+                .map(|tiles| polygon.pattern_count(tiles))
+                .collect()
+        };
+        assert_eq!(counts(PavementPolygon::Square), [1, 1, 2, 5, 12, 35]);
+        assert_eq!(counts(PavementPolygon::Triangle), [1, 1, 1, 3, 4, 12]);
+        assert_eq!(counts(PavementPolygon::Hexagon), [1, 1, 3, 7, 22]);
+        assert_eq!(PavementPolygon::Square.pattern_count(0), 0);
+        assert_eq!(PavementPolygon::Square.pattern_count(7), 0);
+    }
+
+    #[test]
+    fn corner_settings_wrap_like_unsigned_numbers() {
+        // Measured: exterior -1 is 0, exterior 5 is 2, form -2 is 2, form 7 is 3.
+        assert_eq!(corner_setting(-1.0, 3), 0);
+        assert_eq!(corner_setting(5.0, 3), 2);
+        assert_eq!(corner_setting(1.5, 3), 1);
+        assert_eq!(corner_setting(-2.0, 4), 2);
+        assert_eq!(corner_setting(7.0, 4), 3);
+        assert_eq!(corner_setting(f64::NAN, 3), 0);
+    }
+
+    #[test]
+    fn far_and_odd_points_stay_in_range() {
+        let pavement = Pavement {
+            polygon: PavementPolygon::Square,
+            tiles: 6,
+            pattern: 34,
+            form: 2,
+            exterior: 2,
+            interior: 2,
+        };
+        for (x, z) in [(1e300, -1e300), (-1e-300, 0.0), (-0.5, -7.25), (1e17, 3.5)] {
+            let value = pavement.value(x, z);
+            assert!((0.0..=1.0).contains(&value), "{x} {z}: {value}");
+        }
+    }
+}
