@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 """Measure POV-Ray 3.7's `pavement` pattern: the pavings' layouts and known answers.
 
-`tables`: for every square paving (number_of_tiles 1-6, every pattern) finds which unit
-edges are tile borders (a border edge's midpoint has the value 1), finds the smallest
-rectangle the paving repeats over and prints the SQUARE_PAVINGS table of
-src/pattern/pavement.rs (per cell: bit 0 bottom edge, bit 1 left edge).
+`tables`: for every square and triangle paving (number_of_tiles 1-6, every pattern) finds
+which lattice edges are tile borders (a border edge's midpoint has the value 1), finds the
+smallest block of lattice cells the paving repeats over and prints the SQUARE_PAVINGS and
+TRIANGLE_PAVINGS tables of src/pattern/pavement.rs. Squares: per cell, bit 0 its bottom
+edge, bit 1 its left edge. Triangles: the lattice points are P(i, j) = (i + j/2, j √3/2);
+per point, bit 0 the edge to P(i+1, j), bit 1 the edge to P(i, j+1), bit 2 the edge from
+P(i+1, j) to P(i, j+1).
 
 `answers`: evaluates every paving at seeded random points under random form / exterior /
 interior settings and writes src/pattern/pavement_answers.txt, one line per point:
@@ -33,7 +36,9 @@ PATTERN_COUNTS = {
     6: [1, 1, 3, 7, 22],
 }
 # The polygons durer computes; the others are left out of the answers.
-MEASURED_SIDES = [4]
+MEASURED_SIDES = [3, 4]
+# Height of a row of triangles.
+ROW_HEIGHT = 3 ** 0.5 / 2
 # Edges sampled per axis when looking for a square paving's period.
 WINDOW = 36
 
@@ -90,8 +95,28 @@ def square_borders(tiles, pattern):
     return {key: value > 0.999 for key, value in zip(keys, values)}
 
 
+def triangle_borders(tiles, pattern):
+    """{(kind, i, j): is a border} for the lattice edges of a WINDOW x WINDOW block of
+    lattice points; kind 'h' is the edge P(i, j)-P(i+1, j), 'r' P(i, j)-P(i, j+1) and 'l'
+    P(i+1, j)-P(i, j+1)."""
+    keys, points = [], []
+    for j in range(WINDOW):
+        for i in range(WINDOW):
+            x, z = i + 0.5 * j, j * ROW_HEIGHT
+            for kind, dx, dz in (
+                ("h", 0.5, 0.0),
+                ("r", 0.25, ROW_HEIGHT / 2),
+                ("l", 0.75, ROW_HEIGHT / 2),
+            ):
+                keys.append((kind, i, j))
+                points.append((x + dx, 0.0, z + dz))
+    values = evaluate(spec_of(3, tiles, pattern), points)
+    return {key: value > 0.999 for key, value in zip(keys, values)}
+
+
 def period(borders, along_x):
-    """The smallest shift along x (or z) that maps the sampled borders onto themselves."""
+    """The smallest shift along the first (or second) index that maps the sampled borders
+    onto themselves."""
     for shift in range(1, WINDOW // 2 + 1):
         if all(
             borders[(kind, x + shift, z) if along_x else (kind, x, z + shift)] == border
@@ -102,17 +127,19 @@ def period(borders, along_x):
     sys.exit("no period found within %d cells" % WINDOW)
 
 
-def print_tables():
-    print("const SQUARE_PAVINGS: [&[&[&str]]; 6] = [")
-    for tiles, count in enumerate(PATTERN_COUNTS[4], start=1):
-        print("    // %d square%s" % (tiles, "" if tiles == 1 else "s"))
+def print_table(name, noun, sides, measure, bits):
+    """Prints one Rust table of pavings: per paving its repeating block, one string per
+    row, one digit per cell holding the border bits of the cell's edges named in `bits`."""
+    print("const %s: [&[&[&str]]; 6] = [" % name)
+    for tiles, count in enumerate(PATTERN_COUNTS[sides], start=1):
+        print("    // %d %s%s" % (tiles, noun, "" if tiles == 1 else "s"))
         print("    &[")
         for pattern in range(1, count + 1):
-            borders = square_borders(tiles, pattern)
+            borders = measure(tiles, pattern)
             width, height = period(borders, True), period(borders, False)
             rows = [
                 "".join(
-                    str(int(borders[("h", x, z)]) + 2 * int(borders[("v", x, z)]))
+                    str(sum(int(borders[(kind, x, z)]) << bit for bit, kind in enumerate(bits)))
                     for x in range(width)
                 )
                 for z in range(height)
@@ -120,6 +147,11 @@ def print_tables():
             print("        &[%s]," % ", ".join('"%s"' % row for row in rows))
         print("    ],")
     print("];")
+
+
+def print_tables():
+    print_table("SQUARE_PAVINGS", "square", 4, square_borders, "hv")
+    print_table("TRIANGLE_PAVINGS", "triangle", 3, triangle_borders, "hrl")
 
 
 def write_answers(output):

@@ -610,8 +610,7 @@ impl Evaluator {
                 if !polygon.is_supported() {
                     self.warn(
                         span,
-                        "`pavement` of triangles or hexagons is not supported yet; its first \
-                         colour is used",
+                        "`pavement` of hexagons is not supported yet; its first colour is used",
                     );
                 }
                 pavement.polygon = polygon;

@@ -142,8 +142,8 @@ pub enum PatternKind {
     Marble,
     /// Concentric unit shells.
     Onion,
-    /// `pavement`: a polyform tile paving the x-z plane (triangle and hexagon pavings are
-    /// not supported yet and give 0, the map's first entry).
+    /// `pavement`: a polyform tile paving the x-z plane (hexagon pavings are not supported
+    /// yet and give 0, the map's first entry).
     Pavement(Pavement),
     /// 1 on the x-z plane falling to 0 at distance 1.
     Planar,

@@ -7,6 +7,11 @@
 //!
 //! Measured against POV-Ray 3.7 (scripts/probe-pavement.py: `pigment { pavement .. }`
 //! through a black-to-white colour map, sampled with `#debug`):
+//! - The value is `1 - d / r`, clamped to [0, 1], where `r` is the basic polygon's inradius
+//!   and `d` a distance to the tile's border measured in the part of the cell nearest to one
+//!   of its corners (every border farther away gives a value of 0 anyway).
+//!
+//! Squares:
 //! - Squares are the integer lattice. Each paving repeats over a rectangle of cells; the
 //!   tables below give, for every cell of that rectangle, whether its bottom edge and its
 //!   left edge are tile borders.
@@ -24,8 +29,23 @@
 //!   `interior` say), 1 the middle line cut straight across the turn, 2 the middle line a
 //!   quarter circle about the concave corner; 3 treats the cell like any other, so the
 //!   corners follow `exterior` and `interior`.
-//! - Settings are truncated to integers and wrap like unsigned numbers: `form` modulo 4,
-//!   `exterior` and `interior` modulo 3 (so -1 gives 3 and 0).
+//!
+//! Triangles (side 1, one side along x, lattice points `(i + j/2, j √3/2)`): around a lattice
+//! point the tile covers a run of `k` of the six triangles there, bounded by two border rays;
+//! `d` measured from the point, with `ρ` the distance to it:
+//! - `k` 1 (60°, `exterior`): 0 the distance to the nearer ray, 1 also cut by the line
+//!   perpendicular to the corner's bisector at distance `r` from the corner, 2 rounded:
+//!   `r - |p - incentre|`.
+//! - `k` 2 (120°, `form`): 0 the distance to the nearer ray, 1 also `x / cos 30° - r` (`x`
+//!   along the bisector), 2 also `cos 30° - |p - c|` (`c` the far end of the shared edge).
+//! - `k` 3 to 5 (180° and concave, `interior`), besides the distance to a border edge of the
+//!   triangle itself: 0 the larger distance to the two rays' lines (for `k` 5: `ρ cos δ`, `δ`
+//!   the angle to the nearest direction 30° + 60°n), 1 `ρ cos 30° cos ε` (`ε` the angle to the
+//!   nearest lattice direction), 2 `ρ cos 30°`.
+//! - `form 3` is `form 0`.
+//!
+//! Settings are truncated to integers and wrap like unsigned numbers: `form` modulo 4,
+//! `exterior` and `interior` modulo 3 (so -1 gives 3 and 0).
 
 /// The pavings of unit squares, by number of squares per tile (1 to 6) and pattern number
 /// (from 1). Each paving is its repeating rectangle of cells, one string per row from
@@ -109,6 +129,55 @@ const SQUARE_PAVINGS: [&[&[&str]]; 6] = [
     ],
 ];
 
+/// The pavings of equilateral triangles, by number of triangles per tile (1 to 6) and
+/// pattern number (from 1). Each paving is its repeating block of lattice points, one string
+/// per row `j` from 0 upwards, one digit per point `i`: bit 0 set when the edge from P(i, j)
+/// to P(i+1, j) is a border, bit 1 the edge to P(i, j+1), bit 2 the edge from P(i+1, j) to
+/// P(i, j+1).
+#[rustfmt::skip]
+const TRIANGLE_PAVINGS: [&[&[&str]]; 6] = [
+    // 1 triangle
+    &[
+        &["7"],
+    ],
+    // 2 triangles
+    &[
+        &["5"],
+    ],
+    // 3 triangles
+    &[
+        &["351", "135", "513"],
+    ],
+    // 4 triangles
+    &[
+        &["51", "15"],
+        &["25", "52"],
+        &["35", "60"],
+    ],
+    // 5 triangles
+    &[
+        &["31511", "11315", "15113", "13151", "51131"],
+        &["31216", "16312", "12163", "63121", "21631"],
+        &["51254", "54512", "12545", "45125", "25451"],
+        &["31630", "63031", "03163", "16303", "30316"],
+    ],
+    // 6 triangles
+    &[
+        &["311"],
+        &["611"],
+        &["611", "161", "116"],
+        &["315", "160", "531", "016", "153", "601"],
+        &["313", "230", "331", "023", "133", "302"],
+        &["331", "212", "313", "122", "133", "221"],
+        &["31", "54", "12", "13", "45", "21"],
+        &["31", "45", "03", "13", "54", "30"],
+        &["351", "250", "135", "025", "513", "502"],
+        &["341"],
+        &["350", "035", "503"],
+        &["241", "124", "412"],
+    ],
+];
+
 /// The basic polygon a pavement tile is made of (`number_of_sides`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PavementPolygon {
@@ -155,7 +224,7 @@ impl PavementPolygon {
 
     /// Whether durer computes this polygon's pavings (the others give 0).
     pub fn is_supported(self) -> bool {
-        self == Self::Square
+        self != Self::Hexagon
     }
 }
 
@@ -206,17 +275,117 @@ impl Pavement {
     pub fn value(&self, x: f64, z: f64) -> f64 {
         match self.polygon {
             PavementPolygon::Square => self.square_value(x, z),
-            PavementPolygon::Triangle | PavementPolygon::Hexagon => 0.0,
+            PavementPolygon::Triangle => self.triangle_value(x, z),
+            PavementPolygon::Hexagon => 0.0,
+        }
+    }
+
+    /// The value of a triangle paving.
+    fn triangle_value(&self, x: f64, z: f64) -> f64 {
+        let Some(rows) = paving(&TRIANGLE_PAVINGS, self.tiles, self.pattern) else {
+            return 0.0;
+        };
+        let grid = TriangleGrid { rows };
+        // Lattice coordinates: p = (i + f) (1, 0) + (j + g) (1/2, √3/2).
+        let row_coordinate = z / ROW_HEIGHT;
+        let column_coordinate = x - 0.5 * row_coordinate;
+        let (i, j) = (column_coordinate.floor(), row_coordinate.floor());
+        let (f, g) = (column_coordinate - i, row_coordinate - j);
+        // The triangle's corners as lattice offsets from (i, j), each with the sector (of the
+        // six around the corner, counter-clockwise from +x) the triangle fills there.
+        let corners: [((u8, u8), usize); 3] = if f + g < 1.0 {
+            [((0, 0), 0), ((1, 0), 2), ((0, 1), 4)]
+        } else {
+            [((1, 0), 1), ((1, 1), 3), ((0, 1), 5)]
+        };
+        let corner_point = |(di, dj): (u8, u8)| {
+            let (ci, cj) = (i + f64::from(di), j + f64::from(dj));
+            (ci + 0.5 * cj, cj * ROW_HEIGHT)
+        };
+        let distance_squared = |(cx, cz): (f64, f64)| (x - cx).powi(2) + (z - cz).powi(2);
+        let mut nearest = corners[0];
+        for corner in &corners[1..] {
+            if distance_squared(corner_point(corner.0)) < distance_squared(corner_point(nearest.0))
+            {
+                nearest = *corner;
+            }
+        }
+        let ((di, dj), sector) = nearest;
+        let (vx, vz) = corner_point((di, dj));
+        let column = (i + f64::from(di)).rem_euclid(grid.width() as f64) as usize % grid.width();
+        let row = (j + f64::from(dj)).rem_euclid(grid.height() as f64) as usize % grid.height();
+        let distance = self.triangle_distance(grid.star(column, row), sector, x - vx, z - vz);
+        (1.0 - distance / TRIANGLE_INRADIUS).clamp(0.0, 1.0)
+    }
+
+    /// The distance `d` (see the module header) of the point (dx, dz) from a lattice point
+    /// whose six edges (counter-clockwise from +x) are `borders`, for the triangle filling
+    /// `sector` there.
+    fn triangle_distance(&self, borders: [bool; 6], sector: usize, dx: f64, dz: f64) -> f64 {
+        if !borders.contains(&true) {
+            return f64::INFINITY;
+        }
+        // Signed distance from the line of lattice direction `n`, positive counter-clockwise.
+        let line_distance = |n: usize| {
+            let (cos, sin) = LATTICE_DIRECTIONS[n % 6];
+            cos * dz - sin * dx
+        };
+        // The run of sectors the tile fills: from border edge `low` counter-clockwise to
+        // border edge `high`.
+        let before = (0..6).find(|&n| borders[(sector + 6 - n) % 6]).unwrap_or(0);
+        let after = (0..6).find(|&n| borders[(sector + 1 + n) % 6]).unwrap_or(0);
+        let (low, high) = ((sector + 6 - before) % 6, (sector + 1 + after) % 6);
+        let run = before + after + 1;
+        let (from_low, from_high) = (line_distance(low), -line_distance(high));
+        let rho = dx.hypot(dz);
+        let cos_30 = LATTICE_DIRECTIONS[1].1;
+        match run {
+            1 => {
+                let pointy = from_low.min(from_high);
+                match self.exterior {
+                    0 => pointy,
+                    1 => {
+                        let (cos, sin) = SECTOR_CENTRES[sector];
+                        pointy.min(cos * dx + sin * dz - TRIANGLE_INRADIUS)
+                    }
+                    _ => {
+                        let (cos, sin) = SECTOR_CENTRES[sector];
+                        let to_centre = 2.0 * TRIANGLE_INRADIUS;
+                        let rounded =
+                            TRIANGLE_INRADIUS - (dx - cos * to_centre).hypot(dz - sin * to_centre);
+                        pointy.min(rounded)
+                    }
+                }
+            }
+            2 => {
+                let pointy = from_low.min(from_high);
+                let (cos, sin) = LATTICE_DIRECTIONS[(low + 1) % 6];
+                match self.form {
+                    1 => pointy.min((cos * dx + sin * dz) / cos_30 - TRIANGLE_INRADIUS),
+                    2 => pointy.min(cos_30 - (dx - cos).hypot(dz - sin)),
+                    _ => pointy,
+                }
+            }
+            _ => {
+                let angle = dz.atan2(dx).to_degrees();
+                let corner = match self.interior {
+                    0 if run == 5 => rho * angle_to_nearest(angle - 30.0).to_radians().cos(),
+                    0 => from_low.max(from_high),
+                    1 => rho * cos_30 * angle_to_nearest(angle).to_radians().cos(),
+                    _ => rho * cos_30,
+                };
+                [sector, sector + 1]
+                    .into_iter()
+                    .filter(|&n| borders[n % 6])
+                    .map(|n| line_distance(n).abs())
+                    .fold(corner, f64::min)
+            }
         }
     }
 
     /// The value of a square paving.
     fn square_value(&self, x: f64, z: f64) -> f64 {
-        let Some(rows) = usize::from(self.tiles)
-            .checked_sub(1)
-            .and_then(|tiles| SQUARE_PAVINGS.get(tiles))
-            .and_then(|pavings| pavings.get(usize::from(self.pattern).saturating_sub(1)))
-        else {
+        let Some(rows) = paving(&SQUARE_PAVINGS, self.tiles, self.pattern) else {
             return 0.0;
         };
         let grid = SquareGrid { rows };
@@ -277,6 +446,88 @@ impl Pavement {
             _ => 1.0 - 2.0 * s.min(t).min((1.0 - s).max(1.0 - t)),
         };
         Some(value.clamp(0.0, 1.0))
+    }
+}
+
+/// Height of a row of triangles, √3/2.
+const ROW_HEIGHT: f64 = 0.866_025_403_784_438_6;
+
+/// Inradius of the unit triangle, √3/6.
+const TRIANGLE_INRADIUS: f64 = 0.288_675_134_594_812_9;
+
+/// (cos, sin) of the lattice directions 0°, 60°, ... 300°.
+const LATTICE_DIRECTIONS: [(f64, f64); 6] = [
+    (1.0, 0.0),
+    (0.5, ROW_HEIGHT),
+    (-0.5, ROW_HEIGHT),
+    (-1.0, 0.0),
+    (-0.5, -ROW_HEIGHT),
+    (0.5, -ROW_HEIGHT),
+];
+
+/// (cos, sin) of the directions 30°, 90°, ... 330°: from a lattice point to the centres of
+/// the six triangles around it.
+const SECTOR_CENTRES: [(f64, f64); 6] = [
+    (ROW_HEIGHT, 0.5),
+    (0.0, 1.0),
+    (-ROW_HEIGHT, 0.5),
+    (-ROW_HEIGHT, -0.5),
+    (0.0, -1.0),
+    (ROW_HEIGHT, -0.5),
+];
+
+/// The angle in degrees from `angle` to the nearest multiple of 60°, in [0, 30].
+fn angle_to_nearest(angle: f64) -> f64 {
+    let offset = angle.rem_euclid(60.0);
+    offset.min(60.0 - offset)
+}
+
+/// The rows of paving `pattern` (from 1) for tiles of `tiles` polygons (from 1).
+fn paving(
+    table: &[&'static [&'static [&'static str]]; 6],
+    tiles: u8,
+    pattern: u8,
+) -> Option<&'static [&'static str]> {
+    let pavings = table.get(usize::from(tiles).checked_sub(1)?)?;
+    pavings.get(usize::from(pattern).checked_sub(1)?).copied()
+}
+
+/// One repeating block of a triangle paving.
+struct TriangleGrid {
+    /// The rows of border digits (see [`TRIANGLE_PAVINGS`]).
+    rows: &'static [&'static str],
+}
+
+impl TriangleGrid {
+    /// Lattice points along a row.
+    fn width(&self) -> usize {
+        self.rows[0].len()
+    }
+
+    /// Rows.
+    fn height(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// Whether edge `bit` (0, 1 or 2, see [`TRIANGLE_PAVINGS`]) of lattice point (i, j) is a
+    /// border, the coordinates wrapping around the block.
+    fn edge(&self, i: usize, j: usize, bit: u8) -> bool {
+        let row = self.rows[j % self.height()].as_bytes();
+        (row[i % row.len()] - b'0') >> bit & 1 != 0
+    }
+
+    /// The six edges of lattice point (i, j) (both below the block's size),
+    /// counter-clockwise from +x: whether each is a border.
+    fn star(&self, i: usize, j: usize) -> [bool; 6] {
+        let (left, down) = (i + self.width() - 1, j + self.height() - 1);
+        [
+            self.edge(i, j, 0),
+            self.edge(i, j, 1),
+            self.edge(left, j, 2),
+            self.edge(left, j, 0),
+            self.edge(i, down, 1),
+            self.edge(i, down, 2),
+        ]
     }
 }
 
@@ -427,17 +678,22 @@ mod tests {
 
     #[test]
     fn far_and_odd_points_stay_in_range() {
-        let pavement = Pavement {
-            polygon: PavementPolygon::Square,
-            tiles: 6,
-            pattern: 34,
-            form: 2,
-            exterior: 2,
-            interior: 2,
-        };
-        for (x, z) in [(1e300, -1e300), (-1e-300, 0.0), (-0.5, -7.25), (1e17, 3.5)] {
-            let value = pavement.value(x, z);
-            assert!((0.0..=1.0).contains(&value), "{x} {z}: {value}");
+        for (polygon, pattern) in [
+            (PavementPolygon::Square, 34),
+            (PavementPolygon::Triangle, 11),
+        ] {
+            let pavement = Pavement {
+                polygon,
+                tiles: 6,
+                pattern,
+                form: 2,
+                exterior: 2,
+                interior: 1,
+            };
+            for (x, z) in [(1e300, -1e300), (-1e-300, 0.0), (-0.5, -7.25), (1e17, 3.5)] {
+                let value = pavement.value(x, z);
+                assert!((0.0..=1.0).contains(&value), "{x} {z}: {value}");
+            }
         }
     }
 }
