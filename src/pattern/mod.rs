@@ -513,6 +513,15 @@ mod tests {
             PatternKind::Leopard,
             PatternKind::Marble,
             PatternKind::Onion,
+            PatternKind::Pavement(Pavement::default()),
+            PatternKind::Pavement(Pavement {
+                polygon: PavementPolygon::Square,
+                tiles: 5,
+                pattern: 12,
+                form: 1,
+                exterior: 2,
+                interior: 1,
+            }),
             PatternKind::Planar,
             PatternKind::Quilted {
                 control0: 1.0,
