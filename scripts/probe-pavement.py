@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Measure POV-Ray 3.7's `pavement` pattern: the pavings' layouts and known answers.
 
-`tables`: for every square and triangle paving (number_of_tiles 1-6, every pattern) finds
-which lattice edges are tile borders (a border edge's midpoint has the value 1), finds the
-smallest block of lattice cells the paving repeats over and prints the SQUARE_PAVINGS and
-TRIANGLE_PAVINGS tables of src/pattern/pavement.rs. Squares: per cell, bit 0 its bottom
-edge, bit 1 its left edge. Triangles: the lattice points are P(i, j) = (i + j/2, j √3/2);
-per point, bit 0 the edge to P(i+1, j), bit 1 the edge to P(i, j+1), bit 2 the edge from
-P(i+1, j) to P(i, j+1).
+`tables`: for every square, triangle and hexagon paving (number_of_tiles 1-6, hexagons
+1-5, every pattern) finds which lattice edges are tile borders (a border edge's midpoint
+has the value 1), finds the smallest block of lattice cells the paving repeats over and
+prints the SQUARE_PAVINGS, TRIANGLE_PAVINGS and HEXAGON_PAVINGS tables of
+src/pattern/pavement.rs. Squares: per cell, bit 0 its bottom edge, bit 1 its left edge.
+Triangles: the lattice points are P(i, j) = (i + j/2, j √3/2); per point, bit 0 the edge
+to P(i+1, j), bit 1 the edge to P(i, j+1), bit 2 the edge from P(i+1, j) to P(i, j+1).
+Hexagons use the triangle lattice (each hexagon is the six triangles around a point).
 
 `answers`: evaluates every paving at seeded random points under random form / exterior /
 interior settings and writes src/pattern/pavement_answers.txt, one line per point:
@@ -36,11 +37,12 @@ PATTERN_COUNTS = {
     6: [1, 1, 3, 7, 22],
 }
 # The polygons durer computes; the others are left out of the answers.
-MEASURED_SIDES = [3, 4]
+MEASURED_SIDES = [3, 4, 6]
 # Height of a row of triangles.
 ROW_HEIGHT = 3 ** 0.5 / 2
 # Edges sampled per axis when looking for a square paving's period.
 WINDOW = 36
+HEXAGON_WINDOW = 80
 
 
 def evaluate(spec, points):
@@ -95,13 +97,14 @@ def square_borders(tiles, pattern):
     return {key: value > 0.999 for key, value in zip(keys, values)}
 
 
-def triangle_borders(tiles, pattern):
+def triangle_borders(tiles, pattern, sides=3, window=WINDOW):
     """{(kind, i, j): is a border} for the lattice edges of a WINDOW x WINDOW block of
     lattice points; kind 'h' is the edge P(i, j)-P(i+1, j), 'r' P(i, j)-P(i, j+1) and 'l'
-    P(i+1, j)-P(i, j+1)."""
+    P(i+1, j)-P(i, j+1). Hexagons (`sides` 6) are measured on the same lattice: each
+    hexagon is the six triangles around one lattice point."""
     keys, points = [], []
-    for j in range(WINDOW):
-        for i in range(WINDOW):
+    for j in range(window):
+        for i in range(window):
             x, z = i + 0.5 * j, j * ROW_HEIGHT
             for kind, dx, dz in (
                 ("h", 0.5, 0.0),
@@ -110,27 +113,33 @@ def triangle_borders(tiles, pattern):
             ):
                 keys.append((kind, i, j))
                 points.append((x + dx, 0.0, z + dz))
-    values = evaluate(spec_of(3, tiles, pattern), points)
+    values = evaluate(spec_of(sides, tiles, pattern), points)
     return {key: value > 0.999 for key, value in zip(keys, values)}
+
+
+def hexagon_borders(tiles, pattern):
+    """Hexagon pavings repeat over larger blocks: a wider window."""
+    return triangle_borders(tiles, pattern, sides=6, window=HEXAGON_WINDOW)
 
 
 def period(borders, along_x):
     """The smallest shift along the first (or second) index that maps the sampled borders
     onto themselves."""
-    for shift in range(1, WINDOW // 2 + 1):
+    window = max(key[1] for key in borders) + 1
+    for shift in range(1, window // 2 + 1):
         if all(
             borders[(kind, x + shift, z) if along_x else (kind, x, z + shift)] == border
             for (kind, x, z), border in borders.items()
-            if (x + shift if along_x else z + shift) < WINDOW
+            if (x + shift if along_x else z + shift) < window
         ):
             return shift
-    sys.exit("no period found within %d cells" % WINDOW)
+    sys.exit("no period found within %d cells" % window)
 
 
 def print_table(name, noun, sides, measure, bits):
     """Prints one Rust table of pavings: per paving its repeating block, one string per
     row, one digit per cell holding the border bits of the cell's edges named in `bits`."""
-    print("const %s: [&[&[&str]]; 6] = [" % name)
+    print("const %s: [&[&[&str]]; %d] = [" % (name, len(PATTERN_COUNTS[sides])))
     for tiles, count in enumerate(PATTERN_COUNTS[sides], start=1):
         print("    // %d %s%s" % (tiles, noun, "" if tiles == 1 else "s"))
         print("    &[")
@@ -152,6 +161,7 @@ def print_table(name, noun, sides, measure, bits):
 def print_tables():
     print_table("SQUARE_PAVINGS", "square", 4, square_borders, "hv")
     print_table("TRIANGLE_PAVINGS", "triangle", 3, triangle_borders, "hrl")
+    print_table("HEXAGON_PAVINGS", "hexagon", 6, hexagon_borders, "hrl")
 
 
 def write_answers(output):

@@ -411,7 +411,7 @@ impl Evaluator {
                 PatternKind::Pavement(pavement),
                 "number_of_sides" | "number_of_tiles" | "pattern" | "form" | "interior"
                 | "exterior",
-            ) => self.pavement_setting(word, span, stream, pavement)?,
+            ) => self.pavement_setting(word, stream, pavement)?,
             _ => {
                 return Err(self
                     .error(span, format!("`{word}` only applies to {owner}"))
@@ -591,7 +591,6 @@ impl Evaluator {
     fn pavement_setting(
         &mut self,
         word: &str,
-        span: Span,
         stream: &mut Stream,
         pavement: &mut Pavement,
     ) -> EvalResult<()> {
@@ -607,12 +606,6 @@ impl Evaluator {
                         )
                         .into());
                 };
-                if !polygon.is_supported() {
-                    self.warn(
-                        span,
-                        "`pavement` of hexagons is not supported yet; its first colour is used",
-                    );
-                }
                 pavement.polygon = polygon;
             }
             "number_of_tiles" => pavement.tiles = number.trunc().clamp(0.0, 255.0) as u8,

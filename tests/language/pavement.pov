@@ -1,5 +1,5 @@
 // The pavement pattern: values at a few points (measured with POV-Ray 3.7) through a
-// black-to-white colour map, for squares and triangles, and settings that wrap.
+// black-to-white colour map, for squares, triangles and hexagons, and settings that wrap.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #macro Check(Condition, Message)
@@ -23,6 +23,13 @@ Check(Near(Value, 0.5), "L turn, form 1")
 #declare Triangle = function { pigment { pavement color_map { Map } } }
 #declare Value = Triangle(0.5, 0, sqrt(3) / 6).red;
 Check(Near(Value, 0), "triangle incentre")
+// Single hexagons (side 1, centred at (1, 0) and its lattice): 0 in the middle, and
+// 1 - d / (sqrt(3) / 6) along a border.
+#declare Hexagon = function { pigment { pavement number_of_sides 6 color_map { Map } } }
+#declare Value = Hexagon(1, 0, 0.1).red;
+Check(Near(Value, 0), "hexagon middle")
+#declare Value = Hexagon(-0.5, 0, 0.125).red;
+Check(Near(Value, 1 - 0.125 / (sqrt(3) / 6)), "hexagon border band")
 // exterior -1 wraps to 0 (a square corner), exterior 4 to 1 (a cut corner).
 #declare Wrapped = function { pigment { pavement number_of_sides 4 exterior -1
   color_map { Map } } }
