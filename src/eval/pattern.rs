@@ -19,7 +19,8 @@ use crate::geometry::World;
 use crate::noise::NoiseGenerator;
 use crate::pattern::{
     default_colour_map, Altitude, BlackHole, Colouring, Crackle, DensityFile, Fractal, FractalKind,
-    MagnetType, Mapping, MappingKind, PatternKind, PatternSpec, Repeat, Slope, Warp, WaveShape,
+    MagnetType, Mapping, MappingKind, PatternKind, PatternSpec, Pavement, PavementPolygon, Repeat,
+    Slope, Warp, WaveShape,
 };
 use crate::syntax::ast::{Block, BlockHead, Expr, Item};
 
@@ -74,13 +75,7 @@ impl Evaluator {
             }
             "marble" => PatternKind::Marble,
             "onion" => PatternKind::Onion,
-            "pavement" => {
-                self.warn(
-                    span,
-                    "`pavement` is not supported yet; its first colour is used",
-                );
-                PatternKind::Pavement
-            }
+            "pavement" => PatternKind::Pavement(Pavement::default()),
             "planar" => PatternKind::Planar,
             "quilted" => PatternKind::Quilted {
                 control0: 1.0,
@@ -413,12 +408,10 @@ impl Evaluator {
                 }
             }
             (
-                PatternKind::Pavement,
+                PatternKind::Pavement(pavement),
                 "number_of_sides" | "number_of_tiles" | "pattern" | "form" | "interior"
                 | "exterior",
-            ) => {
-                let _ = self.expect_float(stream, "a float")?;
-            }
+            ) => self.pavement_setting(word, stream, pavement)?,
             _ => {
                 return Err(self
                     .error(span, format!("`{word}` only applies to {owner}"))
@@ -592,6 +585,60 @@ impl Evaluator {
     }
 
     /// `density_file df3 "FILE"`: reads the grid.
+    /// One `pavement` setting. Each is checked against the settings written before it, so
+    /// `number_of_sides`, `number_of_tiles` and `pattern` are best written in this order
+    /// (POV-Ray checks them together at the end of the pattern).
+    fn pavement_setting(
+        &mut self,
+        word: &str,
+        stream: &mut Stream,
+        pavement: &mut Pavement,
+    ) -> EvalResult<()> {
+        let (value, number_span) = self.expect_value(stream, "a number")?;
+        let number = self.to_float(value, number_span)?;
+        match word {
+            "number_of_sides" => {
+                let Some(polygon) = PavementPolygon::from_sides(number) else {
+                    return Err(self
+                        .error(
+                            number_span,
+                            "`number_of_sides` of pavement must be 3, 4 or 6",
+                        )
+                        .into());
+                };
+                pavement.polygon = polygon;
+            }
+            "number_of_tiles" => pavement.tiles = number.trunc().clamp(0.0, 255.0) as u8,
+            "pattern" => pavement.pattern = number.trunc().clamp(0.0, 255.0) as u8,
+            "form" => pavement.form = crate::pattern::pavement_corner_setting(number, 4),
+            "exterior" => pavement.exterior = crate::pattern::pavement_corner_setting(number, 3),
+            _ => pavement.interior = crate::pattern::pavement_corner_setting(number, 3),
+        }
+        let max_tiles = pavement.polygon.max_tiles();
+        if !(1..=max_tiles).contains(&pavement.tiles) {
+            return Err(self
+                .error(
+                    number_span,
+                    format!("`number_of_tiles` of this pavement must be between 1 and {max_tiles}"),
+                )
+                .into());
+        }
+        let count = pavement.polygon.pattern_count(pavement.tiles);
+        if !(1..=count).contains(&pavement.pattern) {
+            return Err(self
+                .error(
+                    number_span,
+                    format!(
+                        "`pattern` of this pavement must be between 1 and {count} (tiles of {} \
+                         polygons)",
+                        pavement.tiles
+                    ),
+                )
+                .into());
+        }
+        Ok(())
+    }
+
     fn density_file_operands(
         &mut self,
         span: Span,

@@ -21,6 +21,7 @@ mod fractal;
 mod geometric;
 mod noise_based;
 mod normals;
+mod pavement;
 mod surface;
 mod tiling;
 mod warp;
@@ -37,6 +38,7 @@ pub use density_file::DensityFile;
 pub use fractal::{Colouring, Fractal, FractalKind, MagnetType};
 pub use geometric::checker_block;
 pub use noise_based::{ClassicTurbulence, Crackle};
+pub use pavement::{corner_setting as pavement_corner_setting, Pavement, PavementPolygon};
 pub use surface::{Altitude, Slope, SurfaceContext};
 pub use tiling::is_supported as is_supported_tiling;
 pub use warp::{BlackHole, Mapping, MappingKind, Repeat, Warp};
@@ -140,8 +142,9 @@ pub enum PatternKind {
     Marble,
     /// Concentric unit shells.
     Onion,
-    /// `pavement`: not supported yet; its value is 0 (the map's first entry).
-    Pavement,
+    /// `pavement`: a polyform tile paving the x-z plane (hexagon pavings are not supported
+    /// yet and give 0, the map's first entry).
+    Pavement(Pavement),
     /// 1 on the x-z plane falling to 0 at distance 1.
     Planar,
     /// Rounded cubes.
@@ -399,7 +402,8 @@ impl PatternSpec {
                 grid,
                 interpolation,
             } => grid.value(p, *interpolation),
-            PatternKind::Facets { .. } | PatternKind::Pavement => 0.0,
+            PatternKind::Facets { .. } => 0.0,
+            PatternKind::Pavement(pavement) => pavement.value(p.x, p.z),
             PatternKind::Fractal(fractal) => fractal.value(p.x, p.y),
             PatternKind::Gradient(direction) => geometric::gradient_raw(p, *direction),
             PatternKind::Granite => noise_based::granite(p, generator),
@@ -509,6 +513,15 @@ mod tests {
             PatternKind::Leopard,
             PatternKind::Marble,
             PatternKind::Onion,
+            PatternKind::Pavement(Pavement::default()),
+            PatternKind::Pavement(Pavement {
+                polygon: PavementPolygon::Square,
+                tiles: 5,
+                pattern: 12,
+                form: 1,
+                exterior: 2,
+                interior: 1,
+            }),
             PatternKind::Planar,
             PatternKind::Quilted {
                 control0: 1.0,

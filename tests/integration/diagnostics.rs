@@ -757,3 +757,13 @@ fn errors_in_calls_from_text_macros_show_the_call_trace() {
         ],
     );
 }
+
+#[test]
+fn pavement_pattern_out_of_range_names_the_count() {
+    check(
+        "pavement_pattern_out_of_range",
+        2,
+        77,
+        &["`pattern` of this pavement must be between 1 and 2"],
+    );
+}
