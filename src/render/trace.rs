@@ -44,6 +44,7 @@ use super::encoding::is_legacy_scene;
 use super::lights::{prepare_lights, transmission, SceneLight};
 use super::normal::perturbed_normal_at;
 use super::pattern::hit_surface;
+use super::radiosity::{Gathered, Radiosity};
 use super::reflection::{apply_exponent, interior_fade, reflection_colour};
 use super::shading::{local_light, mirror, SurfaceSample};
 use super::texture::{for_each_component, pigment_at_hit};
@@ -75,6 +76,8 @@ pub struct Media {
     len: usize,
     /// For a ray of one dispersion band: the exponent applied to `dispersion`.
     band: Option<f64>,
+    /// Radiosity bounces behind the ray (0 for camera rays and their continuations).
+    radiosity_depth: u32,
 }
 
 impl Media {
@@ -83,6 +86,7 @@ impl Media {
         entries: [(0, 1.0); MEDIA_DEPTH],
         len: 0,
         band: None,
+        radiosity_depth: 0,
     };
 
     /// Index of refraction of the innermost medium.
@@ -138,6 +142,8 @@ pub struct Tracer<'a> {
     any_no_image: bool,
     /// Some object is `no_reflection` (reflected rays must skip it).
     any_no_reflection: bool,
+    /// Indirect diffuse light, when the scene has a radiosity block.
+    radiosity: Option<Radiosity>,
 }
 
 /// What a ray is for, which decides the objects it can see.
@@ -173,7 +179,49 @@ impl<'a> Tracer<'a> {
             lights: prepare_lights(scene),
             any_no_image: world.materials.iter().any(|m| m.no_image),
             any_no_reflection: world.materials.iter().any(|m| m.no_reflection),
+            radiosity: settings
+                .radiosity
+                .as_ref()
+                .map(|radiosity| Radiosity::new(radiosity, scene.camera.location)),
         }
+    }
+
+    /// The scene's radiosity state, if it has radiosity.
+    pub fn radiosity(&self) -> Option<&Radiosity> {
+        self.radiosity.as_ref()
+    }
+
+    /// Indirect light arriving at a surface point from the hemisphere around `normal`,
+    /// for a ray `media` describes at trace `level` (zero without radiosity).
+    fn indirect_light(&self, point: DVec3, normal: DVec3, level: u32, media: &Media) -> DVec3 {
+        let Some(radiosity) = &self.radiosity else {
+            return DVec3::ZERO;
+        };
+        let depth = media.radiosity_depth;
+        if !radiosity.lights_depth(depth) || level >= self.max_trace_level {
+            return DVec3::ZERO;
+        }
+        let gathering = Media {
+            radiosity_depth: depth + 1,
+            ..Media::OUTSIDE
+        };
+        radiosity.irradiance(point, normal, depth, &|direction| {
+            let ray = Ray {
+                origin: point,
+                direction,
+            };
+            let distance = self
+                .first_hit(&ray, SURFACE_EPSILON, RayKind::Refracted)
+                .map_or(f64::INFINITY, |hit| hit.distance);
+            let colour = self.trace(
+                ray,
+                level + 1,
+                RayWeight::CAMERA,
+                &gathering,
+                RayKind::Refracted,
+            );
+            Gathered { colour, distance }
+        })
     }
 
     /// The colour seen along a camera ray.
@@ -354,7 +402,17 @@ impl<'a> Tracer<'a> {
             light_group: material.light_group,
         };
         let settings = &self.scene.settings;
-        let local = local_light(&sample, &self.lights, settings.ambient_light, self.world);
+        let mut local = local_light(&sample, &self.lights, settings.ambient_light, self.world);
+        if self.radiosity.is_some() && texture.finish.diffuse != 0.0 {
+            let radiosity = self.scene.settings.radiosity.as_ref();
+            let oriented = if radiosity.is_some_and(|r| r.use_normal) {
+                normal
+            } else {
+                surface.normal
+            };
+            let light = self.indirect_light(hit.point, oriented, level, media);
+            local.body += pigment.rgb_vec() * texture.finish.diffuse * light;
+        }
         let opacity = if self.legacy_opacity {
             1.0 - pigment.filter * pigment.rgb_vec().max_element() - pigment.transmit
         } else {

@@ -11,6 +11,7 @@ mod implicit;
 mod light;
 mod light_group;
 mod mesh;
+mod radiosity;
 mod texture;
 mod transform;
 
@@ -25,6 +26,7 @@ pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline}
 pub use light::{AreaLight, LightSource, Spotlight};
 pub use light_group::LightGroup;
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
+pub use radiosity::RadiositySettings;
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
     Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
@@ -73,9 +75,9 @@ pub struct GlobalSettings {
     /// The wave sources every `ripples` and `waves` pattern of the scene shares (fixed
     /// from `number_of_waves` when parsing ends).
     pub wave_sources: crate::pattern::SceneWaveSources,
-    /// A `radiosity { }` block was given. durer computes no indirect light, but in 3.7
-    /// scenes radiosity sets every finish's ambient term to zero, and so does durer.
-    pub radiosity: bool,
+    /// The `radiosity { }` block, when given: indirect diffuse light is gathered, and in
+    /// 3.7 scenes every finish's ambient term counts as zero.
+    pub radiosity: Option<RadiositySettings>,
 }
 
 impl Default for GlobalSettings {
@@ -90,7 +92,7 @@ impl Default for GlobalSettings {
             noise_generator: crate::noise::NoiseGenerator::default(),
             number_of_waves: 10,
             wave_sources: crate::pattern::SceneWaveSources::default(),
-            radiosity: false,
+            radiosity: None,
         }
     }
 }
