@@ -669,3 +669,29 @@ fn tiling_number_out_of_range_is_refused() {
         &["the tiling number must be between 1 and 27", "this is 28"],
     );
 }
+
+#[test]
+fn radiosity_count_out_of_range_is_refused() {
+    check(
+        "radiosity_count_out_of_range",
+        2,
+        37,
+        &[
+            "radiosity value 0 is out of range",
+            "expected a whole number from 1 to",
+        ],
+    );
+}
+
+#[test]
+fn radiosity_pretrace_size_out_of_range_is_refused() {
+    check(
+        "radiosity_pretrace_out_of_range",
+        2,
+        44,
+        &[
+            "pretrace block size 1.5 is out of range",
+            "above 0 and at most 1",
+        ],
+    );
+}
