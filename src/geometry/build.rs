@@ -100,6 +100,7 @@ struct Flags {
     no_shadow: bool,
     no_image: bool,
     no_reflection: bool,
+    no_radiosity: bool,
     double_illuminate: bool,
     light_group: Option<crate::scene::LightGroup>,
 }
@@ -288,6 +289,7 @@ impl Builder {
         appearance.flags.no_shadow |= object.no_shadow;
         appearance.flags.no_image |= object.no_image;
         appearance.flags.no_reflection |= object.no_reflection;
+        appearance.flags.no_radiosity |= object.no_radiosity;
         appearance.flags.double_illuminate |= object.double_illuminate;
         // Nested light groups (measured): the innermost group's lights light an object,
         // the outermost group's `global_lights` decides whether scene lights do.
@@ -338,6 +340,7 @@ impl Builder {
             no_shadow: appearance.flags.no_shadow,
             no_image: appearance.flags.no_image,
             no_reflection: appearance.flags.no_reflection,
+            no_radiosity: appearance.flags.no_radiosity,
             double_illuminate: appearance.flags.double_illuminate,
             uses_uv: texture_uses_uv(&appearance.texture),
             light_group: appearance.flags.light_group,

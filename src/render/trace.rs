@@ -142,6 +142,8 @@ pub struct Tracer<'a> {
     any_no_image: bool,
     /// Some object is `no_reflection` (reflected rays must skip it).
     any_no_reflection: bool,
+    /// Some object is `no_radiosity` (radiosity's gathering rays must skip it).
+    any_no_radiosity: bool,
     /// Indirect diffuse light, when the scene has a radiosity block.
     radiosity: Option<Radiosity>,
 }
@@ -155,6 +157,8 @@ enum RayKind {
     Reflected,
     /// A refracted ray: sees everything.
     Refracted,
+    /// A radiosity gathering ray: skips `no_radiosity` objects.
+    Gathering,
 }
 
 impl<'a> Tracer<'a> {
@@ -179,6 +183,7 @@ impl<'a> Tracer<'a> {
             lights: prepare_lights(scene),
             any_no_image: world.materials.iter().any(|m| m.no_image),
             any_no_reflection: world.materials.iter().any(|m| m.no_reflection),
+            any_no_radiosity: world.materials.iter().any(|m| m.no_radiosity),
             radiosity: settings
                 .radiosity
                 .as_ref()
@@ -211,14 +216,14 @@ impl<'a> Tracer<'a> {
                 direction,
             };
             let distance = self
-                .first_hit(&ray, SURFACE_EPSILON, RayKind::Refracted)
+                .first_hit(&ray, SURFACE_EPSILON, RayKind::Gathering)
                 .map_or(f64::INFINITY, |hit| hit.distance);
             let colour = self.trace(
                 ray,
                 level + 1,
                 RayWeight::CAMERA,
                 &gathering,
-                RayKind::Refracted,
+                RayKind::Gathering,
             );
             Gathered { colour, distance }
         })
@@ -308,6 +313,12 @@ impl<'a> Tracer<'a> {
                 self.world
                     .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
                         materials.get(id as usize).is_some_and(|m| m.no_reflection)
+                    })
+            }
+            RayKind::Gathering if self.any_no_radiosity => {
+                self.world
+                    .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
+                        materials.get(id as usize).is_some_and(|m| m.no_radiosity)
                     })
             }
             _ => self.world.first_hit(ray, min_distance, f64::INFINITY),

@@ -126,6 +126,8 @@ pub struct Object {
     pub no_image: bool,
     /// `no_reflection`: invisible in reflections.
     pub no_reflection: bool,
+    /// `no_radiosity`: invisible to radiosity's gathering rays.
+    pub no_radiosity: bool,
     /// `double_illuminate`: lit from both sides.
     pub double_illuminate: bool,
     /// Light sources written inside this CSG object, in its local space: they move with
@@ -152,6 +154,7 @@ impl Object {
             bounded_by: Vec::new(),
             no_image: false,
             no_reflection: false,
+            no_radiosity: false,
             double_illuminate: false,
             lights: None,
             light_group: None,
