@@ -19,6 +19,7 @@ mod macros;
 mod media;
 mod objects;
 mod pattern;
+mod radiosity;
 mod scopes;
 mod shapes;
 mod splines;
@@ -572,7 +573,7 @@ impl Evaluator {
         let mut settings = self.settings.clone();
         settings.language_version = self.version;
         settings.version_declared = self.version_declared;
-        if settings.radiosity && self.version >= 3.7 {
+        if settings.radiosity.is_some() && self.version >= 3.7 {
             // POV-Ray 3.7 replaces the ambient term by radiosity (legacy scenes keep it).
             settings.ambient_light = glam::DVec3::ZERO;
         }

@@ -306,13 +306,7 @@ impl Evaluator {
                 "no_image" => object.no_image = self.optional_bool(stream)?,
                 "no_reflection" => object.no_reflection = self.optional_bool(stream)?,
                 "double_illuminate" => object.double_illuminate = self.optional_bool(stream)?,
-                "no_radiosity" => {
-                    self.warn(
-                        *span,
-                        format!("`{word}` is not supported yet; it is ignored"),
-                    );
-                    let _ = self.optional_bool(stream)?;
-                }
+                "no_radiosity" => object.no_radiosity = self.optional_bool(stream)?,
                 _ => return Err(self.unexpected_in(&item, head)),
             },
             Item::Block(block) => {

@@ -516,15 +516,11 @@ impl Evaluator {
                         BlockHead::Word(w) => w.to_string(),
                         _ => String::new(),
                     };
-                    if matches!(name.as_str(), "radiosity" | "photons") {
-                        let message = if name == "radiosity" {
-                            self.settings.radiosity = true;
-                            "`radiosity` is not supported yet: no indirect light is computed \
-                             (ambient counts as zero, as with radiosity in POV-Ray 3.7)"
-                                .to_string()
-                        } else {
-                            format!("`{name}` is not supported yet; it is ignored")
-                        };
+                    if name == "radiosity" {
+                        let mut body = Stream::new(block.body.clone());
+                        self.eval_radiosity(&mut body)?;
+                    } else if name == "photons" {
+                        let message = format!("`{name}` is not supported yet; it is ignored");
                         self.warn(block.head_span, message);
                     } else {
                         return Err(self.unexpected_in(&item, "global_settings"));

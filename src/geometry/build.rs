@@ -101,6 +101,7 @@ struct Flags {
     no_shadow: bool,
     no_image: bool,
     no_reflection: bool,
+    no_radiosity: bool,
     double_illuminate: bool,
     hollow: bool,
     light_group: Option<crate::scene::LightGroup>,
@@ -318,6 +319,7 @@ impl Builder {
         flags.no_shadow |= object.no_shadow;
         flags.no_image |= object.no_image;
         flags.no_reflection |= object.no_reflection;
+        flags.no_radiosity |= object.no_radiosity;
         flags.double_illuminate |= object.double_illuminate;
         if let Some(hollow) = object.hollow {
             flags.hollow = hollow;
@@ -396,6 +398,7 @@ impl Builder {
             no_shadow: appearance.flags.no_shadow,
             no_image: appearance.flags.no_image,
             no_reflection: appearance.flags.no_reflection,
+            no_radiosity: appearance.flags.no_radiosity,
             double_illuminate: appearance.flags.double_illuminate,
             hollow: appearance.flags.hollow,
             uses_uv: texture_uses_uv(&appearance.texture),

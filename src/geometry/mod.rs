@@ -154,6 +154,8 @@ pub struct Material {
     pub no_image: bool,
     /// `no_reflection`: reflected rays pass through.
     pub no_reflection: bool,
+    /// `no_radiosity`: radiosity's gathering rays pass through.
+    pub no_radiosity: bool,
     /// `double_illuminate`: lit from both sides.
     pub double_illuminate: bool,
     /// `hollow`: atmospheric media and fog fill the object's inside.

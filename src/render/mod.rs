@@ -29,6 +29,7 @@ pub mod mesh_camera;
 pub mod normal;
 pub mod output;
 pub mod pattern;
+pub mod radiosity;
 pub mod reflection;
 pub mod shading;
 pub mod texture;
@@ -133,6 +134,9 @@ pub fn render(
         }),
         (None, None) => point(f64::from(column) + 0.5, f64::from(row) + 0.5),
     };
+    if let Some(radiosity) = tracer.radiosity() {
+        radiosity::pretrace(radiosity, width, height, &first);
+    }
     // Mesh cameras and focal blur choose their own rays; anti-aliasing does not apply.
     let colours = match options
         .antialias

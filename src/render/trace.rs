@@ -45,6 +45,7 @@ use super::lights::{prepare_lights, transmission, SceneLight};
 use super::media::{ActiveMedia, MediaShader, Stretch};
 use super::normal::perturbed_normal_at;
 use super::pattern::hit_surface;
+use super::radiosity::{Gathered, Radiosity};
 use super::reflection::{apply_exponent, interior_fade, reflection_colour};
 use super::shading::{local_light, mirror, SurfaceSample};
 use super::texture::{for_each_component, pigment_at_hit};
@@ -79,6 +80,8 @@ pub struct Media {
     /// The ray started inside a non-hollow object it does not know about (the camera is
     /// inside one): no fog or media anywhere along it.
     in_solid: bool,
+    /// Radiosity bounces behind the ray (0 for camera rays and their continuations).
+    radiosity_depth: u32,
 }
 
 impl Media {
@@ -88,6 +91,7 @@ impl Media {
         len: 0,
         band: None,
         in_solid: false,
+        radiosity_depth: 0,
     };
 
     /// Index of refraction of the innermost medium.
@@ -154,6 +158,10 @@ pub struct Tracer<'a> {
     any_media: bool,
     /// The camera is inside a non-hollow object (so camera rays see no fog or media).
     camera_in_solid: bool,
+    /// Some object is `no_radiosity` (radiosity's gathering rays must skip it).
+    any_no_radiosity: bool,
+    /// Indirect diffuse light, when the scene has a radiosity block.
+    radiosity: Option<Radiosity>,
 }
 
 /// What a ray is for, which decides the objects it can see.
@@ -165,6 +173,8 @@ enum RayKind {
     Reflected,
     /// A refracted ray: sees everything.
     Refracted,
+    /// A radiosity gathering ray: skips `no_radiosity` objects.
+    Gathering,
 }
 
 impl<'a> Tracer<'a> {
@@ -197,7 +207,50 @@ impl<'a> Tracer<'a> {
             any_media: !scene.atmosphere.media.is_empty()
                 || world.materials.iter().any(|m| !m.interior.media.is_empty()),
             camera_in_solid: world.inside_solid(scene.camera.location),
+            any_no_radiosity: world.materials.iter().any(|m| m.no_radiosity),
+            radiosity: settings
+                .radiosity
+                .as_ref()
+                .map(|radiosity| Radiosity::new(radiosity, scene.camera.location)),
         }
+    }
+
+    /// The scene's radiosity state, if it has radiosity.
+    pub fn radiosity(&self) -> Option<&Radiosity> {
+        self.radiosity.as_ref()
+    }
+
+    /// Indirect light arriving at a surface point from the hemisphere around `normal`,
+    /// for a ray `media` describes at trace `level` (zero without radiosity).
+    fn indirect_light(&self, point: DVec3, normal: DVec3, level: u32, media: &Media) -> DVec3 {
+        let Some(radiosity) = &self.radiosity else {
+            return DVec3::ZERO;
+        };
+        let depth = media.radiosity_depth;
+        if !radiosity.lights_depth(depth) || level >= self.max_trace_level {
+            return DVec3::ZERO;
+        }
+        let gathering = Media {
+            radiosity_depth: depth + 1,
+            ..Media::OUTSIDE
+        };
+        radiosity.irradiance(point, normal, depth, &|direction| {
+            let ray = Ray {
+                origin: point,
+                direction,
+            };
+            let distance = self
+                .first_hit(&ray, SURFACE_EPSILON, RayKind::Gathering)
+                .map_or(f64::INFINITY, |hit| hit.distance);
+            let colour = self.trace(
+                ray,
+                level + 1,
+                RayWeight::CAMERA,
+                &gathering,
+                RayKind::Gathering,
+            );
+            Gathered { colour, distance }
+        })
     }
 
     /// The colour seen along a camera ray.
@@ -340,6 +393,12 @@ impl<'a> Tracer<'a> {
                         materials.get(id as usize).is_some_and(|m| m.no_reflection)
                     })
             }
+            RayKind::Gathering if self.any_no_radiosity => {
+                self.world
+                    .first_hit_skipping(ray, min_distance, reach, &|id: u32| {
+                        materials.get(id as usize).is_some_and(|m| m.no_radiosity)
+                    })
+            }
             _ => self.world.first_hit(ray, min_distance, reach),
         }
     }
@@ -432,7 +491,17 @@ impl<'a> Tracer<'a> {
             light_group: material.light_group,
         };
         let settings = &self.scene.settings;
-        let local = local_light(&sample, &self.lights, settings.ambient_light, self.world);
+        let mut local = local_light(&sample, &self.lights, settings.ambient_light, self.world);
+        if self.radiosity.is_some() && texture.finish.diffuse != 0.0 {
+            let radiosity = self.scene.settings.radiosity.as_ref();
+            let oriented = if radiosity.is_some_and(|r| r.use_normal) {
+                normal
+            } else {
+                surface.normal
+            };
+            let light = self.indirect_light(hit.point, oriented, level, media);
+            local.body += pigment.rgb_vec() * texture.finish.diffuse * light;
+        }
         let opacity = if self.legacy_opacity {
             1.0 - pigment.filter * pigment.rgb_vec().max_element() - pigment.transmit
         } else {

@@ -13,6 +13,7 @@ mod light;
 mod light_group;
 mod media;
 mod mesh;
+mod radiosity;
 mod texture;
 mod transform;
 mod uv_faces;
@@ -30,6 +31,7 @@ pub use light::{AreaLight, LightSource, Spotlight};
 pub use light_group::{separate_light_groups, LightGroup};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
+pub use radiosity::RadiositySettings;
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
     Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
@@ -79,9 +81,9 @@ pub struct GlobalSettings {
     /// The wave sources every `ripples` and `waves` pattern of the scene shares (fixed
     /// from `number_of_waves` when parsing ends).
     pub wave_sources: crate::pattern::SceneWaveSources,
-    /// A `radiosity { }` block was given. durer computes no indirect light, but in 3.7
-    /// scenes radiosity sets every finish's ambient term to zero, and so does durer.
-    pub radiosity: bool,
+    /// The `radiosity { }` block, when given: indirect diffuse light is gathered, and in
+    /// 3.7 scenes every finish's ambient term counts as zero.
+    pub radiosity: Option<RadiositySettings>,
 }
 
 impl Default for GlobalSettings {
@@ -96,7 +98,7 @@ impl Default for GlobalSettings {
             noise_generator: crate::noise::NoiseGenerator::default(),
             number_of_waves: 10,
             wave_sources: crate::pattern::SceneWaveSources::default(),
-            radiosity: false,
+            radiosity: None,
         }
     }
 }
@@ -130,6 +132,8 @@ pub struct Object {
     pub no_image: bool,
     /// `no_reflection`: invisible in reflections.
     pub no_reflection: bool,
+    /// `no_radiosity`: invisible to radiosity's gathering rays.
+    pub no_radiosity: bool,
     /// `double_illuminate`: lit from both sides.
     pub double_illuminate: bool,
     /// Light sources written inside this CSG object, in its local space: they move with
@@ -156,6 +160,7 @@ impl Object {
             bounded_by: Vec::new(),
             no_image: false,
             no_reflection: false,
+            no_radiosity: false,
             double_illuminate: false,
             lights: None,
             light_group: None,

@@ -767,3 +767,29 @@ fn pavement_pattern_out_of_range_names_the_count() {
         &["`pattern` of this pavement must be between 1 and 2"],
     );
 }
+
+#[test]
+fn radiosity_count_out_of_range_is_refused() {
+    check(
+        "radiosity_count_out_of_range",
+        2,
+        37,
+        &[
+            "radiosity value 0 is out of range",
+            "expected a whole number from 1 to",
+        ],
+    );
+}
+
+#[test]
+fn radiosity_pretrace_size_out_of_range_is_refused() {
+    check(
+        "radiosity_pretrace_out_of_range",
+        2,
+        44,
+        &[
+            "pretrace block size 1.5 is out of range",
+            "above 0 and at most 1",
+        ],
+    );
+}

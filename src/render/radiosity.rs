@@ -1,0 +1,353 @@
+//! Radiosity: indirect diffuse light gathered over the hemisphere and cached.
+//!
+//! In: the scene's [`RadiositySettings`], the eye position, and a way to trace a gathering
+//! ray (given by the tracer). Out: the irradiance at a surface point, which the tracer
+//! multiplies by pigment, `diffuse` and `brightness` in place of the ambient term.
+//! Holds: deterministic results at any thread count — the cache is filled only by the
+//! pretrace, which runs on one thread in a fixed pixel order; the final render only reads
+//! it (a point no cached sample covers is gathered afresh and not stored). No allocation
+//! per ray outside the pretrace.
+//!
+//! Method (Ward's irradiance cache, as POV-Ray 3.7's manual describes it):
+//! - a sample gathers `count` rays over the hemisphere around the normal, drawn from a
+//!   fixed cosine-weighted spherical Fibonacci set of `direction_pool` directions (round
+//!   robin when the pool is larger), and stores the mean of the light they see, with the
+//!   harmonic mean distance of what they hit;
+//! - its reuse radius is `error_bound` times that distance, clamped between
+//!   `minimum_reuse` and `maximum_reuse` times the distance from the eye;
+//! - a point reuses the samples whose error `distance / radius + sqrt(1 − N·Nᵢ)` is below 1
+//!   and that do not lie in front of it, weighted by `1 − error`; the pretrace gathers a new
+//!   sample wherever fewer than `nearest_count` are found, with `error_bound` lowered by
+//!   `low_error_factor`;
+//! - each bounce (up to `recursion_limit`) has its own cache.
+
+use crate::scene::RadiositySettings;
+use glam::DVec3;
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
+use std::sync::RwLock;
+
+/// The golden ratio's fractional part, spacing the Fibonacci set's azimuths.
+const GOLDEN_FRACTION: f64 = 0.618_033_988_749_894_9;
+
+/// Weights of red, green and blue in POV-Ray's grey value of a colour.
+const GREY_WEIGHTS: DVec3 = DVec3::new(0.297, 0.589, 0.114);
+
+/// One cached irradiance value.
+#[derive(Clone, Copy, Debug)]
+struct Sample {
+    point: DVec3,
+    normal: DVec3,
+    irradiance: DVec3,
+    /// How far the sample may be reused on a flat surface.
+    radius: f64,
+}
+
+/// The light seen along one gathering ray and how far away it came from.
+#[derive(Clone, Copy, Debug)]
+pub struct Gathered {
+    /// Light arriving along the ray.
+    pub colour: DVec3,
+    /// Distance to the surface hit (infinite when the ray escaped).
+    pub distance: f64,
+}
+
+/// The radiosity state of one render: settings, direction set and caches.
+pub struct Radiosity {
+    settings: RadiositySettings,
+    /// Cosine-weighted unit directions around +z.
+    directions: Vec<DVec3>,
+    /// One cache per bounce.
+    caches: Vec<RwLock<Vec<Sample>>>,
+    /// The pretrace is running: new samples are stored.
+    filling: AtomicBool,
+    /// Where in the direction pool the next sample starts (advanced only while filling).
+    next_direction: AtomicU32,
+    eye: DVec3,
+}
+
+impl Radiosity {
+    /// The radiosity state for these settings, seen from `eye`.
+    pub fn new(settings: &RadiositySettings, eye: DVec3) -> Radiosity {
+        let pool = settings.direction_pool.max(settings.count).max(1);
+        let directions = (0..pool)
+            .map(|index| {
+                // A pool larger than `count` is used a window at a time, so it follows the
+                // Halton sequence, every window of which is spread over the hemisphere; a
+                // pool used whole is the more even spherical Fibonacci set.
+                let (height, turn) = if pool > settings.count {
+                    (radical_inverse(index + 1, 2), radical_inverse(index + 1, 3))
+                } else {
+                    (
+                        (f64::from(index) + 0.5) / f64::from(pool),
+                        (f64::from(index) * GOLDEN_FRACTION).fract(),
+                    )
+                };
+                let radius = height.sqrt();
+                let azimuth = std::f64::consts::TAU * turn;
+                DVec3::new(
+                    radius * azimuth.cos(),
+                    radius * azimuth.sin(),
+                    (1.0 - height).max(0.0).sqrt(),
+                )
+            })
+            .collect();
+        let levels = settings.recursion_limit.clamp(1, 20) as usize;
+        Radiosity {
+            settings: settings.clone(),
+            directions,
+            caches: (0..levels).map(|_| RwLock::new(Vec::new())).collect(),
+            filling: AtomicBool::new(false),
+            next_direction: AtomicU32::new(0),
+            eye,
+        }
+    }
+
+    /// Whether a surface reached at this bounce depth gets indirect light.
+    pub fn lights_depth(&self, depth: u32) -> bool {
+        (depth as usize) < self.caches.len()
+    }
+
+    /// Starts (`true`) or ends the pretrace, during which new samples are stored.
+    pub fn set_filling(&self, filling: bool) {
+        self.filling.store(filling, Ordering::SeqCst);
+    }
+
+    /// Pretrace block sizes in pixels for an image `width` wide: from `pretrace_start` down
+    /// to `pretrace_end`, halving each pass.
+    pub fn pretrace_steps(&self, width: u32) -> Vec<u32> {
+        let width = f64::from(width.max(1));
+        let mut steps = Vec::new();
+        let mut fraction = self.settings.pretrace_start;
+        loop {
+            let step = (fraction * width).round().max(1.0) as u32;
+            if steps.last() != Some(&step) {
+                steps.push(step);
+            }
+            if fraction <= self.settings.pretrace_end * 1.000_001 || step == 1 {
+                break;
+            }
+            fraction = (fraction / 2.0).max(self.settings.pretrace_end);
+        }
+        steps
+    }
+
+    /// Gathered light scaled for the surface: `brightness`, `gray_threshold`, `max_sample`.
+    /// `gather(direction)` traces one ray from the point at the next bounce depth.
+    pub fn irradiance(
+        &self,
+        point: DVec3,
+        normal: DVec3,
+        depth: u32,
+        gather: &dyn Fn(DVec3) -> Gathered,
+    ) -> DVec3 {
+        let Some(cache) = self.caches.get(depth as usize) else {
+            return DVec3::ZERO;
+        };
+        let filling = self.filling.load(Ordering::Relaxed);
+        let bound_scale = if filling {
+            self.settings.low_error_factor
+        } else {
+            1.0
+        };
+        let (sum, weight, found) = {
+            let samples = cache.read().unwrap_or_else(|poison| poison.into_inner());
+            interpolate(&samples, point, normal, bound_scale)
+        };
+        let wanted = self.settings.nearest_count.max(1);
+        let reuse = if filling {
+            found >= wanted
+        } else {
+            found > 0 && !(self.settings.always_sample && found < wanted)
+        };
+        let irradiance = if reuse {
+            sum / weight
+        } else {
+            let start = if filling {
+                self.next_direction
+                    .fetch_add(self.settings.count, Ordering::Relaxed)
+            } else {
+                0
+            };
+            let (irradiance, harmonic_distance) = self.gather(normal, start, gather);
+            if filling {
+                let eye_distance = (point - self.eye).length();
+                let radius = (self.settings.error_bound * harmonic_distance).clamp(
+                    self.settings.minimum_reuse * eye_distance,
+                    self.settings.maximum_reuse * eye_distance,
+                );
+                if radius.is_finite() && radius > 0.0 && irradiance.is_finite() {
+                    let mut samples = cache.write().unwrap_or_else(|poison| poison.into_inner());
+                    samples.push(Sample {
+                        point,
+                        normal,
+                        irradiance,
+                        radius,
+                    });
+                }
+            }
+            irradiance
+        };
+        self.adjusted(irradiance)
+    }
+
+    /// Mean light over `count` directions of the hemisphere around `normal`, starting at
+    /// `start` in the pool, and the harmonic mean distance of the surfaces hit.
+    fn gather(
+        &self,
+        normal: DVec3,
+        start: u32,
+        gather: &dyn Fn(DVec3) -> Gathered,
+    ) -> (DVec3, f64) {
+        let (tangent, bitangent) = normal.any_orthonormal_pair();
+        let pool = self.directions.len();
+        let count = self.settings.count.max(1);
+        let mut total = DVec3::ZERO;
+        let mut inverse_distances = 0.0;
+        for offset in 0..count {
+            let local = self.directions[(start as usize + offset as usize) % pool];
+            let direction = tangent * local.x + bitangent * local.y + normal * local.z;
+            let seen = gather(direction);
+            if seen.colour.is_finite() {
+                total += seen.colour;
+            }
+            if seen.distance > 0.0 {
+                inverse_distances += 1.0 / seen.distance;
+            }
+        }
+        let count = f64::from(count);
+        let harmonic = if inverse_distances > 0.0 {
+            count / inverse_distances
+        } else {
+            f64::INFINITY
+        };
+        (total / count, harmonic)
+    }
+
+    /// `brightness`, `gray_threshold` and `max_sample` applied to gathered light.
+    fn adjusted(&self, irradiance: DVec3) -> DVec3 {
+        let mut light = irradiance;
+        let gray = self.settings.gray_threshold;
+        if gray > 0.0 {
+            let grey = light.dot(GREY_WEIGHTS);
+            light = light * (1.0 - gray) + DVec3::splat(grey * gray);
+        }
+        let limit = self.settings.max_sample;
+        let brightest = light.max_element();
+        if limit > 0.0 && brightest > limit {
+            light *= limit / brightest;
+        }
+        light * self.settings.brightness
+    }
+}
+
+/// The radical inverse of `index` in `base`: its digits mirrored about the point.
+fn radical_inverse(mut index: u32, base: u32) -> f64 {
+    let mut inverse = 0.0;
+    let mut scale = 1.0 / f64::from(base);
+    while index > 0 {
+        inverse += f64::from(index % base) * scale;
+        index /= base;
+        scale /= f64::from(base);
+    }
+    inverse
+}
+
+/// Fills the caches: traces the pixel at the centre of every block of each pretrace pass,
+/// coarse to fine, on this thread in row order (`trace_pixel(column, row)`).
+pub fn pretrace(
+    radiosity: &Radiosity,
+    width: u32,
+    height: u32,
+    trace_pixel: &dyn Fn(u32, u32) -> DVec3,
+) {
+    radiosity.set_filling(true);
+    for step in radiosity.pretrace_steps(width) {
+        let half = step / 2;
+        for row in (0..height).step_by(step as usize) {
+            for column in (0..width).step_by(step as usize) {
+                let _ = trace_pixel((column + half).min(width - 1), (row + half).min(height - 1));
+            }
+        }
+    }
+    radiosity.set_filling(false);
+}
+
+/// The weighted sum of the cached samples usable at `point` (with unit `normal`), their
+/// total weight and how many there are; `bound_scale` shrinks every reuse radius.
+fn interpolate(
+    samples: &[Sample],
+    point: DVec3,
+    normal: DVec3,
+    bound_scale: f64,
+) -> (DVec3, f64, u32) {
+    let mut sum = DVec3::ZERO;
+    let mut weight = 0.0;
+    let mut found = 0;
+    for sample in samples {
+        let offset = point - sample.point;
+        let radius = sample.radius * bound_scale;
+        let distance_squared = offset.length_squared();
+        if distance_squared >= radius * radius {
+            continue;
+        }
+        let facing = normal.dot(sample.normal);
+        if facing <= 0.0 {
+            continue;
+        }
+        // A sample in front of the point (e.g. across an inside corner) does not apply.
+        if offset.dot(normal + sample.normal) < -0.05 * radius {
+            continue;
+        }
+        let error = distance_squared.sqrt() / radius + (1.0 - facing).max(0.0).sqrt();
+        if error >= 1.0 {
+            continue;
+        }
+        let share = 1.0 - error;
+        sum += sample.irradiance * share;
+        weight += share;
+        found += 1;
+    }
+    (sum, weight, found)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sky(_direction: DVec3) -> Gathered {
+        Gathered {
+            colour: DVec3::ONE,
+            distance: f64::INFINITY,
+        }
+    }
+
+    #[test]
+    fn directions_are_unit_and_in_the_upper_hemisphere() {
+        let radiosity = Radiosity::new(&RadiositySettings::default(), DVec3::ZERO);
+        for direction in &radiosity.directions {
+            assert!((direction.length() - 1.0).abs() < 1e-12);
+            assert!(direction.z > 0.0);
+        }
+        // Cosine weighting: the mean height of the directions is 2/3.
+        let mean = radiosity.directions.iter().map(|d| d.z).sum::<f64>() / 35.0;
+        assert!((mean - 2.0 / 3.0).abs() < 0.01, "{mean}");
+    }
+
+    #[test]
+    fn an_open_sky_gives_its_own_colour_and_is_reused() {
+        let radiosity = Radiosity::new(&RadiositySettings::default(), DVec3::new(0.0, 0.0, -10.0));
+        radiosity.set_filling(true);
+        let light = radiosity.irradiance(DVec3::ZERO, DVec3::Y, 0, &sky);
+        assert!((light - DVec3::ONE).length() < 1e-12);
+        radiosity.set_filling(false);
+        let unused = |_: DVec3| -> Gathered { panic!("the cached sample should be reused") };
+        let light = radiosity.irradiance(DVec3::new(0.1, 0.0, 0.0), DVec3::Y, 0, &unused);
+        assert!((light - DVec3::ONE).length() < 1e-12);
+    }
+
+    #[test]
+    fn pretrace_steps_halve_from_start_to_end() {
+        let radiosity = Radiosity::new(&RadiositySettings::default(), DVec3::ZERO);
+        assert_eq!(radiosity.pretrace_steps(160), vec![13, 6]);
+    }
+}
