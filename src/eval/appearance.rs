@@ -689,8 +689,8 @@ fn set_colour_component(colour: &mut Colour, keyword: &str, amount: f64) {
 /// Gives `pigment` the pattern `spec` with `map`. A pigment that already has a pattern (a
 /// named pigment or the texture's, being modified) only changes its pattern: it keeps its
 /// transformations and, when both patterns have continuous values, its colour or pigment
-/// map (measured: `pigment { P gradient x }` with `P` a scaled granite with a colour map
-/// is a scaled gradient with that map).
+/// map when one was written (measured: `pigment { P gradient x }` with `P` a scaled granite
+/// with a colour map is a scaled gradient with that map).
 fn set_pattern(pigment: &mut Pigment, spec: Pattern, map: PigmentMap) {
     if let Pigment::Pattern {
         pattern,
@@ -698,7 +698,14 @@ fn set_pattern(pigment: &mut Pigment, spec: Pattern, map: PigmentMap) {
         ..
     } = pigment
     {
-        let keeps_map = spec.block_count().is_none() && !matches!(old_map, PigmentMap::Blocks(_));
+        // A map the old pattern only had by default is not kept (measured: `pigment { P
+        // bozo }` with `P` an agate takes bozo's own map).
+        let written_map = match old_map {
+            PigmentMap::Blocks(_) => false,
+            PigmentMap::Colours(colours) => *colours != default_colours(pattern),
+            PigmentMap::Pigments(_) => true,
+        };
+        let keeps_map = spec.block_count().is_none() && written_map;
         **pattern = spec;
         if !keeps_map {
             *old_map = map;

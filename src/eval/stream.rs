@@ -241,7 +241,7 @@ impl Evaluator {
         Ok(())
     }
 
-    fn loop_limit(&self, span: Span) -> Box<crate::diag::Diagnostic> {
+    pub(crate) fn loop_limit(&self, span: Span) -> Box<crate::diag::Diagnostic> {
         self.error(
             span,
             format!("loop ran {LOOP_ITERATION_LIMIT} times without ending"),

@@ -254,6 +254,10 @@ impl JuliaFractal {
             }
             let hit = if current.inside { near } else { near + step };
             roots.push(hit / length, 0);
+            if roots.is_full() {
+                // Later crossings could not be kept anyway.
+                return;
+            }
             depth += stride;
             current = next;
         }

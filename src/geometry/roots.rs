@@ -34,6 +34,12 @@ impl Roots {
         }
     }
 
+    /// True when no further intersection can be recorded.
+    #[inline]
+    pub fn is_full(&self) -> bool {
+        self.len >= MAX_ROOTS
+    }
+
     /// Records an intersection at ray parameter `distance` on surface part `part`; ignores
     /// non-finite parameters and anything past the capacity.
     #[inline]

@@ -110,7 +110,8 @@ impl<'a> AtmosphereShader<'a> {
         let mut keep = DVec3::ONE;
         let mut add = DVec3::ZERO;
         for fog in &self.atmosphere.fogs {
-            let share = fog_share(fog, origin, direction, depth, self.noise_generator);
+            let stir = fog.turbulence.as_ref().map(|t| (t, self.noise_generator));
+            let share = fog_share(fog, origin, direction, depth, stir);
             mix_layer(&mut keep, &mut add, share, fog.colour);
         }
         for rainbow in &self.atmosphere.rainbows {
@@ -154,23 +155,23 @@ fn mix_layer(keep: &mut DVec3, add: &mut DVec3, share: f64, colour: Colour) {
 }
 
 /// The fraction of light that passes `fog` from `origin` over `depth` along unit
-/// `direction` (lights with `media_attenuation` are dimmed so; turbulence is left out).
+/// `direction` (lights with `media_attenuation` are dimmed so; turbulence is left out). A
+/// path of no positive length (a point beyond a parallel light's plane) passes everything.
 pub fn fog_transmittance(fog: &Fog, origin: DVec3, direction: DVec3, depth: f64) -> f64 {
-    let calm = Fog {
-        turbulence: None,
-        ..fog.clone()
-    };
-    1.0 - fog_share(&calm, origin, direction, depth, NoiseGenerator::default())
+    if depth.is_nan() || depth <= 0.0 {
+        return 1.0;
+    }
+    1.0 - fog_share(fog, origin, direction, depth, None)
 }
 
-/// The fraction `1 − a` of fog between a ray's start and `depth`, with turbulence read
-/// from `generator`.
+/// The fraction `1 − a` of fog between a ray's start and `depth`, stirred by the fog's
+/// turbulence read from the given generator when `stir` is given.
 fn fog_share(
     fog: &Fog,
     origin: DVec3,
     direction: DVec3,
     depth: f64,
-    generator: NoiseGenerator,
+    stir: Option<(&FogTurbulence, NoiseGenerator)>,
 ) -> f64 {
     if fog.distance == 0.0 || !fog.distance.is_finite() {
         return 0.0;
@@ -185,9 +186,9 @@ fn fog_share(
             ground_fog_depth(start, rise, depth, offset, altitude)
         }
     };
-    let thinning = match &fog.turbulence {
+    let thinning = match stir {
         // An endless ray stays fully fogged: turbulence fades out with depth.
-        Some(turbulence) if depth.is_finite() => {
+        Some((turbulence, generator)) if depth.is_finite() => {
             turbulent_thinning(turbulence, origin, direction, depth, distance, generator)
         }
         _ => 1.0,

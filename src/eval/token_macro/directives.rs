@@ -5,13 +5,13 @@
 //! chosen branch, back to a loop's start, past a skipped part) and the directive's effects.
 //! Holds: every open `#if`, loop and `#switch` is one [`Control`] until its `#end`.
 
-use crate::syntax::symbol::Symbol;
 use super::{Prefix, Rule, TextRun};
 use crate::diag::{Diagnostic, Span};
 use crate::eval::stream::{for_continues, Stream};
 use crate::eval::value::Value;
 use crate::eval::{EvalResult, Evaluator, LOOP_ITERATION_LIMIT};
 use crate::syntax::ast::{DirectiveKind, Expr};
+use crate::syntax::symbol::Symbol;
 use crate::syntax::tokens::{next_token, skip_trivia, Token, TokenKind};
 
 /// An open conditional or loop of the body, innermost last.
@@ -28,6 +28,8 @@ pub(super) enum Control {
     /// Running a `#for` body that starts at body offset `body`.
     For {
         variable: Symbol,
+        /// The value the loop last gave the variable, used when the body leaves it no number.
+        value: f64,
         end: f64,
         step: f64,
         body: usize,
@@ -248,7 +250,7 @@ impl Evaluator {
                 span,
             }) => {
                 if iterations + 1 >= LOOP_ITERATION_LIMIT {
-                    return Err(self.text_loop_limit(span));
+                    return Err(self.loop_limit(span));
                 }
                 if self.eval_condition(&condition)? {
                     run.position = body;
@@ -262,6 +264,7 @@ impl Evaluator {
             }
             Some(Control::For {
                 variable,
+                value,
                 end,
                 step,
                 body,
@@ -269,12 +272,12 @@ impl Evaluator {
                 span,
             }) => {
                 if iterations + 1 >= LOOP_ITERATION_LIMIT {
-                    return Err(self.text_loop_limit(span));
+                    return Err(self.loop_limit(span));
                 }
                 // POV-Ray reads the loop variable back, so the body may change it.
                 let current = match self.lookup(variable) {
-                    Some(Value::Float(value)) => *value,
-                    _ => end,
+                    Some(Value::Float(current)) => *current,
+                    _ => value,
                 };
                 let next = current + step;
                 self.assign_local(&variable, Value::Float(next));
@@ -282,6 +285,7 @@ impl Evaluator {
                     run.position = body;
                     run.controls.push(Control::For {
                         variable,
+                        value: next,
                         end,
                         step,
                         body,
@@ -292,16 +296,6 @@ impl Evaluator {
             }
         }
         Ok(false)
-    }
-
-    fn text_loop_limit(&self, span: Span) -> Box<Diagnostic> {
-        self.error(
-            span,
-            format!("loop ran {LOOP_ITERATION_LIMIT} times without ending"),
-        )
-        .with_label("this loop")
-        .with_help("check that the loop condition eventually becomes false")
-        .into()
     }
 
     /// `#for (Name, start, end[, step])`.
@@ -345,6 +339,7 @@ impl Evaluator {
         if for_continues(start, end, step) {
             run.controls.push(Control::For {
                 variable,
+                value: start,
                 end,
                 step,
                 body: run.position,
