@@ -158,6 +158,8 @@ pub struct Tracer<'a> {
     any_media: bool,
     /// The camera is inside a non-hollow object (so camera rays see no fog or media).
     camera_in_solid: bool,
+    /// Radiosity's `media on`: gathering rays see media.
+    gathering_sees_media: bool,
     /// Some object is `no_radiosity` (radiosity's gathering rays must skip it).
     any_no_radiosity: bool,
     /// Indirect diffuse light, when the scene has a radiosity block.
@@ -207,6 +209,7 @@ impl<'a> Tracer<'a> {
             any_media: !scene.atmosphere.media.is_empty()
                 || world.materials.iter().any(|m| !m.interior.media.is_empty()),
             camera_in_solid: world.inside_solid(scene.camera.location),
+            gathering_sees_media: settings.radiosity.as_ref().is_some_and(|r| r.use_media),
             any_no_radiosity: world.materials.iter().any(|m| m.no_radiosity),
             radiosity: settings
                 .radiosity
@@ -300,7 +303,9 @@ impl<'a> Tracer<'a> {
                 }
                 segment_start = end;
             }
-            if self.any_media {
+            // Radiosity's gathering rays see media only with its `media on` (POV-Ray's
+            // default is off).
+            if self.any_media && (media.radiosity_depth == 0 || self.gathering_sees_media) {
                 let end = hit.as_ref().map_or(f64::INFINITY, |hit| hit.distance);
                 let (keep, add) = self.media_along(&ray, &media, travelled, end);
                 colour += carried * add;
