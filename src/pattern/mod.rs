@@ -17,6 +17,7 @@
 
 mod default_maps;
 mod density_file;
+mod facets;
 mod fractal;
 mod geometric;
 mod noise_based;
@@ -320,9 +321,10 @@ impl PatternSpec {
 
     /// For patterns with a dedicated normal perturbation when used in `normal { }` (bumps,
     /// dents, ripples, waves, wrinkles, quilted, facets...): the perturbation vector to add to
-    /// the surface normal at `point` for a bump size of 1. `None` means "derive the slope from
-    /// [`Self::value`]".
-    pub fn normal_perturbation(&self, point: DVec3) -> Option<DVec3> {
+    /// the surface normal at `point` for a bump size of 1. `facing` is the unit surface normal
+    /// facing the viewer, in pattern space (`facets` snaps it). `None` means "derive the slope
+    /// from [`Self::value`]".
+    pub fn normal_perturbation(&self, point: DVec3, facing: DVec3) -> Option<DVec3> {
         if !point.is_finite() {
             return None;
         }
@@ -337,6 +339,7 @@ impl PatternSpec {
             }
             PatternKind::Waves(ref sources) => normals::waves(p, &self.wave, sources.as_slice()),
             PatternKind::Quilted { control0, control1 } => normals::quilted(p, control0, control1),
+            PatternKind::Facets { coords, size } => facets::facets(p, facing, coords, size),
             _ => return None,
         };
         Some(if perturbation.is_finite() {
@@ -561,7 +564,7 @@ mod tests {
                 if let Some(count) = pattern.block_count() {
                     assert!(pattern.block(point) < count);
                 }
-                if let Some(normal) = pattern.normal_perturbation(point) {
+                if let Some(normal) = pattern.normal_perturbation(point, DVec3::Y) {
                     assert!(normal.is_finite());
                 }
             }

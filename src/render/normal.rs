@@ -83,7 +83,11 @@ fn tilt(normal: &Normal, world_point: DVec3, surface: &SurfaceContext, depth: u3
     }
     match &normal.source {
         NormalSource::Pattern { pattern, slope_map } => {
-            let perturbation = match pattern.normal_perturbation(point) {
+            let facing_in_pattern = unit(
+                normal.transform.outer_from_inner.matrix3.transpose() * facing,
+                facing,
+            );
+            let perturbation = match pattern.normal_perturbation(point, facing_in_pattern) {
                 Some(vector) => vector,
                 None => {
                     let height = |p: DVec3| {

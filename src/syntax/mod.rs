@@ -8,8 +8,8 @@ mod grammar;
 pub mod keywords;
 mod lower;
 pub mod mapping;
-pub mod tokens;
 pub mod symbol;
+pub mod tokens;
 
 pub use grammar::{Rule, SdlParser};
 

@@ -5,13 +5,13 @@
 //! chosen branch, back to a loop's start, past a skipped part) and the directive's effects.
 //! Holds: every open `#if`, loop and `#switch` is one [`Control`] until its `#end`.
 
-use crate::syntax::symbol::Symbol;
 use super::{Prefix, Rule, TextRun};
 use crate::diag::{Diagnostic, Span};
 use crate::eval::stream::{for_continues, Stream};
 use crate::eval::value::Value;
 use crate::eval::{EvalResult, Evaluator, LOOP_ITERATION_LIMIT};
 use crate::syntax::ast::{DirectiveKind, Expr};
+use crate::syntax::symbol::Symbol;
 use crate::syntax::tokens::{next_token, skip_trivia, Token, TokenKind};
 
 /// An open conditional or loop of the body, innermost last.

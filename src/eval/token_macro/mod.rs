@@ -10,12 +10,12 @@
 //! a snapshot of its value at that moment, so `P[J]` emitted inside a loop keeps that pass's
 //! `J`; spans of everything parsed from the emitted text point into the macro body.
 
-use crate::syntax::symbol::Symbol;
 use super::value::Value;
 use super::{Entered, Entering, EvalResult, Evaluator, Scope};
 use crate::diag::{Diagnostic, FileId, Span};
 use crate::syntax::ast::{Item, MacroBody};
 use crate::syntax::mapping::OffsetMap;
+use crate::syntax::symbol::Symbol;
 use crate::syntax::tokens::{next_token, Token, TokenKind};
 use crate::syntax::{parse_generated, parse_prefix, Prefix, Rule};
 use std::collections::HashMap;
@@ -277,8 +277,7 @@ impl Evaluator {
         matches!(
             self.lookup(Symbol::intern(token.text(run.text))),
             Some(Value::Macro(_))
-        )
-            && next_token(run.text, token.end).is_some_and(|next| next.text(run.text) == "(")
+        ) && next_token(run.text, token.end).is_some_and(|next| next.text(run.text) == "(")
     }
 
     /// Runs a macro call met in a text body at once, as POV-Ray does: its arguments are
@@ -432,11 +431,8 @@ impl Evaluator {
         let value = value.clone();
         let hidden: Rc<str> = Rc::from(format!("_text_{}", run.sink.hidden_names));
         run.sink.hidden_names += 1;
-        self.scopes.insert(
-            run.sink.bind_scope,
-            Symbol::intern(&hidden),
-            value.clone(),
-        );
+        self.scopes
+            .insert(run.sink.bind_scope, Symbol::intern(&hidden), value.clone());
         run.snapshots
             .insert(Rc::from(name), (hidden.clone(), value));
         Some(hidden)
