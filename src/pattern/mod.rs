@@ -126,7 +126,7 @@ pub enum PatternKind {
     Facets {
         /// `coords` scale (0: not given).
         coords: f64,
-        /// `size` factor (0: not given).
+        /// `size`: the cells' scale (default 0.1).
         size: f64,
     },
     /// Mandelbrot, Julia and magnet fractals.
@@ -321,10 +321,9 @@ impl PatternSpec {
 
     /// For patterns with a dedicated normal perturbation when used in `normal { }` (bumps,
     /// dents, ripples, waves, wrinkles, quilted, facets...): the perturbation vector to add to
-    /// the surface normal at `point` for a bump size of 1. `facing` is the unit surface normal
-    /// facing the viewer, in pattern space (`facets` snaps it). `None` means "derive the slope
-    /// from [`Self::value`]".
-    pub fn normal_perturbation(&self, point: DVec3, facing: DVec3) -> Option<DVec3> {
+    /// the surface normal at `point` for a bump size of 1. `None` means "derive the slope from
+    /// [`Self::value`]".
+    pub fn normal_perturbation(&self, point: DVec3) -> Option<DVec3> {
         if !point.is_finite() {
             return None;
         }
@@ -339,7 +338,6 @@ impl PatternSpec {
             }
             PatternKind::Waves(ref sources) => normals::waves(p, &self.wave, sources.as_slice()),
             PatternKind::Quilted { control0, control1 } => normals::quilted(p, control0, control1),
-            PatternKind::Facets { coords, size } => facets::facets(p, facing, coords, size),
             _ => return None,
         };
         Some(if perturbation.is_finite() {
@@ -347,6 +345,20 @@ impl PatternSpec {
         } else {
             DVec3::ZERO
         })
+    }
+
+    /// For `facets`: the new (unnormalised) surface normal in pattern space at `point`, given
+    /// the unit normal `facing` the viewer in pattern space. It replaces the usual
+    /// perturbation: the bump amount does not scale it (measured). `None` for other patterns.
+    pub fn facets_normal(&self, point: DVec3, facing: DVec3) -> Option<DVec3> {
+        let PatternKind::Facets { coords, size } = self.kind else {
+            return None;
+        };
+        if !point.is_finite() {
+            return Some(facing);
+        }
+        let faceted = facets::facets_normal(self.moved_point(point), facing, coords, size);
+        Some(if faceted.is_finite() { faceted } else { facing })
     }
 
     /// True for the patterns that use the classic turbulence inside their formula instead
@@ -542,6 +554,10 @@ mod tests {
             PatternKind::Waves(SceneWaveSources::default()),
             PatternKind::Wood,
             PatternKind::Wrinkles,
+            PatternKind::Facets {
+                coords: 1e300,
+                size: 0.0,
+            },
         ];
         let points = [
             DVec3::ZERO,
@@ -564,7 +580,10 @@ mod tests {
                 if let Some(count) = pattern.block_count() {
                     assert!(pattern.block(point) < count);
                 }
-                if let Some(normal) = pattern.normal_perturbation(point, DVec3::Y) {
+                if let Some(normal) = pattern.normal_perturbation(point) {
+                    assert!(normal.is_finite());
+                }
+                if let Some(normal) = pattern.facets_normal(point, DVec3::Y) {
                     assert!(normal.is_finite());
                 }
             }
