@@ -5,12 +5,14 @@
 //! replaces the facing one. Holds: pure, allocation-free; the cells are crackle's
 //! (`noise::crackle_feature_point`), searched in the 27 unit cubes around a point.
 //!
-//! Measured against POV-Ray 3.7 (renders of planes and spheres, scaled, rotated and
-//! translated, with the pattern transformed too, match povray pixel for pixel;
-//! `scripts/probe-facets.py` recovers the normals from renders lit from five directions):
-//! - `coords C` (C non-zero): the point divided by `size` (default 0.1, at least 1e-6) falls in a crackle
-//!   cell; the normal is tilted by `C` times the vector noise at the cell's feature point,
-//!   with the component along the normal removed, so every cell is one flat facet.
+//! Measured against POV-Ray 3.7 (normals recovered from 16-bit linear renders of a plane
+//! lit from five directions; then renders of planes and spheres, scaled, rotated and
+//! translated, with the pattern transformed too, match povray pixel for pixel:
+//! `scripts/probe-facets.py`):
+//! - `coords C` (C non-zero): the point divided by `size` (default 0.1, at least 1e-6)
+//!   falls in a crackle cell; the normal is tilted by `C` times the vector noise at the
+//!   cell's feature point, with the component along the normal removed, so every cell is
+//!   one flat facet.
 //! - without `coords`: the facing normal divided by `size` falls in a crackle cell, and the
 //!   normal becomes the direction of that cell's feature point: normals are snapped to a
 //!   jittered grid of directions, so the facets depend on the surface's curvature only.
