@@ -57,7 +57,7 @@ impl Evaluator {
             "density_file" => self.density_file_operands(span, stream)?,
             "facets" => PatternKind::Facets {
                 coords: 0.0,
-                size: 0.0,
+                size: 0.1,
             },
             "gradient" => PatternKind::Gradient(self.expect_vector(stream, "a direction")?),
             "granite" => PatternKind::Granite,

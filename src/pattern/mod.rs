@@ -17,6 +17,7 @@
 
 mod default_maps;
 mod density_file;
+mod facets;
 mod fractal;
 mod geometric;
 mod noise_based;
@@ -125,7 +126,7 @@ pub enum PatternKind {
     Facets {
         /// `coords` scale (0: not given).
         coords: f64,
-        /// `size` factor (0: not given).
+        /// `size`: the cells' scale (default 0.1).
         size: f64,
     },
     /// Mandelbrot, Julia and magnet fractals.
@@ -346,6 +347,20 @@ impl PatternSpec {
         })
     }
 
+    /// For `facets`: the new (unnormalised) surface normal in pattern space at `point`, given
+    /// the unit normal `facing` the viewer in pattern space. It replaces the usual
+    /// perturbation: the bump amount does not scale it (measured). `None` for other patterns.
+    pub fn facets_normal(&self, point: DVec3, facing: DVec3) -> Option<DVec3> {
+        let PatternKind::Facets { coords, size } = self.kind else {
+            return None;
+        };
+        if !point.is_finite() {
+            return Some(facing);
+        }
+        let faceted = facets::facets_normal(self.moved_point(point), facing, coords, size);
+        Some(if faceted.is_finite() { faceted } else { facing })
+    }
+
     /// True for the patterns that use the classic turbulence inside their formula instead
     /// of moving the point with it. (The spirals do both, measured: the point is moved, then
     /// the scalar turbulence at the moved point is added. Agate too, measured: `agate
@@ -539,6 +554,10 @@ mod tests {
             PatternKind::Waves(SceneWaveSources::default()),
             PatternKind::Wood,
             PatternKind::Wrinkles,
+            PatternKind::Facets {
+                coords: 1e300,
+                size: 0.0,
+            },
         ];
         let points = [
             DVec3::ZERO,
@@ -562,6 +581,9 @@ mod tests {
                     assert!(pattern.block(point) < count);
                 }
                 if let Some(normal) = pattern.normal_perturbation(point) {
+                    assert!(normal.is_finite());
+                }
+                if let Some(normal) = pattern.facets_normal(point, DVec3::Y) {
                     assert!(normal.is_finite());
                 }
             }

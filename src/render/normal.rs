@@ -83,6 +83,10 @@ fn tilt(normal: &Normal, world_point: DVec3, surface: &SurfaceContext, depth: u3
     }
     match &normal.source {
         NormalSource::Pattern { pattern, slope_map } => {
+            let facing_in_pattern = normal.transform.outer_from_inner.matrix3.transpose() * facing;
+            if let Some(faceted) = pattern.facets_normal(point, unit(facing_in_pattern, facing)) {
+                return normal.transform.normal_to_outer(faceted);
+            }
             let perturbation = match pattern.normal_perturbation(point) {
                 Some(vector) => vector,
                 None => {
