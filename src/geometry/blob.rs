@@ -5,12 +5,14 @@
 //! same components are active, the field is a quartic in the ray parameter, solved exactly),
 //! inside test (field above the threshold), outward normals (against the field gradient),
 //! bounds. Holds: at most [`MAX_ROOTS`] crossings are reported, the nearest ahead first when
-//! there are more; per-ray work uses a per-thread scratch vector that is reused.
+//! there are more; elements are stored in the order of a per-blob [`Bvh`] over their regions
+//! of influence, so a ray or point only visits the elements whose boxes it meets; per-ray work
+//! uses per-thread scratch vectors that are reused.
 
 use super::roots::Roots;
 use super::roots::CROSSING_BUFFER;
 use super::torus::{real_roots_between, MAX_DEGREE};
-use crate::accel::Aabb;
+use crate::accel::{Aabb, Bvh};
 use crate::scene::{Blob as SceneBlob, BlobKind};
 use glam::{DAffine3, DVec3};
 use std::cell::RefCell;
@@ -53,6 +55,51 @@ impl Element {
         }
     }
 
+    /// Where the line `origin + t direction` (blob space) runs through this element's region
+    /// of influence, with the field there as a quartic in `t`; `None` when it misses.
+    fn interval(&self, origin: DVec3, direction: DVec3) -> Option<Active> {
+        let q0 = self.component_from_blob.transform_point3(origin);
+        let qd = self.component_from_blob.transform_vector3(direction);
+        let (a, b, c) = self.distance_squared(q0, qd);
+        let k = self.inverse_radius_squared;
+        // Inside the radius: a t² + b t + c < R².
+        let (mut start, mut end) = super::roots::solve_quadratic(a, 0.5 * b, c - 1.0 / k)?;
+        if a <= 0.0 {
+            return None;
+        }
+        if self.axis != DVec3::ZERO {
+            let (oa, da) = ((q0 - self.centre).dot(self.axis), qd.dot(self.axis));
+            if da == 0.0 {
+                if oa < self.slab.0 || oa > self.slab.1 {
+                    return None;
+                }
+            } else {
+                let first = (self.slab.0 - oa) / da;
+                let second = (self.slab.1 - oa) / da;
+                start = start.max(first.min(second));
+                end = end.min(first.max(second));
+            }
+        }
+        if start.partial_cmp(&end) != Some(std::cmp::Ordering::Less) {
+            return None;
+        }
+        let (p2, p1, p0) = (-k * a, -k * b, 1.0 - k * c);
+        let s = self.strength;
+        let quartic = [
+            s * p0 * p0,
+            s * 2.0 * p1 * p0,
+            s * (p1 * p1 + 2.0 * p2 * p0),
+            s * 2.0 * p2 * p1,
+            s * p2 * p2,
+        ];
+        Some(Active {
+            start,
+            end,
+            quartic,
+            strength: s,
+        })
+    }
+
     /// The field at blob-space `point`, and its gradient.
     fn field(&self, point: DVec3) -> (f64, DVec3) {
         let q = self.component_from_blob.transform_point3(point);
@@ -82,7 +129,10 @@ impl Element {
 #[derive(Clone, Debug)]
 pub struct Blob {
     threshold: f64,
+    /// Elements in the order of `tree`'s leaves.
     elements: Vec<Element>,
+    /// Hierarchy over the blob-space boxes of the elements' regions of influence.
+    tree: Bvh,
     bounds: Aabb,
 }
 
@@ -93,23 +143,41 @@ struct Active {
     start: f64,
     end: f64,
     quartic: [f64; 5],
+    /// The element's strength: the field's largest value on the interval when positive.
+    strength: f64,
 }
 
 /// Where an element's interval starts or ends: ray parameter, interval index, entering.
 type Event = (f64, usize, bool);
 
-thread_local! {
-    /// Per-thread scratch: active intervals and sorted interval ends.
-    static SCRATCH: RefCell<(Vec<Active>, Vec<Event>)> =
-        const { RefCell::new((Vec::new(), Vec::new())) };
+/// Reusable per-ray storage: the intervals the ray crosses, their sorted ends, and the
+/// intervals covering the current stretch of the ray.
+#[derive(Default)]
+struct Scratch {
+    intervals: Vec<Active>,
+    events: Vec<Event>,
+    covering: Vec<usize>,
 }
+
+thread_local! {
+    /// Per-thread scratch, reused from ray to ray.
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
+}
+
+/// Relative widening of each element's box, so rounding in the box test never drops an
+/// element whose interval the exact quadratic would find.
+const BOX_PADDING: f64 = 1e-9;
+
+/// Relative margin below the threshold under which a stretch of the ray whose fields cannot
+/// sum to more counts as never reaching it (so rounding cannot hide a grazing crossing).
+const UNREACHABLE_MARGIN: f64 = 1e-9;
 
 impl Blob {
     /// A blob from the scene's description; `None` when no component has a usable radius
     /// and transform.
     pub fn new(blob: &SceneBlob) -> Option<Blob> {
         let mut elements = Vec::new();
-        let mut bounds = Aabb::EMPTY;
+        let mut element_bounds = Vec::new();
         for component in &blob.components {
             let radius = component.radius;
             let forward = component.transform.outer_from_inner;
@@ -133,11 +201,17 @@ impl Blob {
                 strength: component.strength,
             };
             let reach = DVec3::splat(radius);
+            // Blob-space box around the balls of influence at `points` (component space).
+            let influence = |points: &[DVec3]| {
+                let corners = points.iter().flat_map(|&p| [p - reach, p + reach]);
+                Aabb::from_points(corners)
+                    .transformed(&forward)
+                    .padded(BOX_PADDING, 0.0)
+            };
             match component.kind {
                 BlobKind::Sphere { centre } => {
                     elements.push(Element { centre, ..base });
-                    let local = Aabb::from_points([centre - reach, centre + reach]);
-                    bounds = bounds.union(&local.transformed(&forward));
+                    element_bounds.push(influence(&[centre]));
                 }
                 BlobKind::Cylinder { end1, end2 } => {
                     let Some(axis) = (end2 - end1).try_normalize() else {
@@ -163,38 +237,51 @@ impl Blob {
                         slab: (0.0, f64::INFINITY),
                         ..base
                     });
-                    let local =
-                        Aabb::from_points([end1 - reach, end1 + reach, end2 - reach, end2 + reach]);
-                    bounds = bounds.union(&local.transformed(&forward));
+                    element_bounds.push(influence(&[end1, end2]));
+                    element_bounds.push(influence(&[end1]));
+                    element_bounds.push(influence(&[end2]));
                 }
             }
         }
-        let usable = !elements.is_empty() && blob.threshold.is_finite();
-        usable.then_some(Blob {
+        let usable = !elements.is_empty()
+            && blob.threshold.is_finite()
+            && element_bounds.iter().all(Aabb::is_finite);
+        if !usable {
+            return None;
+        }
+        let bounds = element_bounds
+            .iter()
+            .fold(Aabb::EMPTY, |all, element| all.union(element));
+        let (tree, order) = Bvh::build(&element_bounds);
+        let elements = order
+            .iter()
+            .map(|&index| elements[index as usize])
+            .collect();
+        Some(Blob {
             threshold: blob.threshold,
             elements,
+            tree,
             bounds,
         })
     }
 
     /// The summed field at `point`, and its gradient.
     fn field(&self, point: DVec3) -> (f64, DVec3) {
-        self.elements
-            .iter()
-            .map(|element| element.field(point))
-            .fold((0.0, DVec3::ZERO), |(v, g), (ev, eg)| (v + ev, g + eg))
+        let (mut value, mut gradient) = (0.0, DVec3::ZERO);
+        self.tree.any_containing(point, |position| {
+            let (element_value, element_gradient) = self.elements[position].field(point);
+            value += element_value;
+            gradient += element_gradient;
+            false
+        });
+        (value, gradient)
     }
 
     /// Pushes the crossings of the line `origin + t direction`.
     pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
         SCRATCH.with(|scratch| match scratch.try_borrow_mut() {
-            Ok(mut scratch) => {
-                let (active, events) = &mut *scratch;
-                self.intersect_with(origin, direction, roots, active, events);
-            }
-            Err(_) => {
-                self.intersect_with(origin, direction, roots, &mut Vec::new(), &mut Vec::new())
-            }
+            Ok(mut scratch) => self.intersect_with(origin, direction, roots, &mut scratch),
+            Err(_) => self.intersect_with(origin, direction, roots, &mut Scratch::default()),
         });
     }
 
@@ -203,73 +290,39 @@ impl Blob {
         origin: DVec3,
         direction: DVec3,
         roots: &mut Roots,
-        active: &mut Vec<Active>,
-        events: &mut Vec<Event>,
+        scratch: &mut Scratch,
     ) {
-        active.clear();
+        let Scratch {
+            intervals,
+            events,
+            covering,
+        } = scratch;
+        intervals.clear();
         events.clear();
-        for element in &self.elements {
-            let q0 = element.component_from_blob.transform_point3(origin);
-            let qd = element.component_from_blob.transform_vector3(direction);
-            let (a, b, c) = element.distance_squared(q0, qd);
-            let k = element.inverse_radius_squared;
-            // Inside the radius: a t² + b t + c < R².
-            let Some((mut start, mut end)) = super::roots::solve_quadratic(a, 0.5 * b, c - 1.0 / k)
-            else {
-                continue;
-            };
-            if a <= 0.0 {
-                continue;
-            }
-            if element.axis != DVec3::ZERO {
-                let (oa, da) = (
-                    (q0 - element.centre).dot(element.axis),
-                    qd.dot(element.axis),
-                );
-                if da == 0.0 {
-                    if oa < element.slab.0 || oa > element.slab.1 {
-                        continue;
-                    }
-                } else {
-                    let first = (element.slab.0 - oa) / da;
-                    let second = (element.slab.1 - oa) / da;
-                    start = start.max(first.min(second));
-                    end = end.min(first.max(second));
+        covering.clear();
+        let inverse_direction = direction.recip();
+        self.tree.for_each_on_ray(
+            origin,
+            inverse_direction,
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            |position| {
+                if let Some(interval) = self.elements[position].interval(origin, direction) {
+                    events.push((interval.start, intervals.len(), true));
+                    events.push((interval.end, intervals.len(), false));
+                    intervals.push(interval);
                 }
-            }
-            if start.partial_cmp(&end) != Some(std::cmp::Ordering::Less) {
-                continue;
-            }
-            let (p2, p1, p0) = (-k * a, -k * b, 1.0 - k * c);
-            let s = element.strength;
-            let quartic = [
-                s * p0 * p0,
-                s * 2.0 * p1 * p0,
-                s * (p1 * p1 + 2.0 * p2 * p0),
-                s * 2.0 * p2 * p1,
-                s * p2 * p2,
-            ];
-            events.push((start, active.len(), true));
-            events.push((end, active.len(), false));
-            active.push(Active {
-                start,
-                end,
-                quartic,
-            });
-        }
+            },
+        );
         events.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut sum = [0.0; 5];
         let mut crossings = [(0.0, 0u8); CROSSING_BUFFER];
         let mut count = 0;
         for pair in 0..events.len() {
             let (at, index, entering) = events[pair];
-            let quartic = active[index].quartic;
-            for (total, term) in sum.iter_mut().zip(quartic) {
-                if entering {
-                    *total += term;
-                } else {
-                    *total -= term;
-                }
+            if entering {
+                covering.push(index);
+            } else if let Some(slot) = covering.iter().position(|&open| open == index) {
+                covering.swap_remove(slot);
             }
             let Some(&(next, _, _)) = events.get(pair + 1) else {
                 break;
@@ -277,16 +330,21 @@ impl Blob {
             if next <= at {
                 continue;
             }
-            // Recompute the sum from the active set to avoid drift.
-            let mut exact = [0.0; 5];
-            for interval in active.iter() {
-                if interval.start <= at && interval.end >= next {
-                    for (total, term) in exact.iter_mut().zip(interval.quartic) {
-                        *total += term;
-                    }
+            // Each stretch sums its covering fields afresh, so no rounding drifts along the
+            // ray. The field there is at most the sum of the positive strengths (each falloff
+            // is between 0 and 1): stretches that cannot reach the threshold are skipped.
+            let mut sum = [0.0; 5];
+            let mut ceiling = 0.0;
+            for &open in covering.iter() {
+                let interval = &intervals[open];
+                for (total, term) in sum.iter_mut().zip(interval.quartic) {
+                    *total += term;
                 }
+                ceiling += interval.strength.max(0.0);
             }
-            sum = exact;
+            if ceiling < self.threshold * (1.0 - UNREACHABLE_MARGIN) {
+                continue;
+            }
             let coefficients = [sum[4], sum[3], sum[2], sum[1], sum[0] - self.threshold];
             let mut found = [0.0; MAX_DEGREE];
             let roots_found = real_roots_between(&coefficients, at, next, &mut found);
