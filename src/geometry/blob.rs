@@ -10,7 +10,7 @@
 //! uses per-thread scratch vectors that are reused.
 
 use super::roots::Roots;
-use super::roots::CROSSING_BUFFER;
+use super::roots::MAX_ROOTS;
 use super::torus::{real_roots_between, MAX_DEGREE};
 use crate::accel::{Aabb, Bvh};
 use crate::scene::{Blob as SceneBlob, BlobKind};
@@ -92,11 +92,13 @@ impl Element {
             s * 2.0 * p2 * p1,
             s * p2 * p2,
         ];
+        // The falloff peaks where the line passes nearest the centre or axis.
+        let peak_falloff = (1.0 - k * (c - b * b / (4.0 * a))).clamp(0.0, 1.0);
         Some(Active {
             start,
             end,
             quartic,
-            strength: s,
+            peak: s.max(0.0) * peak_falloff * peak_falloff,
         })
     }
 
@@ -143,8 +145,9 @@ struct Active {
     start: f64,
     end: f64,
     quartic: [f64; 5],
-    /// The element's strength: the field's largest value on the interval when positive.
-    strength: f64,
+    /// An upper bound on the element's field along the interval (zero for a negative
+    /// strength).
+    peak: f64,
 }
 
 /// Where an element's interval starts or ends: ray parameter, interval index, entering.
@@ -171,6 +174,16 @@ const BOX_PADDING: f64 = 1e-9;
 /// Relative margin below the threshold under which a stretch of the ray whose fields cannot
 /// sum to more counts as never reaching it (so rounding cannot hide a grazing crossing).
 const UNREACHABLE_MARGIN: f64 = 1e-9;
+
+/// Moves the set of intervals covering the ray across `event`: forward (`forward`) enters
+/// or leaves its interval as the event says, backward does the opposite.
+fn apply(covering: &mut Vec<usize>, (_, index, entering): Event, forward: bool) {
+    if entering == forward {
+        covering.push(index);
+    } else if let Some(slot) = covering.iter().position(|&open| open == index) {
+        covering.swap_remove(slot);
+    }
+}
 
 impl Blob {
     /// A blob from the scene's description; `None` when no component has a usable radius
@@ -314,48 +327,113 @@ impl Blob {
                 }
             },
         );
-        events.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut crossings = [(0.0, 0u8); CROSSING_BUFFER];
-        let mut count = 0;
-        for pair in 0..events.len() {
-            let (at, index, entering) = events[pair];
-            if entering {
-                covering.push(index);
-            } else if let Some(slot) = covering.iter().position(|&open| open == index) {
-                covering.swap_remove(slot);
-            }
-            let Some(&(next, _, _)) = events.get(pair + 1) else {
-                break;
-            };
-            if next <= at {
-                continue;
-            }
-            // Each stretch sums its covering fields afresh, so no rounding drifts along the
-            // ray. The field there is at most the sum of the positive strengths (each falloff
-            // is between 0 and 1): stretches that cannot reach the threshold are skipped.
-            let mut sum = [0.0; 5];
-            let mut ceiling = 0.0;
-            for &open in covering.iter() {
-                let interval = &intervals[open];
-                for (total, term) in sum.iter_mut().zip(interval.quartic) {
-                    *total += term;
-                }
-                ceiling += interval.strength.max(0.0);
-            }
-            if ceiling < self.threshold * (1.0 - UNREACHABLE_MARGIN) {
-                continue;
-            }
-            let coefficients = [sum[4], sum[3], sum[2], sum[1], sum[0] - self.threshold];
-            let mut found = [0.0; MAX_DEGREE];
-            let roots_found = real_roots_between(&coefficients, at, next, &mut found);
+        // Events at the same parameter may come in any order: a stretch starts only after all
+        // of them are applied.
+        events.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        // Stretch `pair` runs from event `pair` to event `pair + 1`, covered by the intervals
+        // entered and not left by event `pair`. Walk forward from the stretch holding the
+        // origin until enough crossings lie ahead, then backward if room is left: the same
+        // crossings `Roots::push_nearest` would keep from the whole line.
+        let Some(last_pair) = events.len().checked_sub(2) else {
+            return;
+        };
+        let origin_pair = events[..=last_pair]
+            .iter()
+            .zip(&events[1..])
+            .position(|(_, next)| next.0 >= 0.0)
+            .unwrap_or(last_pair);
+        for &event in &events[..origin_pair] {
+            apply(covering, event, true);
+        }
+        let mut ahead = [0.0; MAX_ROOTS];
+        let mut ahead_count = 0;
+        let mut behind = [0.0; MAX_ROOTS];
+        let mut behind_count = 0;
+        let mut found = [0.0; MAX_DEGREE];
+        let mut pair = origin_pair;
+        while pair <= last_pair && ahead_count < MAX_ROOTS {
+            apply(covering, events[pair], true);
+            let roots_found = self.stretch_crossings(intervals, covering, events, pair, &mut found);
             for &t in &found[..roots_found] {
-                if count < CROSSING_BUFFER && (t < next || pair + 2 == events.len()) {
-                    crossings[count] = (t, 0);
-                    count += 1;
+                if t >= 0.0 && ahead_count < MAX_ROOTS {
+                    ahead[ahead_count] = t;
+                    ahead_count += 1;
+                } else if t < 0.0 && behind_count < MAX_ROOTS {
+                    behind[behind_count] = t;
+                    behind_count += 1;
+                }
+            }
+            pair += 1;
+        }
+        // Crossings behind the origin in its own stretch were found ascending: nearest last.
+        behind[..behind_count].reverse();
+        if ahead_count + behind_count < MAX_ROOTS && origin_pair > 0 {
+            // Undo the events after the origin's stretch, so the covering set is its own.
+            for &event in events[origin_pair + 1..pair].iter().rev() {
+                apply(covering, event, false);
+            }
+            for pair in (0..origin_pair).rev() {
+                if ahead_count + behind_count >= MAX_ROOTS {
+                    break;
+                }
+                apply(covering, events[pair + 1], false);
+                let roots_found =
+                    self.stretch_crossings(intervals, covering, events, pair, &mut found);
+                for &t in found[..roots_found].iter().rev() {
+                    if behind_count < MAX_ROOTS {
+                        behind[behind_count] = t;
+                        behind_count += 1;
+                    }
                 }
             }
         }
-        roots.push_nearest(&mut crossings[..count]);
+        let kept_behind = behind_count.min(MAX_ROOTS - ahead_count);
+        for &t in ahead[..ahead_count].iter().chain(&behind[..kept_behind]) {
+            roots.push(t, 0);
+        }
+    }
+
+    /// The crossings on stretch `pair` of the sorted `events` (from event `pair` to the next,
+    /// field summed over the `covering` intervals), ascending; the stretch's far end counts
+    /// only on the last stretch, so a crossing at a shared end is reported once.
+    fn stretch_crossings(
+        &self,
+        intervals: &[Active],
+        covering: &[usize],
+        events: &[Event],
+        pair: usize,
+        found: &mut [f64; MAX_DEGREE],
+    ) -> usize {
+        let (at, next) = (events[pair].0, events[pair + 1].0);
+        if next <= at {
+            return 0;
+        }
+        // Each stretch sums its covering fields afresh, so no rounding drifts along the ray.
+        // The field there is at most the sum of the covering fields' peaks: stretches that
+        // cannot reach the threshold are skipped.
+        let mut sum = [0.0; 5];
+        let mut ceiling = 0.0;
+        for &open in covering {
+            let interval = &intervals[open];
+            for (total, term) in sum.iter_mut().zip(interval.quartic) {
+                *total += term;
+            }
+            ceiling += interval.peak;
+        }
+        if ceiling < self.threshold * (1.0 - UNREACHABLE_MARGIN) {
+            return 0;
+        }
+        let coefficients = [sum[4], sum[3], sum[2], sum[1], sum[0] - self.threshold];
+        let roots_found = real_roots_between(&coefficients, at, next, found);
+        let is_last = pair + 2 == events.len();
+        let mut kept = 0;
+        for index in 0..roots_found {
+            if found[index] < next || is_last {
+                found[kept] = found[index];
+                kept += 1;
+            }
+        }
+        kept
     }
 
     /// True when the field at `point` exceeds the threshold.
