@@ -492,6 +492,52 @@ mod tests {
     }
 
     #[test]
+    fn many_crossings_keep_the_nearest_ahead_then_the_nearest_behind() {
+        // Twelve separate spheres centred at x = -11, -9, ..., 11: 24 crossings on the x axis.
+        let components = (0..12)
+            .map(|i| sphere(DVec3::new(2.0 * i as f64 - 11.0, 0.0, 0.0), 0.8, 1.0))
+            .collect();
+        let blob = Blob::new(&SceneBlob {
+            threshold: 0.5,
+            components,
+        })
+        .unwrap();
+        // (1 - r²/R²)² = 0.5 at the surface.
+        let surface = 0.8 * (1.0 - 0.5f64.sqrt()).sqrt();
+        let crossings_from = |x: f64| {
+            let mut roots = Roots::new();
+            blob.intersect(DVec3::new(x, 0.0, 0.0), DVec3::X, &mut roots);
+            let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
+            found.sort_by(f64::total_cmp);
+            found
+        };
+        let expected = |origin: f64, centres: &[f64]| {
+            let mut all: Vec<f64> = centres
+                .iter()
+                .flat_map(|c| [c - origin - surface, c - origin + surface])
+                .collect();
+            all.sort_by(f64::total_cmp);
+            all
+        };
+        let close = |found: &[f64], wanted: &[f64]| {
+            found.len() == wanted.len()
+                && found.iter().zip(wanted).all(|(f, w)| (f - w).abs() < 1e-9)
+        };
+        // Eight crossings ahead: nothing behind is kept.
+        let found = crossings_from(0.0);
+        assert!(
+            close(&found, &expected(0.0, &[1.0, 3.0, 5.0, 7.0])),
+            "{found:?}"
+        );
+        // Four ahead, so the four nearest behind fill the rest.
+        let found = crossings_from(8.0);
+        assert!(
+            close(&found, &expected(8.0, &[5.0, 7.0, 9.0, 11.0])),
+            "{found:?}"
+        );
+    }
+
+    #[test]
     fn blob_crossings_agree_with_inside_test() {
         let mut cylinder = sphere(DVec3::ZERO, 0.8, 1.5);
         cylinder.kind = BlobKind::Cylinder {
