@@ -4,8 +4,9 @@
 //! a transform into the blob's space. Out: every crossing of a line (per interval where the
 //! same components are active, the field is a quartic in the ray parameter, solved exactly),
 //! inside test (field above the threshold), outward normals (against the field gradient),
-//! bounds. Holds: at most [`MAX_ROOTS`] crossings are reported, the nearest ahead first when
-//! there are more; elements are stored in the order of a per-blob [`Bvh`] over their regions
+//! bounds. Holds: at most [`MAX_ROOTS`] crossings are reported: the nearest ahead of the
+//! origin, then the nearest behind it (stretches are solved outward from the origin, only until
+//! those are found); elements are stored in the order of a per-blob [`Bvh`] over their regions
 //! of influence, so a ray or point only visits the elements whose boxes it meets; per-ray work
 //! uses per-thread scratch vectors that are reused.
 
