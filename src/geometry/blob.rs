@@ -4,13 +4,16 @@
 //! a transform into the blob's space. Out: every crossing of a line (per interval where the
 //! same components are active, the field is a quartic in the ray parameter, solved exactly),
 //! inside test (field above the threshold), outward normals (against the field gradient),
-//! bounds. Holds: at most [`MAX_ROOTS`] crossings are reported, the nearest ahead first when
-//! there are more; per-ray work uses a per-thread scratch vector that is reused.
+//! bounds. Holds: at most [`MAX_ROOTS`] crossings are reported: the nearest ahead of the
+//! origin, then the nearest behind it (stretches are solved outward from the origin, only until
+//! those are found); elements are stored in the order of a per-blob [`Bvh`] over their regions
+//! of influence, so a ray or point only visits the elements whose boxes it meets; per-ray work
+//! uses per-thread scratch vectors that are reused.
 
 use super::roots::Roots;
-use super::roots::CROSSING_BUFFER;
+use super::roots::MAX_ROOTS;
 use super::torus::{real_roots_between, MAX_DEGREE};
-use crate::accel::Aabb;
+use crate::accel::{Aabb, Bvh};
 use crate::scene::{Blob as SceneBlob, BlobKind};
 use glam::{DAffine3, DVec3};
 use std::cell::RefCell;
@@ -53,6 +56,53 @@ impl Element {
         }
     }
 
+    /// Where the line `origin + t direction` (blob space) runs through this element's region
+    /// of influence, with the field there as a quartic in `t`; `None` when it misses.
+    fn interval(&self, origin: DVec3, direction: DVec3) -> Option<Active> {
+        let q0 = self.component_from_blob.transform_point3(origin);
+        let qd = self.component_from_blob.transform_vector3(direction);
+        let (a, b, c) = self.distance_squared(q0, qd);
+        let k = self.inverse_radius_squared;
+        // Inside the radius: a t² + b t + c < R².
+        let (mut start, mut end) = super::roots::solve_quadratic(a, 0.5 * b, c - 1.0 / k)?;
+        if a <= 0.0 {
+            return None;
+        }
+        if self.axis != DVec3::ZERO {
+            let (oa, da) = ((q0 - self.centre).dot(self.axis), qd.dot(self.axis));
+            if da == 0.0 {
+                if oa < self.slab.0 || oa > self.slab.1 {
+                    return None;
+                }
+            } else {
+                let first = (self.slab.0 - oa) / da;
+                let second = (self.slab.1 - oa) / da;
+                start = start.max(first.min(second));
+                end = end.min(first.max(second));
+            }
+        }
+        if start.partial_cmp(&end) != Some(std::cmp::Ordering::Less) {
+            return None;
+        }
+        let (p2, p1, p0) = (-k * a, -k * b, 1.0 - k * c);
+        let s = self.strength;
+        let quartic = [
+            s * p0 * p0,
+            s * 2.0 * p1 * p0,
+            s * (p1 * p1 + 2.0 * p2 * p0),
+            s * 2.0 * p2 * p1,
+            s * p2 * p2,
+        ];
+        // The falloff peaks where the line passes nearest the centre or axis.
+        let peak_falloff = (1.0 - k * (c - b * b / (4.0 * a))).clamp(0.0, 1.0);
+        Some(Active {
+            start,
+            end,
+            quartic,
+            peak: s.max(0.0) * peak_falloff * peak_falloff,
+        })
+    }
+
     /// The field at blob-space `point`, and its gradient.
     fn field(&self, point: DVec3) -> (f64, DVec3) {
         let q = self.component_from_blob.transform_point3(point);
@@ -82,7 +132,10 @@ impl Element {
 #[derive(Clone, Debug)]
 pub struct Blob {
     threshold: f64,
+    /// Elements in the order of `tree`'s leaves.
     elements: Vec<Element>,
+    /// Hierarchy over the blob-space boxes of the elements' regions of influence.
+    tree: Bvh,
     bounds: Aabb,
 }
 
@@ -93,15 +146,44 @@ struct Active {
     start: f64,
     end: f64,
     quartic: [f64; 5],
+    /// An upper bound on the element's field along the interval (zero for a negative
+    /// strength).
+    peak: f64,
 }
 
 /// Where an element's interval starts or ends: ray parameter, interval index, entering.
 type Event = (f64, usize, bool);
 
+/// Reusable per-ray storage: the intervals the ray crosses, their sorted ends, and the
+/// intervals covering the current stretch of the ray.
+#[derive(Default)]
+struct Scratch {
+    intervals: Vec<Active>,
+    events: Vec<Event>,
+    covering: Vec<usize>,
+}
+
 thread_local! {
-    /// Per-thread scratch: active intervals and sorted interval ends.
-    static SCRATCH: RefCell<(Vec<Active>, Vec<Event>)> =
-        const { RefCell::new((Vec::new(), Vec::new())) };
+    /// Per-thread scratch, reused from ray to ray.
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
+}
+
+/// Relative widening of each element's box, so rounding in the box test never drops an
+/// element whose interval the exact quadratic would find.
+const BOX_PADDING: f64 = 1e-9;
+
+/// Relative margin below the threshold under which a stretch of the ray whose fields cannot
+/// sum to more counts as never reaching it (so rounding cannot hide a grazing crossing).
+const UNREACHABLE_MARGIN: f64 = 1e-9;
+
+/// Moves the set of intervals covering the ray across `event`: forward (`forward`) enters
+/// or leaves its interval as the event says, backward does the opposite.
+fn apply(covering: &mut Vec<usize>, (_, index, entering): Event, forward: bool) {
+    if entering == forward {
+        covering.push(index);
+    } else if let Some(slot) = covering.iter().position(|&open| open == index) {
+        covering.swap_remove(slot);
+    }
 }
 
 impl Blob {
@@ -109,7 +191,7 @@ impl Blob {
     /// and transform.
     pub fn new(blob: &SceneBlob) -> Option<Blob> {
         let mut elements = Vec::new();
-        let mut bounds = Aabb::EMPTY;
+        let mut element_bounds = Vec::new();
         for component in &blob.components {
             let radius = component.radius;
             let forward = component.transform.outer_from_inner;
@@ -133,11 +215,17 @@ impl Blob {
                 strength: component.strength,
             };
             let reach = DVec3::splat(radius);
+            // Blob-space box around the balls of influence at `points` (component space).
+            let influence = |points: &[DVec3]| {
+                let corners = points.iter().flat_map(|&p| [p - reach, p + reach]);
+                Aabb::from_points(corners)
+                    .transformed(&forward)
+                    .padded(BOX_PADDING, 0.0)
+            };
             match component.kind {
                 BlobKind::Sphere { centre } => {
                     elements.push(Element { centre, ..base });
-                    let local = Aabb::from_points([centre - reach, centre + reach]);
-                    bounds = bounds.union(&local.transformed(&forward));
+                    element_bounds.push(influence(&[centre]));
                 }
                 BlobKind::Cylinder { end1, end2 } => {
                     let Some(axis) = (end2 - end1).try_normalize() else {
@@ -163,38 +251,51 @@ impl Blob {
                         slab: (0.0, f64::INFINITY),
                         ..base
                     });
-                    let local =
-                        Aabb::from_points([end1 - reach, end1 + reach, end2 - reach, end2 + reach]);
-                    bounds = bounds.union(&local.transformed(&forward));
+                    element_bounds.push(influence(&[end1, end2]));
+                    element_bounds.push(influence(&[end1]));
+                    element_bounds.push(influence(&[end2]));
                 }
             }
         }
-        let usable = !elements.is_empty() && blob.threshold.is_finite();
-        usable.then_some(Blob {
+        let usable = !elements.is_empty()
+            && blob.threshold.is_finite()
+            && element_bounds.iter().all(Aabb::is_finite);
+        if !usable {
+            return None;
+        }
+        let bounds = element_bounds
+            .iter()
+            .fold(Aabb::EMPTY, |all, element| all.union(element));
+        let (tree, order) = Bvh::build(&element_bounds);
+        let elements = order
+            .iter()
+            .map(|&index| elements[index as usize])
+            .collect();
+        Some(Blob {
             threshold: blob.threshold,
             elements,
+            tree,
             bounds,
         })
     }
 
     /// The summed field at `point`, and its gradient.
     fn field(&self, point: DVec3) -> (f64, DVec3) {
-        self.elements
-            .iter()
-            .map(|element| element.field(point))
-            .fold((0.0, DVec3::ZERO), |(v, g), (ev, eg)| (v + ev, g + eg))
+        let (mut value, mut gradient) = (0.0, DVec3::ZERO);
+        self.tree.any_containing(point, |position| {
+            let (element_value, element_gradient) = self.elements[position].field(point);
+            value += element_value;
+            gradient += element_gradient;
+            false
+        });
+        (value, gradient)
     }
 
     /// Pushes the crossings of the line `origin + t direction`.
     pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
         SCRATCH.with(|scratch| match scratch.try_borrow_mut() {
-            Ok(mut scratch) => {
-                let (active, events) = &mut *scratch;
-                self.intersect_with(origin, direction, roots, active, events);
-            }
-            Err(_) => {
-                self.intersect_with(origin, direction, roots, &mut Vec::new(), &mut Vec::new())
-            }
+            Ok(mut scratch) => self.intersect_with(origin, direction, roots, &mut scratch),
+            Err(_) => self.intersect_with(origin, direction, roots, &mut Scratch::default()),
         });
     }
 
@@ -203,101 +304,137 @@ impl Blob {
         origin: DVec3,
         direction: DVec3,
         roots: &mut Roots,
-        active: &mut Vec<Active>,
-        events: &mut Vec<Event>,
+        scratch: &mut Scratch,
     ) {
-        active.clear();
+        let Scratch {
+            intervals,
+            events,
+            covering,
+        } = scratch;
+        intervals.clear();
         events.clear();
-        for element in &self.elements {
-            let q0 = element.component_from_blob.transform_point3(origin);
-            let qd = element.component_from_blob.transform_vector3(direction);
-            let (a, b, c) = element.distance_squared(q0, qd);
-            let k = element.inverse_radius_squared;
-            // Inside the radius: a t² + b t + c < R².
-            let Some((mut start, mut end)) = super::roots::solve_quadratic(a, 0.5 * b, c - 1.0 / k)
-            else {
-                continue;
-            };
-            if a <= 0.0 {
-                continue;
-            }
-            if element.axis != DVec3::ZERO {
-                let (oa, da) = (
-                    (q0 - element.centre).dot(element.axis),
-                    qd.dot(element.axis),
-                );
-                if da == 0.0 {
-                    if oa < element.slab.0 || oa > element.slab.1 {
-                        continue;
-                    }
-                } else {
-                    let first = (element.slab.0 - oa) / da;
-                    let second = (element.slab.1 - oa) / da;
-                    start = start.max(first.min(second));
-                    end = end.min(first.max(second));
+        covering.clear();
+        let inverse_direction = direction.recip();
+        self.tree.for_each_on_ray(
+            origin,
+            inverse_direction,
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            |position| {
+                if let Some(interval) = self.elements[position].interval(origin, direction) {
+                    events.push((interval.start, intervals.len(), true));
+                    events.push((interval.end, intervals.len(), false));
+                    intervals.push(interval);
                 }
-            }
-            if start.partial_cmp(&end) != Some(std::cmp::Ordering::Less) {
-                continue;
-            }
-            let (p2, p1, p0) = (-k * a, -k * b, 1.0 - k * c);
-            let s = element.strength;
-            let quartic = [
-                s * p0 * p0,
-                s * 2.0 * p1 * p0,
-                s * (p1 * p1 + 2.0 * p2 * p0),
-                s * 2.0 * p2 * p1,
-                s * p2 * p2,
-            ];
-            events.push((start, active.len(), true));
-            events.push((end, active.len(), false));
-            active.push(Active {
-                start,
-                end,
-                quartic,
-            });
+            },
+        );
+        // Events at the same parameter may come in any order: a stretch starts only after all
+        // of them are applied.
+        events.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        // Stretch `pair` runs from event `pair` to event `pair + 1`, covered by the intervals
+        // entered and not left by event `pair`. Walk forward from the stretch holding the
+        // origin until enough crossings lie ahead, then backward if room is left: the same
+        // crossings `Roots::push_nearest` would keep from the whole line.
+        let Some(last_pair) = events.len().checked_sub(2) else {
+            return;
+        };
+        let origin_pair = events[..=last_pair]
+            .iter()
+            .zip(&events[1..])
+            .position(|(_, next)| next.0 >= 0.0)
+            .unwrap_or(last_pair);
+        for &event in &events[..origin_pair] {
+            apply(covering, event, true);
         }
-        events.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut sum = [0.0; 5];
-        let mut crossings = [(0.0, 0u8); CROSSING_BUFFER];
-        let mut count = 0;
-        for pair in 0..events.len() {
-            let (at, index, entering) = events[pair];
-            let quartic = active[index].quartic;
-            for (total, term) in sum.iter_mut().zip(quartic) {
-                if entering {
-                    *total += term;
-                } else {
-                    *total -= term;
-                }
-            }
-            let Some(&(next, _, _)) = events.get(pair + 1) else {
-                break;
-            };
-            if next <= at {
-                continue;
-            }
-            // Recompute the sum from the active set to avoid drift.
-            let mut exact = [0.0; 5];
-            for interval in active.iter() {
-                if interval.start <= at && interval.end >= next {
-                    for (total, term) in exact.iter_mut().zip(interval.quartic) {
-                        *total += term;
-                    }
-                }
-            }
-            sum = exact;
-            let coefficients = [sum[4], sum[3], sum[2], sum[1], sum[0] - self.threshold];
-            let mut found = [0.0; MAX_DEGREE];
-            let roots_found = real_roots_between(&coefficients, at, next, &mut found);
+        let mut ahead = [0.0; MAX_ROOTS];
+        let mut ahead_count = 0;
+        let mut behind = [0.0; MAX_ROOTS];
+        let mut behind_count = 0;
+        let mut found = [0.0; MAX_DEGREE];
+        let mut pair = origin_pair;
+        while pair <= last_pair && ahead_count < MAX_ROOTS {
+            apply(covering, events[pair], true);
+            let roots_found = self.stretch_crossings(intervals, covering, events, pair, &mut found);
             for &t in &found[..roots_found] {
-                if count < CROSSING_BUFFER && (t < next || pair + 2 == events.len()) {
-                    crossings[count] = (t, 0);
-                    count += 1;
+                if t >= 0.0 && ahead_count < MAX_ROOTS {
+                    ahead[ahead_count] = t;
+                    ahead_count += 1;
+                } else if t < 0.0 && behind_count < MAX_ROOTS {
+                    behind[behind_count] = t;
+                    behind_count += 1;
+                }
+            }
+            pair += 1;
+        }
+        // Crossings behind the origin in its own stretch were found ascending: nearest last.
+        behind[..behind_count].reverse();
+        if ahead_count + behind_count < MAX_ROOTS && origin_pair > 0 {
+            // Undo the events after the origin's stretch, so the covering set is its own.
+            for &event in events[origin_pair + 1..pair].iter().rev() {
+                apply(covering, event, false);
+            }
+            for pair in (0..origin_pair).rev() {
+                if ahead_count + behind_count >= MAX_ROOTS {
+                    break;
+                }
+                apply(covering, events[pair + 1], false);
+                let roots_found =
+                    self.stretch_crossings(intervals, covering, events, pair, &mut found);
+                for &t in found[..roots_found].iter().rev() {
+                    if behind_count < MAX_ROOTS {
+                        behind[behind_count] = t;
+                        behind_count += 1;
+                    }
                 }
             }
         }
-        roots.push_nearest(&mut crossings[..count]);
+        let kept_behind = behind_count.min(MAX_ROOTS - ahead_count);
+        for &t in ahead[..ahead_count].iter().chain(&behind[..kept_behind]) {
+            roots.push(t, 0);
+        }
+    }
+
+    /// The crossings on stretch `pair` of the sorted `events` (from event `pair` to the next,
+    /// field summed over the `covering` intervals), ascending; the stretch's far end counts
+    /// only on the last stretch, so a crossing at a shared end is reported once.
+    fn stretch_crossings(
+        &self,
+        intervals: &[Active],
+        covering: &[usize],
+        events: &[Event],
+        pair: usize,
+        found: &mut [f64; MAX_DEGREE],
+    ) -> usize {
+        let (at, next) = (events[pair].0, events[pair + 1].0);
+        if next <= at {
+            return 0;
+        }
+        // Each stretch sums its covering fields afresh, so no rounding drifts along the ray.
+        // The field there is at most the sum of the covering fields' peaks: stretches that
+        // cannot reach the threshold are skipped.
+        let mut sum = [0.0; 5];
+        let mut ceiling = 0.0;
+        for &open in covering {
+            let interval = &intervals[open];
+            for (total, term) in sum.iter_mut().zip(interval.quartic) {
+                *total += term;
+            }
+            ceiling += interval.peak;
+        }
+        if ceiling < self.threshold * (1.0 - UNREACHABLE_MARGIN) {
+            return 0;
+        }
+        let coefficients = [sum[4], sum[3], sum[2], sum[1], sum[0] - self.threshold];
+        let roots_found = real_roots_between(&coefficients, at, next, found);
+        let is_last = pair + 2 == events.len();
+        let mut kept = 0;
+        for index in 0..roots_found {
+            if found[index] < next || is_last {
+                found[kept] = found[index];
+                kept += 1;
+            }
+        }
+        kept
     }
 
     /// True when the field at `point` exceeds the threshold.
@@ -353,6 +490,52 @@ mod tests {
         let normal = blob.normal(DVec3::new(-r, 0.0, 0.0)).normalize();
         assert!(normal.abs_diff_eq(-DVec3::X, 1e-9));
         assert!(blob.inside(DVec3::ZERO) && !blob.inside(DVec3::new(0.9, 0.0, 0.0)));
+    }
+
+    #[test]
+    fn many_crossings_keep_the_nearest_ahead_then_the_nearest_behind() {
+        // Twelve separate spheres centred at x = -11, -9, ..., 11: 24 crossings on the x axis.
+        let components = (0..12)
+            .map(|i| sphere(DVec3::new(2.0 * i as f64 - 11.0, 0.0, 0.0), 0.8, 1.0))
+            .collect();
+        let blob = Blob::new(&SceneBlob {
+            threshold: 0.5,
+            components,
+        })
+        .unwrap();
+        // (1 - r²/R²)² = 0.5 at the surface.
+        let surface = 0.8 * (1.0 - 0.5f64.sqrt()).sqrt();
+        let crossings_from = |x: f64| {
+            let mut roots = Roots::new();
+            blob.intersect(DVec3::new(x, 0.0, 0.0), DVec3::X, &mut roots);
+            let mut found: Vec<f64> = roots.iter().map(|r| r.0).collect();
+            found.sort_by(f64::total_cmp);
+            found
+        };
+        let expected = |origin: f64, centres: &[f64]| {
+            let mut all: Vec<f64> = centres
+                .iter()
+                .flat_map(|c| [c - origin - surface, c - origin + surface])
+                .collect();
+            all.sort_by(f64::total_cmp);
+            all
+        };
+        let close = |found: &[f64], wanted: &[f64]| {
+            found.len() == wanted.len()
+                && found.iter().zip(wanted).all(|(f, w)| (f - w).abs() < 1e-9)
+        };
+        // Eight crossings ahead: nothing behind is kept.
+        let found = crossings_from(0.0);
+        assert!(
+            close(&found, &expected(0.0, &[1.0, 3.0, 5.0, 7.0])),
+            "{found:?}"
+        );
+        // Four ahead, so the four nearest behind fill the rest.
+        let found = crossings_from(8.0);
+        assert!(
+            close(&found, &expected(8.0, &[5.0, 7.0, 9.0, 11.0])),
+            "{found:?}"
+        );
     }
 
     #[test]
