@@ -83,7 +83,7 @@ impl Evaluator {
                         }
                         Item::Block(b)
                             if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
-                                if &**w == "clipped_by" || &**w == "bounded_by") =>
+                                if matches!(&**w, "clipped_by" | "bounded_by" | "interior_texture")) =>
                         {
                             self.object_modifier(&mut object, item, stream, head)?;
                             None
@@ -318,6 +318,18 @@ impl Evaluator {
                         if let Some(interior) = interior {
                             object.interior = Some(Box::new(interior));
                         }
+                        return Ok(());
+                    }
+                    if &**w == "interior_texture" {
+                        let mut body = Stream::new(block.body.clone());
+                        let mut texture = self.eval_texture(&mut body)?;
+                        texture.transform_with_object(&object.transform().inverse());
+                        // A second one is laid on top, as with `texture` (measured).
+                        let texture = match object.interior_texture.take() {
+                            Some(below) => layered(vec![Texture::clone(&below), texture]),
+                            None => texture,
+                        };
+                        object.interior_texture = Some(Arc::new(texture));
                         return Ok(());
                     }
                     if &**w == "clipped_by" || &**w == "bounded_by" {

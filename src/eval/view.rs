@@ -87,6 +87,7 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "photons",
     "ovus",
     "lemon",
+    // Objects read their own `interior_texture`; inside `material { .. }` it is left out.
     "interior_texture",
 ];
 

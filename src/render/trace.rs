@@ -436,7 +436,7 @@ impl<'a> Tracer<'a> {
             }
             return total;
         }
-        let texture = &material.texture;
+        let texture = material.texture_facing(ray.direction, hit.normal);
         if texture.compound.is_none() {
             return self.shade_plain(ray, hit, material, texture, true, level, weight, media);
         }
