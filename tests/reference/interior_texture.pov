@@ -1,7 +1,7 @@
 // interior_texture: the texture of inside faces (rays leaving the object, backs of patches):
-// a cut-open sphere, a union passing it to children with their own texture, two layered
-// interior textures, backs of a disc, a triangle, a mesh triangle and a polygon, and a
-// shadow coloured by the inside face it crosses
+// a cut-open sphere (given in a material), a union passing it to children with their own
+// texture, two layered interior textures, backs of a disc, a triangle, a mesh triangle and
+// a polygon, and a shadow coloured by the inside face it crosses
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 background { rgb <0.2, 0.3, 0.4> }
@@ -11,7 +11,7 @@ plane { y, 0 pigment { checker rgb <0.9, 0.8, 0.2> rgb <0.2, 0.5, 0.9> } }
 #declare Outside = texture { pigment { rgb <0.9, 0.2, 0.1> } }
 #declare Inside = texture { pigment { rgb <0.1, 0.8, 0.2> } }
 sphere { <-1.9, 1.2, 0.5>, 0.7
-  texture { Outside } interior_texture { Inside normal { bumps 0.5 scale 0.1 } }
+  material { texture { Outside } interior_texture { Inside normal { bumps 0.5 scale 0.1 } } }
   clipped_by { plane { -z, 0 translate 0.3*z } }
 }
 union {
