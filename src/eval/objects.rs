@@ -3,10 +3,10 @@
 
 use super::stream::Stream;
 use super::texture_maps::{change_top_layer, layered, top_layer_finish};
-use super::value::Value;
+use super::value::{MaterialValue, Value};
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{CsgOperation, Interior, LightGroup, Object, Shape, Texture, Transform};
+use crate::scene::{CsgOperation, LightGroup, Object, Shape, Texture, Transform};
 use crate::syntax::ast::{Block, Item};
 use glam::{DAffine3, DMat3, DVec3};
 use std::rc::Rc;
@@ -83,7 +83,7 @@ impl Evaluator {
                         }
                         Item::Block(b)
                             if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
-                                if &**w == "clipped_by" || &**w == "bounded_by") =>
+                                if matches!(&**w, "clipped_by" | "bounded_by" | "interior_texture")) =>
                         {
                             self.object_modifier(&mut object, item, stream, head)?;
                             None
@@ -313,11 +313,20 @@ impl Evaluator {
                 if let crate::syntax::ast::BlockHead::Word(w) = &block.head {
                     if &**w == "material" {
                         let mut body = Stream::new(block.body.clone());
-                        let (texture, interior) = self.eval_material(&mut body)?;
-                        self.attach_texture(object, texture);
-                        if let Some(interior) = interior {
+                        let material = self.eval_material(&mut body)?;
+                        self.attach_texture(object, material.texture);
+                        if let Some(texture) = material.interior_texture {
+                            self.attach_interior_texture(object, texture);
+                        }
+                        if let Some(interior) = material.interior {
                             object.interior = Some(Box::new(interior));
                         }
+                        return Ok(());
+                    }
+                    if &**w == "interior_texture" {
+                        let mut body = Stream::new(block.body.clone());
+                        let texture = self.eval_texture(&mut body)?;
+                        self.attach_interior_texture(object, texture);
                         return Ok(());
                     }
                     if &**w == "clipped_by" || &**w == "bounded_by" {
@@ -460,6 +469,17 @@ impl Evaluator {
         object.texture = Some(Arc::new(texture));
     }
 
+    /// Attaches an `interior_texture` given in the object's outer space like
+    /// [`Self::attach_texture`]: a second one is laid on top of the first (measured).
+    fn attach_interior_texture(&mut self, object: &mut Object, mut texture: Texture) {
+        texture.transform_with_object(&object.transform().inverse());
+        let texture = match object.interior_texture.take() {
+            Some(below) => layered(vec![Texture::clone(&below), texture]),
+            None => texture,
+        };
+        object.interior_texture = Some(Arc::new(texture));
+    }
+
     /// Reads the operand of `translate`, `rotate`, `scale`, `matrix` or `transform`.
     pub(crate) fn transform_keyword(
         &mut self,
@@ -552,34 +572,45 @@ impl Evaluator {
         Ok(result)
     }
 
-    /// `material { texture { .. } interior { .. } }`.
-    pub(crate) fn eval_material(
-        &mut self,
-        stream: &mut Stream,
-    ) -> EvalResult<(Texture, Option<Interior>)> {
-        let mut texture = self.default_texture.clone();
-        let mut interior = None;
+    /// `material { texture { .. } interior_texture { .. } interior { .. } }`.
+    pub(crate) fn eval_material(&mut self, stream: &mut Stream) -> EvalResult<MaterialValue> {
+        let mut material = MaterialValue {
+            texture: self.default_texture.clone(),
+            interior_texture: None,
+            interior: None,
+        };
         while let Some(item) = self.next_item(stream)? {
             let value = match &item {
+                Item::Block(b)
+                    if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
+                        if &**w == "interior_texture") =>
+                {
+                    let mut body = Stream::new(b.body.clone());
+                    material.interior_texture = Some(self.eval_texture(&mut body)?);
+                    continue;
+                }
                 Item::Block(b) => self.eval_block(b)?,
                 Item::Expr(e) => self.eval_expr(e)?,
                 Item::Comma(_) => continue,
                 _ => return Err(self.unexpected_in(&item, "material")),
             };
             match value {
-                Value::Texture(t) => texture = (*t).clone(),
-                Value::Interior(i) => interior = Some(Rc::unwrap_or_clone(i)),
-                Value::Material(material) => {
-                    let (declared_texture, declared_interior) = Rc::unwrap_or_clone(material);
-                    texture = declared_texture;
-                    if declared_interior.is_some() {
-                        interior = declared_interior;
+                Value::Texture(t) => material.texture = (*t).clone(),
+                Value::Interior(i) => material.interior = Some(Rc::unwrap_or_clone(i)),
+                Value::Material(declared) => {
+                    let declared = Rc::unwrap_or_clone(declared);
+                    material.texture = declared.texture;
+                    if declared.interior_texture.is_some() {
+                        material.interior_texture = declared.interior_texture;
+                    }
+                    if declared.interior.is_some() {
+                        material.interior = declared.interior;
                     }
                 }
                 _ => return Err(self.unexpected_in(&item, "material")),
             }
         }
-        Ok((texture, interior))
+        Ok(material)
     }
 }
 

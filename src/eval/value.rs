@@ -34,8 +34,8 @@ pub enum Value {
     Media(Rc<crate::scene::Media>),
     /// A `density { }` block (a pigment whose colour is the density).
     Density(Rc<Pigment>),
-    /// A `material`: a texture and, when it gives one, an interior.
-    Material(Rc<(Texture, Option<Interior>)>),
+    /// A `material`: a texture and, when it gives them, an interior texture and an interior.
+    Material(Rc<MaterialValue>),
     /// A colour map.
     ColourMap(Rc<Vec<(f64, Colour)>>),
     /// A normal.
@@ -152,4 +152,15 @@ impl Value {
             Value::Spline(_) => "a spline",
         }
     }
+}
+
+/// What a `material { .. }` holds.
+#[derive(Clone, Debug)]
+pub struct MaterialValue {
+    /// The texture (the default texture unless the material gives one).
+    pub texture: Texture,
+    /// The `interior_texture`, if given.
+    pub interior_texture: Option<Texture>,
+    /// The interior, if given.
+    pub interior: Option<Interior>,
 }

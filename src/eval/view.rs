@@ -87,7 +87,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "photons",
     "ovus",
     "lemon",
-    "interior_texture",
 ];
 
 impl Evaluator {
@@ -182,6 +181,13 @@ impl Evaluator {
             _ if APPEARANCE_BLOCKS.contains(&head) => {
                 self.eval_appearance_block(head, block, stream)
             }
+            "interior_texture" => Err(self
+                .error(
+                    block.head_span,
+                    "`interior_texture` belongs in an object or a `material`",
+                )
+                .with_label("not a value of its own")
+                .into()),
             _ if UNSUPPORTED_BLOCKS.contains(&head) => {
                 // Leave the feature out of the picture but say so, so the rest still renders.
                 self.warn(

@@ -3,8 +3,8 @@
 //! In: the top-level [`Object`]s of a scene. Out: [`Primitive`]s (leaves and CSG trees) with
 //! their world bounds, the [`Material`] table, and the number of leaf shapes.
 //! Holds: transforms compose down the tree (a child's transform maps into its parent's local
-//! space); texture, interior and `no_shadow` are inherited from the nearest ancestor that sets
-//! them (a material's light group: the innermost group's lights, the outermost group's
+//! space); texture, interior texture, interior and `no_shadow` are each inherited from the
+//! nearest ancestor that sets them (a material's light group: the innermost group's lights, the outermost group's
 //! `global_lights`); each owning object's texture is converted to world space once and shared by every leaf
 //! that inherits it; top-level unions that are not inverted are flattened into their children,
 //! other CSG objects become trees. Inversion (by `inverse`, an inverted ancestor or being
@@ -90,6 +90,8 @@ struct Inversion {
 struct Appearance {
     texture: Arc<Texture>,
     texture_key: TextureKey,
+    /// The `interior_texture` (inherited on its own, apart from `texture`) and its key.
+    interior_texture: Option<(Arc<Texture>, TextureKey)>,
     interior: Arc<Interior>,
     interior_key: InteriorKey,
     flags: Flags,
@@ -107,12 +109,15 @@ struct Flags {
     light_group: Option<crate::scene::LightGroup>,
 }
 
+/// What materials are shared by: texture, interior texture, interior and flags.
+type MaterialKey = (TextureKey, Option<TextureKey>, InteriorKey, Flags);
+
 /// Working state of one build.
 struct Builder {
     materials: Vec<Material>,
-    material_of: HashMap<(TextureKey, InteriorKey, Flags), u32, FastHash>,
+    material_of: HashMap<MaterialKey, u32, FastHash>,
     /// The material found last, checked before the table.
-    last_material: Option<((TextureKey, InteriorKey, Flags), u32)>,
+    last_material: Option<(MaterialKey, u32)>,
     next_owner: usize,
     leaf_count: usize,
     /// Prepared geometry of each scene mesh placed at top level, by the mesh's address.
@@ -132,6 +137,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
     let appearance = Appearance {
         texture: Arc::new(Texture::default()),
         texture_key: TextureKey::Default,
+        interior_texture: None,
         interior: Arc::new(Interior::default()),
         interior_key: InteriorKey::Default,
         flags: Flags::default(),
@@ -335,7 +341,11 @@ impl Builder {
                 ..group
             });
         }
-        if object.texture.is_none() && object.interior.is_none() && flags == inherited.flags {
+        if object.texture.is_none()
+            && object.interior_texture.is_none()
+            && object.interior.is_none()
+            && flags == inherited.flags
+        {
             // Most children of a generated union: no reference counts to touch.
             return Cow::Borrowed(inherited);
         }
@@ -344,6 +354,9 @@ impl Builder {
         if let Some(texture) = &object.texture {
             (appearance.texture, appearance.texture_key) =
                 self.placed_texture(texture, world_from_local);
+        }
+        if let Some(texture) = &object.interior_texture {
+            appearance.interior_texture = Some(self.placed_texture(texture, world_from_local));
         }
         if let Some(interior) = &object.interior {
             let mut interior = Interior::clone(interior);
@@ -378,6 +391,7 @@ impl Builder {
     fn material(&mut self, appearance: &Appearance) -> u32 {
         let key = (
             appearance.texture_key,
+            appearance.interior_texture.as_ref().map(|(_, key)| *key),
             appearance.interior_key,
             appearance.flags,
         );
@@ -394,6 +408,10 @@ impl Builder {
         let index = self.materials.len() as u32;
         self.materials.push(Material {
             texture: Arc::clone(&appearance.texture),
+            interior_texture: appearance
+                .interior_texture
+                .as_ref()
+                .map(|(texture, _)| Arc::clone(texture)),
             interior: appearance.interior.clone(),
             no_shadow: appearance.flags.no_shadow,
             no_image: appearance.flags.no_image,
@@ -401,7 +419,11 @@ impl Builder {
             no_radiosity: appearance.flags.no_radiosity,
             double_illuminate: appearance.flags.double_illuminate,
             hollow: appearance.flags.hollow,
-            uses_uv: texture_uses_uv(&appearance.texture),
+            uses_uv: texture_uses_uv(&appearance.texture)
+                || appearance
+                    .interior_texture
+                    .as_ref()
+                    .is_some_and(|(texture, _)| texture_uses_uv(texture)),
             light_group: appearance.flags.light_group,
         });
         self.material_of.insert(key, index);

@@ -219,9 +219,10 @@ impl Triangle {
         false
     }
 
-    /// The normal (not normalised) on the side where the corners run anticlockwise.
+    /// The normal (not normalised): POV-Ray's, `(c − a) × (b − a)` for corners a, b, c
+    /// (measured: `interior_texture` shows on the side `(b − a) × (c − a)` points to).
     pub fn normal(&self) -> DVec3 {
-        self.edge_one.cross(self.edge_two)
+        self.edge_two.cross(self.edge_one)
     }
 
     /// Bounding box of the corners.

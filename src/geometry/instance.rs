@@ -137,7 +137,8 @@ impl MeshGeometry {
     /// for the flat one).
     fn normal(&self, index: usize, corners: [DVec3; 3], weights: [f64; 3]) -> DVec3 {
         let [a, b, c] = corners;
-        let flat = (b - a).cross(c - a);
+        // POV-Ray's orientation, as for a plain triangle.
+        let flat = (c - a).cross(b - a);
         match self.smooth.get(index) {
             Some(indices) if indices[0] != FLAT_FACE => {
                 let unit_flat = flat.normalize_or_zero();

@@ -146,6 +146,9 @@ impl HitDetails {
 pub struct Material {
     /// The texture, with every pattern transform mapping pattern space to world space.
     pub texture: Arc<Texture>,
+    /// The texture of the inside faces (`interior_texture`), world space like `texture`;
+    /// `None` when they show `texture`.
+    pub interior_texture: Option<Arc<Texture>>,
     /// What is inside the object (shared by every material with the same interior).
     pub interior: Arc<Interior>,
     /// The object casts no shadow.
@@ -164,4 +167,16 @@ pub struct Material {
     pub uses_uv: bool,
     /// The `light_group` the material's object sits in (its lights and `global_lights`).
     pub light_group: Option<crate::scene::LightGroup>,
+}
+
+impl Material {
+    /// The texture seen by a ray going along `direction` that hits a surface with outward
+    /// `normal`: the `interior_texture` when the ray leaves the object (or meets the back of
+    /// a patch), else `texture`.
+    pub fn texture_facing(&self, direction: DVec3, normal: DVec3) -> &Arc<Texture> {
+        match &self.interior_texture {
+            Some(inside) if direction.dot(normal) > 0.0 => inside,
+            _ => &self.texture,
+        }
+    }
 }

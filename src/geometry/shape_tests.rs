@@ -268,7 +268,8 @@ fn known_answers() {
                 ]),
             },
             5.25,
-            DVec3::new(0.0, 1.0, 4.0).normalize(),
+            // POV-Ray's orientation: (c - a) x (b - a).
+            DVec3::new(0.0, -1.0, -4.0).normalize(),
         ),
     ];
     for (shape, distance, normal) in cases {

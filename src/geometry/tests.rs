@@ -186,9 +186,9 @@ fn inversion_flips_normals_and_changes_unions() {
     );
     assert_eq!(
         profile(vec![csg(Difference, vec![sphere_a(), triangle.clone()])]),
-        vec![(5.0, 1.0, 0.5)]
+        vec![(5.0, -1.0, 0.5)]
     );
-    assert_eq!(profile(vec![inverted(triangle)]), vec![(5.0, 1.0, 0.5)]);
+    assert_eq!(profile(vec![inverted(triangle)]), vec![(5.0, -1.0, 0.5)]);
 }
 
 #[test]

@@ -343,7 +343,8 @@ fn hit_transmission(world: &World, hit: &SurfaceHit, direction: DVec3) -> DVec3 
             .materials
             .get(material as usize)
             .map_or(DVec3::ZERO, |material| {
-                transmission(surface_pigment(&material.texture, hit, &surface))
+                let texture = material.texture_facing(direction, hit.normal);
+                transmission(surface_pigment(texture, hit, &surface))
             })
     };
     match &hit.corner_blend {

@@ -19,10 +19,11 @@
 //! - adaptive depth control: every ray carries a weight (1 for camera rays). A reflected
 //!   ray's weight is the parent's times the largest component of `reflection`; a
 //!   transmitted ray's weight is the parent's times the largest component of
-//!   `T = filter · pigment + transmit`. A ray is traced only if its weight is at least
-//!   `adc_bailout` (equality traces); a transmitted ray also needs the surface's own grey
-//!   value of T, `0.297 r + 0.589 g + 0.114 b`, to be at least `adc_bailout` (this test
-//!   does not include the parent's weight). Found by bisecting `adc_bailout` on stacks of
+//!   `|T|`, `T = filter · pigment + transmit` (a negative transmit is not clamped: it
+//!   subtracts the light behind, measured at −1 and −0.5). A ray is traced only if its weight
+//!   is at least `adc_bailout` (equality traces); a transmitted ray also needs the surface's
+//!   own grey value of `|T|`, `0.297 r + 0.589 g + 0.114 b`, to be at least `adc_bailout`
+//!   (this test does not include the parent's weight). Found by bisecting `adc_bailout` on stacks of
 //!   discs with differently coloured filters, e.g. after a `transmit 0.5` disc, a disc with
 //!   `rgbf <0,0,1,0.8>` is passed up to bailout 0.0912 (its grey), one with
 //!   `rgbf <0.5,1,0.5,0.8>` up to 0.4 (0.5 · 0.8).
@@ -440,7 +441,7 @@ impl<'a> Tracer<'a> {
             }
             return total;
         }
-        let texture = &material.texture;
+        let texture = material.texture_facing(ray.direction, hit.normal);
         if texture.compound.is_none() {
             return self.shade_plain(ray, hit, material, texture, true, level, weight, media);
         }
@@ -547,7 +548,8 @@ impl<'a> Tracer<'a> {
             pass *= DVec3::ONE - reflection;
         }
         let pass_weight = weight.transmitted(pass);
-        let surface_passes = pass.dot(GREY_WEIGHTS) >= self.adc_bailout;
+        // Negative transmit subtracts what lies behind; it is weighed by its size.
+        let surface_passes = pass.abs().dot(GREY_WEIGHTS) >= self.adc_bailout;
         if pass_weight.0 > 0.0 && pass_weight.0 >= self.adc_bailout && surface_passes {
             if (ratio - 1.0).abs() < 1e-12 {
                 shaded.continued = Some(Continued {
@@ -667,9 +669,10 @@ impl RayWeight {
     }
 
     /// The weight of the ray passing (or totally reflected at) a surface that lets `pass`
-    /// through.
+    /// through: the size of its largest component, as a negative `transmit` subtracts the
+    /// light behind the surface (POV-Ray does not clamp it).
     fn transmitted(self, pass: DVec3) -> RayWeight {
-        RayWeight(self.0 * pass.max_element())
+        RayWeight(self.0 * pass.abs().max_element())
     }
 }
 

@@ -115,6 +115,10 @@ pub struct Object {
     /// Appearance; `None` inherits the parent's (or the default texture at top level).
     /// Pattern transformations inside are expressed in this object's local space.
     pub texture: Option<Arc<Texture>>,
+    /// `interior_texture`: the appearance of the inside faces (hits where the ray leaves the
+    /// object, or the back of a patch); `None` inherits the parent's, or uses `texture`.
+    /// Pattern transformations inside are expressed in this object's local space.
+    pub interior_texture: Option<Arc<Texture>>,
     /// Interior (index of refraction...); `None` inherits the parent's or the default.
     pub interior: Option<Box<Interior>>,
     /// Swaps inside and outside (`inverse`).
@@ -152,6 +156,7 @@ impl Object {
             shape,
             placement: None,
             texture: None,
+            interior_texture: None,
             interior: None,
             inverse: false,
             no_shadow: false,
@@ -357,8 +362,9 @@ mod tests {
             "{}",
             std::mem::size_of::<Shape>()
         );
+        // 168 bytes before `interior_texture` (one pointer; no field had room to share).
         assert!(
-            std::mem::size_of::<Object>() <= 168,
+            std::mem::size_of::<Object>() <= 176,
             "{}",
             std::mem::size_of::<Object>()
         );

@@ -793,3 +793,16 @@ fn radiosity_pretrace_size_out_of_range_is_refused() {
         ],
     );
 }
+
+#[test]
+fn interior_texture_outside_an_object_is_an_error() {
+    check(
+        "interior_texture_alone",
+        3,
+        19,
+        &[
+            "`interior_texture` belongs in an object or a `material`",
+            "not a value of its own",
+        ],
+    );
+}
