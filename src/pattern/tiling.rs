@@ -569,6 +569,54 @@ const DODECAGON_EDGE_BEVELS: &[f64] = &[
     SQRT_3 / 6.0,
 ];
 
+/// The dodecagon of side 1 centred at (0, −½ − √3/2) shared by tilings 22–24.
+const DODECAGON: &[(f64, f64)] = &[
+    (1.0 + H, -1.0 - H),
+    (1.0 + H, -H),
+    (0.5 + H, 0.0),
+    (0.5, 0.5),
+    (-0.5, 0.5),
+    (-0.5 - H, 0.0),
+    (-1.0 - H, -H),
+    (-1.0 - H, -1.0 - H),
+    (-0.5 - H, -1.0 - 2.0 * H),
+    (-0.5, -1.5 - 2.0 * H),
+    (0.5, -1.5 - 2.0 * H),
+    (0.5 + H, -1.0 - 2.0 * H),
+];
+
+/// The hexagon above [`DODECAGON`] in tilings 23 and 24.
+const DHS_HEXAGON_ABOVE: &[(f64, f64)] = &[
+    (1.0, 0.5 + H),
+    (0.5, 0.5 + 2.0 * H),
+    (-0.5, 0.5 + 2.0 * H),
+    (-1.0, 0.5 + H),
+    (-0.5, 0.5),
+    (0.5, 0.5),
+];
+
+/// The hexagon to the right of [`DODECAGON`] in tilings 23 and 24.
+const DHS_HEXAGON_BESIDE: &[(f64, f64)] = &[
+    (2.5 + H, 0.0),
+    (2.0 + H, H),
+    (1.0 + H, H),
+    (0.5 + H, 0.0),
+    (1.0 + H, -H),
+    (2.0 + H, -H),
+];
+
+/// The squares of tilings 23 and 24: along the axes, turned 60° and turned 120°.
+const DHS_SQUARE_ALONG_AXES: &[(f64, f64)] = &[
+    (1.0 + H, -1.0 - H),
+    (2.0 + H, -1.0 - H),
+    (2.0 + H, -H),
+    (1.0 + H, -H),
+];
+const DHS_SQUARE_TURNED_60: &[(f64, f64)] =
+    &[(0.5 + H, 0.0), (1.0 + H, H), (1.0, 0.5 + H), (0.5, 0.5)];
+const DHS_SQUARE_TURNED_120: &[(f64, f64)] =
+    &[(-0.5, 0.5), (-1.0, 0.5 + H), (-1.0 - H, H), (-0.5 - H, 0.0)];
+
 /// `tiling 22`: dodecagons of side 1 (type 2, one centred at (0, −½ − √3/2)) with the
 /// triangles between them pointing up (0) and down (1).
 const DODECAGONS_TRIANGLES: Layout = Layout {
@@ -576,24 +624,7 @@ const DODECAGONS_TRIANGLES: Layout = Layout {
     types: 3,
     bevel: SQRT_3 / 6.0,
     tiles: &[
-        Tile::with_edge_bevels(
-            2,
-            &[
-                (1.0 + H, -1.0 - H),
-                (1.0 + H, -H),
-                (0.5 + H, 0.0),
-                (0.5, 0.5),
-                (-0.5, 0.5),
-                (-0.5 - H, 0.0),
-                (-1.0 - H, -H),
-                (-1.0 - H, -1.0 - H),
-                (-0.5 - H, -1.0 - 2.0 * H),
-                (-0.5, -1.5 - 2.0 * H),
-                (0.5, -1.5 - 2.0 * H),
-                (0.5 + H, -1.0 - 2.0 * H),
-            ],
-            DODECAGON_EDGE_BEVELS,
-        ),
+        Tile::with_edge_bevels(2, DODECAGON, DODECAGON_EDGE_BEVELS),
         Tile::new(0, &[(-0.5, 0.5), (0.5, 0.5), (0.0, 0.5 + H)]),
         Tile::new(1, &[(0.5 + H, 0.0), (1.5 + H, 0.0), (1.0 + H, -H)]),
     ],
@@ -607,62 +638,12 @@ const DODECAGONS_HEXAGONS_SQUARES: Layout = Layout {
     types: 3,
     bevel: 0.5,
     tiles: &[
-        Tile::new(
-            2,
-            &[
-                (1.0 + H, -1.0 - H),
-                (1.0 + H, -H),
-                (0.5 + H, 0.0),
-                (0.5, 0.5),
-                (-0.5, 0.5),
-                (-0.5 - H, 0.0),
-                (-1.0 - H, -H),
-                (-1.0 - H, -1.0 - H),
-                (-0.5 - H, -1.0 - 2.0 * H),
-                (-0.5, -1.5 - 2.0 * H),
-                (0.5, -1.5 - 2.0 * H),
-                (0.5 + H, -1.0 - 2.0 * H),
-            ],
-        ),
-        Tile::new(
-            0,
-            &[
-                (1.0, 0.5 + H),
-                (0.5, 0.5 + 2.0 * H),
-                (-0.5, 0.5 + 2.0 * H),
-                (-1.0, 0.5 + H),
-                (-0.5, 0.5),
-                (0.5, 0.5),
-            ],
-        ),
-        Tile::new(
-            0,
-            &[
-                (2.5 + H, 0.0),
-                (2.0 + H, H),
-                (1.0 + H, H),
-                (0.5 + H, 0.0),
-                (1.0 + H, -H),
-                (2.0 + H, -H),
-            ],
-        ),
-        Tile::new(
-            1,
-            &[
-                (1.0 + H, -1.0 - H),
-                (2.0 + H, -1.0 - H),
-                (2.0 + H, -H),
-                (1.0 + H, -H),
-            ],
-        ),
-        Tile::new(
-            1,
-            &[(0.5 + H, 0.0), (1.0 + H, H), (1.0, 0.5 + H), (0.5, 0.5)],
-        ),
-        Tile::new(
-            1,
-            &[(-0.5, 0.5), (-1.0, 0.5 + H), (-1.0 - H, H), (-0.5 - H, 0.0)],
-        ),
+        Tile::new(2, DODECAGON),
+        Tile::new(0, DHS_HEXAGON_ABOVE),
+        Tile::new(0, DHS_HEXAGON_BESIDE),
+        Tile::new(1, DHS_SQUARE_ALONG_AXES),
+        Tile::new(1, DHS_SQUARE_TURNED_60),
+        Tile::new(1, DHS_SQUARE_TURNED_120),
     ],
     zero_on_axes: false,
 };
@@ -674,62 +655,12 @@ const DODECAGONS_HEXAGONS_SQUARES_FIVE: Layout = Layout {
     types: 5,
     bevel: 0.5,
     tiles: &[
-        Tile::new(
-            4,
-            &[
-                (1.0 + H, -1.0 - H),
-                (1.0 + H, -H),
-                (0.5 + H, 0.0),
-                (0.5, 0.5),
-                (-0.5, 0.5),
-                (-0.5 - H, 0.0),
-                (-1.0 - H, -H),
-                (-1.0 - H, -1.0 - H),
-                (-0.5 - H, -1.0 - 2.0 * H),
-                (-0.5, -1.5 - 2.0 * H),
-                (0.5, -1.5 - 2.0 * H),
-                (0.5 + H, -1.0 - 2.0 * H),
-            ],
-        ),
-        Tile::new(
-            0,
-            &[
-                (1.0, 0.5 + H),
-                (0.5, 0.5 + 2.0 * H),
-                (-0.5, 0.5 + 2.0 * H),
-                (-1.0, 0.5 + H),
-                (-0.5, 0.5),
-                (0.5, 0.5),
-            ],
-        ),
-        Tile::new(
-            0,
-            &[
-                (2.5 + H, 0.0),
-                (2.0 + H, H),
-                (1.0 + H, H),
-                (0.5 + H, 0.0),
-                (1.0 + H, -H),
-                (2.0 + H, -H),
-            ],
-        ),
-        Tile::new(
-            1,
-            &[
-                (1.0 + H, -1.0 - H),
-                (2.0 + H, -1.0 - H),
-                (2.0 + H, -H),
-                (1.0 + H, -H),
-            ],
-        ),
-        Tile::new(
-            2,
-            &[(0.5 + H, 0.0), (1.0 + H, H), (1.0, 0.5 + H), (0.5, 0.5)],
-        ),
-        Tile::new(
-            3,
-            &[(-0.5, 0.5), (-1.0, 0.5 + H), (-1.0 - H, H), (-0.5 - H, 0.0)],
-        ),
+        Tile::new(4, DODECAGON),
+        Tile::new(0, DHS_HEXAGON_ABOVE),
+        Tile::new(0, DHS_HEXAGON_BESIDE),
+        Tile::new(1, DHS_SQUARE_ALONG_AXES),
+        Tile::new(2, DHS_SQUARE_TURNED_60),
+        Tile::new(3, DHS_SQUARE_TURNED_120),
     ],
     zero_on_axes: false,
 };
