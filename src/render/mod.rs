@@ -30,6 +30,7 @@ pub mod normal;
 pub mod output;
 pub mod pattern;
 pub mod radiosity;
+pub mod radiosity_index;
 pub mod reflection;
 pub mod shading;
 pub mod texture;

@@ -6,7 +6,7 @@
 //! Holds: deterministic results at any thread count — the cache is filled only by the
 //! pretrace, which runs on one thread in a fixed pixel order; the final render only reads
 //! it (a point no cached sample covers is gathered afresh and not stored). No allocation
-//! per ray outside the pretrace.
+//! per ray outside the pretrace (lookups reuse a per-thread buffer).
 //!
 //! Method (Ward's irradiance cache, as POV-Ray 3.7's manual describes it):
 //! - a sample gathers `count` rays over the hemisphere around the normal, drawn from a
@@ -19,10 +19,14 @@
 //!   and that do not lie in front of it, weighted by `1 − error`; the pretrace gathers a new
 //!   sample wherever fewer than `nearest_count` are found, with `error_bound` lowered by
 //!   `low_error_factor`;
-//! - each bounce (up to `recursion_limit`) has its own cache.
+//! - each bounce (up to `recursion_limit`) has its own cache, whose samples a spatial index
+//!   ([`SampleIndex`]) finds by position; the usable ones are summed in the order they were
+//!   stored, so results do not depend on the index's layout.
 
+use super::radiosity_index::SampleIndex;
 use crate::scene::RadiositySettings;
 use glam::DVec3;
+use std::cell::RefCell;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use std::sync::RwLock;
 
@@ -42,6 +46,32 @@ struct Sample {
     radius: f64,
 }
 
+/// The samples of one bounce and the index finding them.
+#[derive(Default)]
+struct Cache {
+    /// Samples in the order they were gathered (their ids in the index).
+    samples: Vec<Sample>,
+    index: SampleIndex,
+}
+
+/// Working lists of a cache lookup, kept between lookups so they allocate only while growing.
+struct LookupBuffers {
+    /// Ids of the samples the index finds near the point.
+    nearby: Vec<u32>,
+    /// Ids of the usable ones, with their weights.
+    usable: Vec<(u32, f64)>,
+}
+
+thread_local! {
+    /// The lookup buffers of this thread.
+    static LOOKUP_BUFFERS: RefCell<LookupBuffers> = const {
+        RefCell::new(LookupBuffers {
+            nearby: Vec::new(),
+            usable: Vec::new(),
+        })
+    };
+}
+
 /// The light seen along one gathering ray and how far away it came from.
 #[derive(Clone, Copy, Debug)]
 pub struct Gathered {
@@ -57,7 +87,7 @@ pub struct Radiosity {
     /// Cosine-weighted unit directions around +z.
     directions: Vec<DVec3>,
     /// One cache per bounce.
-    caches: Vec<RwLock<Vec<Sample>>>,
+    caches: Vec<RwLock<Cache>>,
     /// The pretrace is running: new samples are stored.
     filling: AtomicBool,
     /// Where in the direction pool the next sample starts (advanced only while filling).
@@ -95,7 +125,7 @@ impl Radiosity {
         Radiosity {
             settings: settings.clone(),
             directions,
-            caches: (0..levels).map(|_| RwLock::new(Vec::new())).collect(),
+            caches: (0..levels).map(|_| RwLock::default()).collect(),
             filling: AtomicBool::new(false),
             next_direction: AtomicU32::new(0),
             eye,
@@ -150,8 +180,8 @@ impl Radiosity {
             1.0
         };
         let (sum, weight, found) = {
-            let samples = cache.read().unwrap_or_else(|poison| poison.into_inner());
-            interpolate(&samples, point, normal, bound_scale)
+            let cache = cache.read().unwrap_or_else(|poison| poison.into_inner());
+            interpolate(&cache, point, normal, bound_scale)
         };
         let wanted = self.settings.nearest_count.max(1);
         let reuse = if filling {
@@ -176,13 +206,19 @@ impl Radiosity {
                     self.settings.maximum_reuse * eye_distance,
                 );
                 if radius.is_finite() && radius > 0.0 && irradiance.is_finite() {
-                    let mut samples = cache.write().unwrap_or_else(|poison| poison.into_inner());
-                    samples.push(Sample {
-                        point,
-                        normal,
-                        irradiance,
-                        radius,
-                    });
+                    let mut cache = cache.write().unwrap_or_else(|poison| poison.into_inner());
+                    // Ids are u32 to keep the index small; a cache cannot grow that large.
+                    if let Ok(id) = u32::try_from(cache.samples.len()) {
+                        // Found wherever some lookup (with its radius scale) could use it.
+                        let reach = radius * self.settings.low_error_factor.max(1.0);
+                        cache.index.insert(id, point, reach);
+                        cache.samples.push(Sample {
+                            point,
+                            normal,
+                            irradiance,
+                            radius,
+                        });
+                    }
                 }
             }
             irradiance
@@ -274,35 +310,63 @@ pub fn pretrace(
 
 /// The weighted sum of the cached samples usable at `point` (with unit `normal`), their
 /// total weight and how many there are; `bound_scale` shrinks every reuse radius.
-fn interpolate(
-    samples: &[Sample],
-    point: DVec3,
-    normal: DVec3,
-    bound_scale: f64,
-) -> (DVec3, f64, u32) {
+fn interpolate(cache: &Cache, point: DVec3, normal: DVec3, bound_scale: f64) -> (DVec3, f64, u32) {
+    let weigh = |sample: &Sample| reuse_weight(sample, point, normal, bound_scale);
+    LOOKUP_BUFFERS.with(|buffers| match buffers.try_borrow_mut() {
+        Ok(mut buffers) => {
+            let LookupBuffers { nearby, usable } = &mut *buffers;
+            nearby.clear();
+            usable.clear();
+            cache.index.candidates(point, nearby);
+            usable.extend(nearby.iter().filter_map(|&id| {
+                let share = weigh(cache.samples.get(id as usize)?)?;
+                Some((id, share))
+            }));
+            // Summed in the order the samples were stored, as a scan of the cache would.
+            usable.sort_unstable_by_key(|&(id, _)| id);
+            sum_weighted(
+                usable
+                    .iter()
+                    .filter_map(|&(id, share)| Some((cache.samples.get(id as usize)?, share))),
+            )
+        }
+        // Not reached (a lookup never nests in another); the same result, only slower.
+        Err(_) => sum_weighted(
+            cache
+                .samples
+                .iter()
+                .filter_map(|sample| Some((sample, weigh(sample)?))),
+        ),
+    })
+}
+
+/// How much `sample` counts at `point` (with unit `normal`), if it is usable there:
+/// `1 − error`; `bound_scale` shrinks its reuse radius.
+fn reuse_weight(sample: &Sample, point: DVec3, normal: DVec3, bound_scale: f64) -> Option<f64> {
+    let offset = point - sample.point;
+    let radius = sample.radius * bound_scale;
+    let distance_squared = offset.length_squared();
+    if distance_squared >= radius * radius {
+        return None;
+    }
+    let facing = normal.dot(sample.normal);
+    if facing <= 0.0 {
+        return None;
+    }
+    // A sample in front of the point (e.g. across an inside corner) does not apply.
+    if offset.dot(normal + sample.normal) < -0.05 * radius {
+        return None;
+    }
+    let error = distance_squared.sqrt() / radius + (1.0 - facing).max(0.0).sqrt();
+    (error < 1.0).then_some(1.0 - error)
+}
+
+/// The sum of the samples' irradiance times their weights, the total weight and the count.
+fn sum_weighted<'a>(weighted: impl Iterator<Item = (&'a Sample, f64)>) -> (DVec3, f64, u32) {
     let mut sum = DVec3::ZERO;
     let mut weight = 0.0;
     let mut found = 0;
-    for sample in samples {
-        let offset = point - sample.point;
-        let radius = sample.radius * bound_scale;
-        let distance_squared = offset.length_squared();
-        if distance_squared >= radius * radius {
-            continue;
-        }
-        let facing = normal.dot(sample.normal);
-        if facing <= 0.0 {
-            continue;
-        }
-        // A sample in front of the point (e.g. across an inside corner) does not apply.
-        if offset.dot(normal + sample.normal) < -0.05 * radius {
-            continue;
-        }
-        let error = distance_squared.sqrt() / radius + (1.0 - facing).max(0.0).sqrt();
-        if error >= 1.0 {
-            continue;
-        }
-        let share = 1.0 - error;
+    for (sample, share) in weighted {
         sum += sample.irradiance * share;
         weight += share;
         found += 1;

@@ -243,10 +243,7 @@ impl<'a> Tracer<'a> {
                 origin: point,
                 direction,
             };
-            let distance = self
-                .first_hit(&ray, SURFACE_EPSILON, RayKind::Gathering)
-                .map_or(f64::INFINITY, |hit| hit.distance);
-            let colour = self.trace(
+            let (colour, distance) = self.trace_measuring(
                 ray,
                 level + 1,
                 RayWeight::CAMERA,
@@ -280,6 +277,21 @@ impl<'a> Tracer<'a> {
         media: &Media,
         kind: RayKind,
     ) -> DVec3 {
+        self.trace_measuring(ray, level, weight, media, kind).0
+    }
+
+    /// [`Self::trace`]'s colour and the distance to the first surface the ray meets
+    /// (infinite when it meets none).
+    fn trace_measuring(
+        &self,
+        ray: Ray,
+        level: u32,
+        weight: RayWeight,
+        media: &Media,
+        kind: RayKind,
+    ) -> (DVec3, f64) {
+        // Distance to the first surface met, once one is met.
+        let mut first_distance = f64::INFINITY;
         let mut media = *media;
         let mut weight = weight;
         let mut min_distance = SURFACE_EPSILON;
@@ -313,10 +325,14 @@ impl<'a> Tracer<'a> {
                 carried *= keep;
             }
             let Some(hit) = hit else {
-                return colour + carried * self.atmosphere.sky(ray.direction);
+                return (
+                    colour + carried * self.atmosphere.sky(ray.direction),
+                    first_distance,
+                );
             };
+            first_distance = first_distance.min(hit.distance);
             let Some(material) = self.world.materials.get(hit.material as usize) else {
-                return colour;
+                return (colour, first_distance);
             };
             // Light from this hit fades on its way through the object the ray is in.
             if let Some(inside) = media
@@ -331,7 +347,7 @@ impl<'a> Tracer<'a> {
             let surface = self.shade(&ray, &hit, material, level, weight, &media);
             colour += carried * surface.colour;
             let Some(continued) = surface.continued else {
-                return colour;
+                return (colour, first_distance);
             };
             carried *= continued.filter;
             weight = continued.weight;
@@ -339,7 +355,7 @@ impl<'a> Tracer<'a> {
             // The same ray is searched again beyond this hit, which avoids drift along it.
             min_distance = hit.distance + SURFACE_EPSILON;
         }
-        colour
+        (colour, first_distance)
     }
 
     /// Whether every object of `inside` is hollow (so fog and media fill it).
