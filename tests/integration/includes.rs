@@ -782,6 +782,21 @@ fn render_shape_scene(
         .unwrap_or_else(|e| panic!("{name} does not evaluate:\n{}", e.join("\n")))
 }
 
+/// Asserts that `written` (a mesh written to a file and read back) renders like `direct`:
+/// at most 2% of pixels with a channel more than 24/255 apart.
+fn assert_renders_alike(direct: &durer::render::Image, written: &durer::render::Image, what: &str) {
+    let differing = direct
+        .pixels
+        .iter()
+        .zip(&written.pixels)
+        .filter(|(p, q)| (0..3).any(|c| p[c].abs_diff(q[c]) > 24))
+        .count();
+    assert!(
+        differing * 50 <= direct.pixels.len(),
+        "{what} renders unlike the one made directly"
+    );
+}
+
 /// The statement showing a declared shape, tinted so that its shading shows.
 fn shape_showcase(name: &str) -> String {
     format!("object {{ {name} pigment {{ rgb <1, 0.6, 0.3> }} }}")
@@ -1028,16 +1043,7 @@ fn embedded_height_field_macros_render_like_povray() {
             &written,
             installed,
         );
-        let differing = a
-            .pixels
-            .iter()
-            .zip(&b.pixels)
-            .filter(|(p, q)| (0..3).any(|c| p[c].abs_diff(q[c]) > 24))
-            .count();
-        assert!(
-            differing * 50 <= a.pixels.len(),
-            "{call}: the written mesh renders unlike the direct one"
-        );
+        assert_renders_alike(&a, &b, &format!("{call}: the written mesh"));
     }
 }
 
@@ -1375,16 +1381,7 @@ fn makegrass_patches_match_povray(installed: bool) {
     );
     let a = render_shape_scene(&dir, "direct", includes, &direct, installed);
     let b = render_shape_scene(&dir, "written", includes, &written, installed);
-    let differing = a
-        .pixels
-        .iter()
-        .zip(&b.pixels)
-        .filter(|(p, q)| (0..3).any(|c| p[c].abs_diff(q[c]) > 24))
-        .count();
-    assert!(
-        differing * 50 <= a.pixels.len(),
-        "the written patch renders unlike the direct one"
-    );
+    assert_renders_alike(&a, &b, "the written patch");
 }
 
 /// meshmaker.inc's macros render tests/stdlib/meshmaker.pov like POV-Ray did (POV-Ray's
