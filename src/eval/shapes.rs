@@ -237,6 +237,16 @@ impl Evaluator {
                 }
             }
         }
+        self.with_declared_count(list, count, span)
+    }
+
+    /// `list` when it holds the `count` entries its block declared, else an error at `span`.
+    pub(crate) fn with_declared_count<T>(
+        &self,
+        list: Vec<T>,
+        count: usize,
+        span: Span,
+    ) -> EvalResult<Vec<T>> {
         if list.len() != count {
             return Err(self
                 .error(

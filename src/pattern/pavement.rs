@@ -276,10 +276,9 @@ impl PavementPolygon {
     /// How many patterns there are for tiles of `tiles` polygons (manual, "Pavement
     /// Pattern"); 0 when `tiles` is out of range.
     pub fn pattern_count(self, tiles: u8) -> u8 {
-        const TRIANGLES: [u8; 6] = [1, 1, 1, 3, 4, 12];
         let index = usize::from(tiles).wrapping_sub(1);
         match self {
-            Self::Triangle => TRIANGLES.get(index).copied().unwrap_or(0),
+            Self::Triangle => TRIANGLE_PAVINGS.get(index).map_or(0, |p| p.len() as u8),
             Self::Square => SQUARE_PAVINGS.get(index).map_or(0, |p| p.len() as u8),
             Self::Hexagon => HEXAGON_PAVINGS.get(index).map_or(0, |p| p.len() as u8),
         }

@@ -169,8 +169,8 @@ impl MeshCamera {
 pub enum MeshDistribution {
     /// 0: ray r of a pixel uses mesh r; the pixel's number picks the face.
     PerMesh,
-    /// 1: the meshes' faces are summed into one list; ray r of a pixel uses the face at
-    /// `r · width · height + pixel`.
+    /// 1: the meshes' faces are summed into one list and the pixel's number picks the face;
+    /// only the first ray of a pixel is shot, as in POV-Ray.
     Summed,
     /// 2: the image is split into side-by-side columns, one per mesh.
     SideBySide,

@@ -403,15 +403,7 @@ impl Evaluator {
             }
         }
         finish_face(self, &mut list, &mut pending)?;
-        if list.len() != count {
-            return Err(self
-                .error(
-                    span,
-                    format!("{count} entries declared, {} given", list.len()),
-                )
-                .into());
-        }
-        Ok(list)
+        self.with_declared_count(list, count, span)
     }
 }
 
