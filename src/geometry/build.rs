@@ -46,10 +46,34 @@ pub enum Primitive {
     Mesh(Box<MeshInstance>),
 }
 
+/// Primitives in the order they were built, split by whether their surface has finite bounds.
+#[derive(Default)]
+pub struct Primitives {
+    /// Primitives with finite surface bounds.
+    pub bounded: Vec<Primitive>,
+    /// The surface bounds of each of `bounded`, in the same order.
+    pub bounds: Vec<Aabb>,
+    /// Primitives without finite bounds (planes, unbounded quadrics, ...).
+    pub unbounded: Vec<Primitive>,
+}
+
+impl Primitives {
+    /// Adds `primitive`, whose surface lies inside `surface` (`None` when unbounded).
+    fn push(&mut self, primitive: Primitive, surface: Option<Aabb>) {
+        match surface {
+            Some(surface) if surface.is_finite() => {
+                self.bounded.push(primitive);
+                self.bounds.push(surface);
+            }
+            _ => self.unbounded.push(primitive),
+        }
+    }
+}
+
 /// What the builder produces.
 pub struct BuiltScene {
-    /// Every primitive with its surface bounds (`None` when unbounded).
-    pub primitives: Vec<(Primitive, Option<Aabb>)>,
+    /// Every primitive, with the bounds of the bounded ones.
+    pub primitives: Primitives,
     /// The material table.
     pub materials: Vec<Material>,
     /// Number of leaf shapes, CSG children included.
@@ -97,6 +121,31 @@ struct Appearance {
     flags: Flags,
 }
 
+impl Appearance {
+    /// What materials are shared by: equal keys give equal materials.
+    fn material_key(&self) -> MaterialKey {
+        (
+            self.texture_key,
+            self.interior_texture.as_ref().map(|(_, key)| *key),
+            self.interior_key,
+            self.flags,
+        )
+    }
+
+    /// True when a texture or interior of this appearance was made for an owner numbered
+    /// `first_owner` or later.
+    fn owned_since(&self, first_owner: usize) -> bool {
+        let texture_owner =
+            |key: TextureKey| matches!(key, TextureKey::Owned(n) if n >= first_owner);
+        texture_owner(self.texture_key)
+            || self
+                .interior_texture
+                .as_ref()
+                .is_some_and(|(_, key)| texture_owner(*key))
+            || matches!(self.interior_key, InteriorKey::Owned(n) if n >= first_owner)
+    }
+}
+
 /// The object flags a material carries, inherited from ancestors.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 struct Flags {
@@ -142,7 +191,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
         interior_key: InteriorKey::Default,
         flags: Flags::default(),
     };
-    let mut primitives = Vec::new();
+    let mut primitives = Primitives::default();
     for object in objects {
         builder.add_top_level(
             object,
@@ -389,12 +438,7 @@ impl Builder {
 
     /// The material index for an appearance, creating the material on first use.
     fn material(&mut self, appearance: &Appearance) -> u32 {
-        let key = (
-            appearance.texture_key,
-            appearance.interior_texture.as_ref().map(|(_, key)| *key),
-            appearance.interior_key,
-            appearance.flags,
-        );
+        let key = appearance.material_key();
         // Generated scenes place long runs of objects with one material.
         if let Some((last_key, index)) = self.last_material {
             if last_key == key {
@@ -405,6 +449,15 @@ impl Builder {
             self.last_material = Some((key, index));
             return index;
         }
+        let index = self.unshared_material(appearance);
+        self.material_of.insert(key, index);
+        index
+    }
+
+    /// A new material for an appearance no other object can share (so it is not entered in
+    /// the table that shares materials: a million uniquely coloured spheres would fill it
+    /// for nothing).
+    fn unshared_material(&mut self, appearance: &Appearance) -> u32 {
         let index = self.materials.len() as u32;
         self.materials.push(Material {
             texture: Arc::clone(&appearance.texture),
@@ -426,8 +479,7 @@ impl Builder {
                     .is_some_and(|(texture, _)| texture_uses_uv(texture)),
             light_group: appearance.flags.light_group,
         });
-        self.material_of.insert(key, index);
-        self.last_material = Some((key, index));
+        self.last_material = Some((appearance.material_key(), index));
         index
     }
 
@@ -469,7 +521,7 @@ impl Builder {
         world_from_parent: &Transform,
         inherited: &Appearance,
         enclosing_unions: &mut Vec<DAffine3>,
-        out: &mut Vec<(Primitive, Option<Aabb>)>,
+        out: &mut Primitives,
     ) {
         let world_from_local = object.transform().then(world_from_parent);
         match &object.shape {
@@ -539,7 +591,7 @@ impl Builder {
                     clip,
                     bound,
                 };
-                out.push((Primitive::Csg(Box::new(tree)), surface));
+                out.push(Primitive::Csg(Box::new(tree)), surface);
             }
             Shape::Mesh(mesh) => {
                 let appearance = self.appearance(object, &world_from_local, inherited);
@@ -557,12 +609,23 @@ impl Builder {
                     MeshInstance::new(geometry, &world_from_local, materials, needs_uv)
                 {
                     self.leaf_count += triangles;
-                    out.push((Primitive::Mesh(Box::new(instance)), padded(Some(bounds))));
+                    out.push(Primitive::Mesh(Box::new(instance)), padded(Some(bounds)));
                 }
             }
             shape => {
+                let owners_before = self.next_owner;
+                // A texture no other object or identifier holds: this object's material
+                // cannot be shared (checked before the appearance takes its own reference).
+                let sole_texture = object
+                    .texture
+                    .as_ref()
+                    .is_some_and(|texture| Arc::strong_count(texture) == 1);
                 let appearance = self.appearance(object, &world_from_local, inherited);
-                let material = self.material(&appearance);
+                let material = if sole_texture || appearance.owned_since(owners_before) {
+                    self.unshared_material(&appearance)
+                } else {
+                    self.material(&appearance)
+                };
                 let place = self.leaf_placement(material);
                 for piece in LocalShape::pieces(shape) {
                     let (leaf, bounds) = place(piece, &world_from_local, material, object.inverse);
@@ -571,7 +634,7 @@ impl Builder {
                         continue;
                     }
                     self.leaf_count += 1;
-                    out.push((Primitive::Leaf(leaf), surface));
+                    out.push(Primitive::Leaf(leaf), surface);
                 }
             }
         }

@@ -5,7 +5,7 @@
 //! objects without finite bounds) sit in a separate list tested by every ray; queries never
 //! allocate (CSG scratch space is per thread and reused).
 
-use super::build::{build_scene, BuiltScene, Primitive};
+use super::build::{build_scene, BuiltScene, Primitive, Primitives};
 use super::instance::MeshInstance;
 use super::leaf::Leaf;
 use super::{Material, Ray, SurfaceHit};
@@ -96,23 +96,14 @@ impl World {
 
     /// Sorts converted primitives into bounded (in the BVH) and unbounded ones.
     fn from_built(built: BuiltScene) -> World {
-        let mut bounded = Vec::with_capacity(built.primitives.len());
-        let mut bounds = Vec::with_capacity(built.primitives.len());
-        let mut unbounded = Vec::new();
-        for (primitive, surface) in built.primitives {
-            match surface {
-                Some(surface) if surface.is_finite() => {
-                    bounded.push(Some(primitive));
-                    bounds.push(surface);
-                }
-                _ => unbounded.push(primitive),
-            }
-        }
+        let Primitives {
+            bounded: mut primitives,
+            bounds,
+            unbounded,
+        } = built.primitives;
         let (bvh, order) = Bvh::build(&bounds);
-        let primitives = order
-            .iter()
-            .filter_map(|&index| bounded[index as usize].take())
-            .collect();
+        drop(bounds);
+        permute_in_place(&mut primitives, &order);
         World {
             materials: built.materials,
             primitives,
@@ -322,4 +313,41 @@ fn finish(
         uv: details.uv,
         corner_blend: details.corner_blend,
     })
+}
+
+/// Reorders `items` so that `items[k]` becomes the old `items[order[k]]`, without copying the
+/// list: each cycle of the permutation is followed with swaps. `order` must hold every index
+/// of `items` exactly once (as [`Bvh::build`]'s order does).
+fn permute_in_place<T>(items: &mut [T], order: &[u32]) {
+    debug_assert_eq!(items.len(), order.len());
+    let mut placed = vec![false; items.len()];
+    for start in 0..items.len() {
+        if placed[start] {
+            continue;
+        }
+        let mut at = start;
+        loop {
+            placed[at] = true;
+            let from = order[at] as usize;
+            if from == start {
+                break;
+            }
+            items.swap(at, from);
+            at = from;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::permute_in_place;
+
+    #[test]
+    fn permute_in_place_takes_each_item_from_its_order_entry() {
+        let order = [3u32, 0, 4, 1, 2, 6, 5, 7];
+        let mut items: Vec<u32> = (0..8).map(|i| i * 10).collect();
+        permute_in_place(&mut items, &order);
+        let expected: Vec<u32> = order.iter().map(|&i| i * 10).collect();
+        assert_eq!(items, expected);
+    }
 }
