@@ -292,6 +292,7 @@ def default_durer():
 
 
 def main():
+    global WIDTH, HEIGHT
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--corpus", default=os.path.join(REPO, "..", "shared", "corpus.txt"))
     parser.add_argument("--durer", default=None,
@@ -300,7 +301,14 @@ def main():
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per render")
     parser.add_argument("--out", default=os.path.join(REPO, "docs", "conformance.md"))
     parser.add_argument("--filter", default="", help="only scenes whose path contains this")
+    parser.add_argument("--size", default=f"{WIDTH}x{HEIGHT}",
+                        help="image size WIDTHxHEIGHT for both renderers (default 160x120)")
     args = parser.parse_args()
+    try:
+        WIDTH, HEIGHT = (int(part) for part in args.size.lower().split("x"))
+    except ValueError:
+        print(f"error: --size wants WIDTHxHEIGHT, got {args.size!r}", file=sys.stderr)
+        return 2
 
     durer = os.path.abspath(args.durer) if args.durer else default_durer()
     if not os.path.exists(durer):

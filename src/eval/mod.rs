@@ -216,6 +216,9 @@ pub(crate) struct Evaluator {
     lights: Vec<LightSource>,
     /// How many `light_group`s have been evaluated (the next group's id).
     pub(crate) light_groups: u32,
+    /// Set once a light is placed inside an object: until then no object needs searching for
+    /// the lights it carries.
+    pub(crate) objects_carry_lights: bool,
     objects: Vec<Object>,
     background: Colour,
     atmosphere: Atmosphere,
@@ -248,6 +251,7 @@ impl Evaluator {
             camera: None,
             lights: Vec::new(),
             light_groups: 0,
+            objects_carry_lights: false,
             objects: Vec::new(),
             background: Colour::BLACK,
             atmosphere: Atmosphere::default(),
@@ -541,8 +545,13 @@ impl Evaluator {
                 if object.texture.is_none() && self.default_texture_set {
                     object.texture = Some(Arc::new(self.default_texture.clone()));
                 }
-                crate::scene::separate_light_groups(&mut object, &mut self.light_groups);
-                self.add_carried_lights(&object, &Transform::IDENTITY);
+                // Both walk the whole object tree: skip them while there is nothing to find.
+                if self.light_groups > 0 {
+                    crate::scene::separate_light_groups(&mut object, &mut self.light_groups);
+                }
+                if self.objects_carry_lights {
+                    self.add_carried_lights(&object, &Transform::IDENTITY);
+                }
                 self.objects.push(object);
             }
             Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),

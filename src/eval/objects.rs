@@ -39,6 +39,7 @@ impl Evaluator {
                             children: Vec::new(),
                         });
                         carrier.lights = Some(Box::new(vec![Rc::unwrap_or_clone(light)]));
+                        self.objects_carry_lights = true;
                         carrier
                     }
                     other => {
@@ -102,6 +103,7 @@ impl Evaluator {
                                     .lights
                                     .get_or_insert_with(Default::default)
                                     .push(light);
+                                self.objects_carry_lights = true;
                                 None
                             }
                             other => {
