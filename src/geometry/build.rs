@@ -14,7 +14,7 @@
 
 use super::csg::{Combination, CsgNode, CsgTree, NodeBounds};
 use super::instance::{MeshGeometry, MeshInstance};
-use super::leaf::{Leaf, LocalShape};
+use super::leaf::{Leaf, LocalShape, SharedFrames};
 use super::uv::texture_uses_uv;
 use super::Material;
 use crate::accel::Aabb;
@@ -26,7 +26,8 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 /// Places a local shape in the world: [`Leaf::from_local`] or its frame-keeping twin.
-type PlaceLeaf = fn(LocalShape, &Transform, u32, bool) -> (Leaf, super::leaf::LeafBounds);
+type PlaceLeaf =
+    fn(LocalShape, &Transform, u32, bool, &mut SharedFrames) -> (Leaf, super::leaf::LeafBounds);
 
 /// Relative padding added to every primitive's bounds, so that rounding in the box tests can
 /// never reject a hit the exact shape test finds.
@@ -171,6 +172,8 @@ struct Builder {
     leaf_count: usize,
     /// Prepared geometry of each scene mesh placed at top level, by the mesh's address.
     meshes: HashMap<usize, Arc<MeshGeometry>>,
+    /// World-to-local maps shared between leaves.
+    frames: SharedFrames,
 }
 
 /// Builds primitives and materials from the scene's top-level objects.
@@ -182,6 +185,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
         next_owner: 0,
         leaf_count: 0,
         meshes: HashMap::new(),
+        frames: SharedFrames::default(),
     };
     let appearance = Appearance {
         texture: Arc::new(Texture::default()),
@@ -628,7 +632,13 @@ impl Builder {
                 };
                 let place = self.leaf_placement(material);
                 for piece in LocalShape::pieces(shape) {
-                    let (leaf, bounds) = place(piece, &world_from_local, material, object.inverse);
+                    let (leaf, bounds) = place(
+                        piece,
+                        &world_from_local,
+                        material,
+                        object.inverse,
+                        &mut self.frames,
+                    );
                     let surface = padded(bounds.surface);
                     if leaf.is_empty() || surface.is_some_and(|bounds| bounds.is_empty()) {
                         continue;
@@ -745,8 +755,13 @@ impl Builder {
                     .into_iter()
                     .map(|(piece, material)| {
                         let place = self.leaf_placement(material);
-                        let (leaf, bounds) =
-                            place(piece, &world_from_local, material, inversion.odd);
+                        let (leaf, bounds) = place(
+                            piece,
+                            &world_from_local,
+                            material,
+                            inversion.odd,
+                            &mut self.frames,
+                        );
                         let index = leaves.len() as u32;
                         leaves.push(leaf);
                         self.leaf_count += 1;

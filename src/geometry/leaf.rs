@@ -30,6 +30,7 @@ use super::{HitDetails, Ray};
 use crate::accel::Aabb;
 use crate::scene::{Mesh, MeshTriangle, Shape, Transform};
 use glam::{DAffine3, DVec2, DVec3};
+use std::sync::Arc;
 
 /// A shape in its own local space.
 #[derive(Clone, Debug)]
@@ -482,8 +483,9 @@ impl LocalShape {
 #[derive(Clone, Debug)]
 pub struct Leaf {
     shape: LocalShape,
-    /// World-to-local map; `None` when the shape is already in world coordinates.
-    local_from_world: Option<Box<DAffine3>>,
+    /// World-to-local map; `None` when the shape is already in world coordinates. Shared
+    /// by the leaves placed alike (the children of one transformed union).
+    local_from_world: Option<Arc<DAffine3>>,
     /// Index into the world's materials.
     material: u32,
     /// Inside and outside swapped, normals flipped.
@@ -500,6 +502,23 @@ pub struct LeafBounds {
     /// Where outside points can be; `None` when they can be anywhere (bounded only for
     /// inverted finite shapes).
     pub outside: Option<Aabb>,
+}
+
+/// Hands out one shared copy of a world-to-local map for runs of leaves placed with the same
+/// map, so that the 160,000 children of a rotated union hold one matrix, not 160,000.
+#[derive(Default)]
+pub struct SharedFrames {
+    last: Option<Arc<DAffine3>>,
+}
+
+impl SharedFrames {
+    /// `map`, shared with the previous leaf when that leaf had the same one.
+    fn share(&mut self, map: &DAffine3) -> Arc<DAffine3> {
+        match &self.last {
+            Some(last) if **last == *map => Arc::clone(last),
+            _ => Arc::clone(self.last.insert(Arc::new(*map))),
+        }
+    }
 }
 
 /// True when both maps of `transform` are finite and its matrix is invertible.
@@ -528,6 +547,7 @@ impl Leaf {
             world_from_local,
             material,
             inverse,
+            &mut SharedFrames::default(),
         )
     }
 
@@ -537,8 +557,9 @@ impl Leaf {
         world_from_local: &Transform,
         material: u32,
         inverse: bool,
+        frames: &mut SharedFrames,
     ) -> (Leaf, LeafBounds) {
-        Leaf::placed(local, world_from_local, material, inverse, true)
+        Leaf::placed(local, world_from_local, material, inverse, true, frames)
     }
 
     /// Like [`Leaf::from_local`], but the shape keeps its own space (the transform is never
@@ -548,8 +569,9 @@ impl Leaf {
         world_from_local: &Transform,
         material: u32,
         inverse: bool,
+        frames: &mut SharedFrames,
     ) -> (Leaf, LeafBounds) {
-        Leaf::placed(local, world_from_local, material, inverse, false)
+        Leaf::placed(local, world_from_local, material, inverse, false, frames)
     }
 
     /// [`Leaf::from_local`]; `may_absorb` allows folding the transform into the shape.
@@ -559,6 +581,7 @@ impl Leaf {
         material: u32,
         inverse: bool,
         may_absorb: bool,
+        frames: &mut SharedFrames,
     ) -> (Leaf, LeafBounds) {
         // POV-Ray cannot invert a triangle: it has no inside either way.
         let inverse = inverse && !local.has_no_inside();
@@ -572,7 +595,7 @@ impl Leaf {
         {
             (absorbed, None, DAffine3::IDENTITY)
         } else {
-            let backward = Box::new(world_from_local.inner_from_outer);
+            let backward = frames.share(&world_from_local.inner_from_outer);
             (local, Some(backward), world_from_local.outer_from_inner)
         };
         let surface = shape
