@@ -32,10 +32,16 @@ pub struct Multifractal {
     pub generator: f64,
 }
 
-/// Signed noise in [-1, 1] from povray's generator number (unknown numbers use the default).
+/// The noise generator a function parameter selects: povray keeps the two low bits of the
+/// truncated number, and 0 means generator 1 (measured: -1 is 3, 4 is 1, 2.7 is 2).
+pub fn generator_parameter(value: f64) -> NoiseGenerator {
+    let bits = (value as i64) & 3;
+    NoiseGenerator::from_number(bits.max(1)).unwrap_or_default()
+}
+
+/// Signed noise in [-1, 1] with the generator a function parameter selects.
 fn signed_noise(point: DVec3, generator: f64) -> f64 {
-    let generator = NoiseGenerator::from_number(generator as i64).unwrap_or_default();
-    2.0 * noise(point, generator) - 1.0
+    2.0 * noise(point, generator_parameter(generator)) - 1.0
 }
 
 /// `f_hetero_mf`: each octave's `noise + offset`, weighted, scaled by the sum so far raised to
@@ -92,7 +98,7 @@ pub fn ridged_multifractal(point: DVec3, fractal: Multifractal) -> f64 {
 pub fn ridge(point: DVec3, parameters: [f64; 6]) -> f64 {
     let [lambda, octaves, omega, offset, ridge, generator] = parameters;
     let octaves = octaves.clamp(1.0, MAX_OCTAVES);
-    let generator = NoiseGenerator::from_number(generator as i64).unwrap_or_default();
+    let generator = generator_parameter(generator);
     let (mut total, mut weights) = (0.0, 0.0);
     let (mut frequency, mut amplitude, mut octave) = (1.0, 1.0, 0.0);
     while octave < octaves {
