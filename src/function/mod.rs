@@ -10,6 +10,8 @@
 //! 0); the tree's depth is bounded by the source expression's nesting.
 
 pub mod internal;
+mod internal_fractals;
+mod internal_shapes;
 pub mod spline;
 mod vector;
 

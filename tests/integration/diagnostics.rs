@@ -302,9 +302,9 @@ fn unimplemented_internal_function_is_refused_where_called() {
         2,
         14,
         &[
-            "`f_helix1`: POV-Ray's internal function 25 is not implemented in durer",
+            "`f_comma`: POV-Ray's internal function 9 is not implemented in durer",
             "called here",
-            "implemented: f_ellipsoid",
+            "every function of functions.inc except f_comma (9)",
         ],
     );
 }

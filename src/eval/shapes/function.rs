@@ -210,8 +210,8 @@ impl Evaluator {
             )
             .with_label("called through this definition")
             .with_help(
-                "implemented: f_ellipsoid, f_paraboloid, f_ph, f_r, f_rounded_box, f_sphere, \
-                 f_superellipsoid, f_th, f_torus, f_torus2, f_noise3d, f_noise_generator",
+                "durer implements every function of functions.inc except f_comma (9), \
+                 f_dupin_cyclid (16), f_enneper (18) and f_helical_torus (24)",
             )
             .into()
         })
