@@ -27,6 +27,8 @@ pub struct Raster {
     pub high_dynamic_range: bool,
     /// Each pixel's palette index, row by row from the top, for palette PNG files.
     pub palette_indices: Option<Vec<u8>>,
+    /// A PNG file that does not state its encoding (no `gAMA`, `sRGB` or `iCCP` chunk).
+    pub gamma_unstated: bool,
 }
 
 impl Raster {
@@ -132,6 +134,7 @@ pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
         image::ImageFormat::Png => png_palette_indices(&bytes, width, height),
         _ => None,
     };
+    let gamma_unstated = chosen == image::ImageFormat::Png && !png_states_gamma(&bytes);
     Ok(Raster {
         width,
         height,
@@ -140,6 +143,16 @@ pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
         sixteen_bit,
         high_dynamic_range,
         palette_indices,
+        gamma_unstated,
+    })
+}
+
+/// Whether a PNG file states how its values are encoded (a `gAMA`, `sRGB` or `iCCP` chunk).
+fn png_states_gamma(bytes: &[u8]) -> bool {
+    let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    decoder.read_info().is_ok_and(|reader| {
+        let info = reader.info();
+        info.gama_chunk.is_some() || info.srgb.is_some() || info.icc_profile.is_some()
     })
 }
 

@@ -6,8 +6,10 @@
 //!
 //! Gamma (POV-Ray 3.7): an image's stored values are decoded with the `gamma` given in the
 //! block (`gamma srgb` or a number), else with the sRGB transfer function, except for HDR
-//! files, which are linear already. `image_pattern` and `bump_map` use the stored values
-//! whatever `gamma` says (measured: a stored 64 gives the pattern value 0.25098 with and
+//! files, which are linear already, and PNG files that state no gamma (no `gAMA`, `sRGB`
+//! or `iCCP` chunk) read under `#version` below 3.7, whose stored values are used as they
+//! are (measured: a stored 85 gives 0.333333 at `assumed_gamma` 1 and 2.2 alike).
+//! `image_pattern` and `bump_map` use the stored values whatever `gamma` says (measured: a stored 64 gives the pattern value 0.25098 with and
 //! without `gamma 1.0`; bump tilts are linear in the stored grey levels).
 
 use super::stream::Stream;
@@ -232,6 +234,7 @@ impl Evaluator {
             _ if purpose == ImageUse::StoredValues => ImageGamma::Linear,
             Some(gamma) => gamma,
             None if raster.high_dynamic_range => ImageGamma::Linear,
+            None if self.version < 3.7 && raster.gamma_unstated => ImageGamma::Linear,
             None => ImageGamma::Srgb,
         };
         let pixels = raster

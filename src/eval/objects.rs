@@ -331,6 +331,10 @@ impl Evaluator {
                         self.attach_interior_texture(object, texture);
                         return Ok(());
                     }
+                    if &**w == "radiosity" {
+                        let mut body = Stream::new(block.body.clone());
+                        return self.eval_object_radiosity(&mut body);
+                    }
                     if &**w == "clipped_by" || &**w == "bounded_by" {
                         return self.eval_clip_or_bound(object, w, block);
                     }

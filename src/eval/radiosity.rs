@@ -1,6 +1,7 @@
 //! The `radiosity { .. }` block of `global_settings`.
 //!
 //! In: the block's items. Out: [`RadiositySettings`] stored in the global settings.
+//! Also an object's `radiosity { importance }` block (checked, no effect).
 //! Holds: out-of-range values are reported with their span (POV-Ray's limits: `count` at
 //! least 1, `recursion_limit` 1..=20, `nearest_count` 1..=20, reuse radii ordered).
 
@@ -82,6 +83,32 @@ impl Evaluator {
             radiosity.pretrace_end = radiosity.pretrace_start;
         }
         self.settings.radiosity = Some(radiosity);
+        Ok(())
+    }
+
+    /// Reads an object's `radiosity { importance F }` block. The importance (a fraction of
+    /// `count` for samples gathered on the object) is checked and has no effect: every
+    /// sample gathers `count` rays.
+    pub(crate) fn eval_object_radiosity(&mut self, stream: &mut Stream) -> EvalResult<()> {
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, _) if &**word == "importance" => {
+                    let (value, span) = self.expect_value(stream, "the importance")?;
+                    let importance = self.to_float(value, span)?;
+                    if !(importance > 0.0 && importance <= 1.0) {
+                        return Err(self
+                            .error(
+                                span,
+                                format!("radiosity importance {importance} is out of range"),
+                            )
+                            .with_label("expected a fraction above 0 and at most 1")
+                            .into());
+                    }
+                }
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "radiosity")),
+            }
+        }
         Ok(())
     }
 

@@ -525,7 +525,7 @@ impl Evaluator {
                     if name == "radiosity" {
                         let mut body = Stream::new(block.body.clone());
                         self.eval_radiosity(&mut body)?;
-                    } else if name == "photons" {
+                    } else if name == "photons" || name == "subsurface" {
                         let message = format!("`{name}` is not supported yet; it is ignored");
                         self.warn(block.head_span, message);
                     } else {

@@ -143,9 +143,13 @@ pub fn render(
         .antialias
         .filter(|_| blur.is_none() && mesh.is_none())
     {
-        None => map_rows(width, height, Some(progress), |column, row| {
-            first(column, row)
-        }),
+        None => match tracer.radiosity() {
+            // The final render stores the radiosity samples it gathers, as POV-Ray does.
+            Some(radiosity) => {
+                radiosity::map_rows_storing(radiosity, width, height, Some(progress), first)
+            }
+            None => map_rows(width, height, Some(progress), first),
+        },
         Some(aa) if aa.method == Method::NonRecursive => {
             let centres = map_rows(width, height, None, first);
             // Supersample in parallel every pixel the first samples alone mark; the scan

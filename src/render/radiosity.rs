@@ -3,10 +3,12 @@
 //! In: the scene's [`RadiositySettings`], the eye position, and a way to trace a gathering
 //! ray (given by the tracer). Out: the irradiance at a surface point, which the tracer
 //! multiplies by pigment, `diffuse` and `brightness` in place of the ambient term.
-//! Holds: deterministic results at any thread count — the cache is filled only by the
-//! pretrace, which runs on one thread in a fixed pixel order; the final render only reads
-//! it (a point no cached sample covers is gathered afresh and not stored). No allocation
-//! per ray outside the pretrace (lookups reuse a per-thread buffer).
+//! Holds: deterministic results at any thread count — the pretrace fills the cache on one
+//! thread in a fixed pixel order; the final render ([`map_rows_storing`]) runs in blocks of
+//! rows, each row traced by one thread that sees the cache as it was when the block began
+//! plus the samples the row itself gathered, and the rows' new samples join the cache in
+//! row order between blocks. Allocation per ray only when a sample is stored (lookups reuse
+//! a per-thread buffer).
 //!
 //! Method (Ward's irradiance cache, as POV-Ray 3.7's manual describes it):
 //! - a sample gathers `count` rays over the hemisphere around the normal, drawn from a
@@ -26,6 +28,7 @@
 use super::radiosity_index::SampleIndex;
 use crate::scene::RadiositySettings;
 use glam::DVec3;
+use rayon::prelude::*;
 use std::cell::RefCell;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use std::sync::RwLock;
@@ -62,7 +65,27 @@ struct LookupBuffers {
     usable: Vec<(u32, f64)>,
 }
 
+impl Cache {
+    /// Adds `sample`, to be found by lookups whose radius scale is at most `reach_scale`.
+    fn push(&mut self, sample: Sample, reach_scale: f64) {
+        // Ids are u32 to keep the index small; a cache cannot grow that large.
+        if let Ok(id) = u32::try_from(self.samples.len()) {
+            self.index
+                .insert(id, sample.point, sample.radius * reach_scale.max(1.0));
+            self.samples.push(sample);
+        }
+    }
+}
+
+/// Rows of the final render whose new samples join the cache together; the rows of a block
+/// are traced in parallel.
+const ROWS_PER_BLOCK: usize = 8;
+
 thread_local! {
+    /// Samples this thread gathered during the final render for the row it is tracing, one
+    /// cache per bounce; `None` outside [`map_rows_storing`]'s rows.
+    static ROW_SAMPLES: RefCell<Option<Vec<Cache>>> = const { RefCell::new(None) };
+
     /// The lookup buffers of this thread.
     static LOOKUP_BUFFERS: RefCell<LookupBuffers> = const {
         RefCell::new(LookupBuffers {
@@ -179,10 +202,22 @@ impl Radiosity {
         } else {
             1.0
         };
-        let (sum, weight, found) = {
+        let (mut sum, mut weight, mut found) = {
             let cache = cache.read().unwrap_or_else(|poison| poison.into_inner());
             interpolate(&cache, point, normal, bound_scale)
         };
+        if !filling {
+            // The samples the current row gathered so far count as well.
+            ROW_SAMPLES.with(|row| {
+                if let Some(row_cache) = row.borrow().as_ref().and_then(|c| c.get(depth as usize)) {
+                    let (row_sum, row_weight, row_found) =
+                        interpolate(row_cache, point, normal, bound_scale);
+                    sum += row_sum;
+                    weight += row_weight;
+                    found += row_found;
+                }
+            });
+        }
         let wanted = self.settings.nearest_count.max(1);
         let reuse = if filling {
             found >= wanted
@@ -199,26 +234,31 @@ impl Radiosity {
                 0
             };
             let (irradiance, harmonic_distance) = self.gather(normal, start, gather);
-            if filling {
-                let eye_distance = (point - self.eye).length();
-                let radius = (self.settings.error_bound * harmonic_distance).clamp(
-                    self.settings.minimum_reuse * eye_distance,
-                    self.settings.maximum_reuse * eye_distance,
-                );
-                if radius.is_finite() && radius > 0.0 && irradiance.is_finite() {
+            let eye_distance = (point - self.eye).length();
+            let radius = (self.settings.error_bound * harmonic_distance).clamp(
+                self.settings.minimum_reuse * eye_distance,
+                self.settings.maximum_reuse * eye_distance,
+            );
+            if radius.is_finite() && radius > 0.0 && irradiance.is_finite() {
+                let sample = Sample {
+                    point,
+                    normal,
+                    irradiance,
+                    radius,
+                };
+                // Found wherever some lookup (with its radius scale) could use it.
+                let reach_scale = self.settings.low_error_factor;
+                if filling {
                     let mut cache = cache.write().unwrap_or_else(|poison| poison.into_inner());
-                    // Ids are u32 to keep the index small; a cache cannot grow that large.
-                    if let Ok(id) = u32::try_from(cache.samples.len()) {
-                        // Found wherever some lookup (with its radius scale) could use it.
-                        let reach = radius * self.settings.low_error_factor.max(1.0);
-                        cache.index.insert(id, point, reach);
-                        cache.samples.push(Sample {
-                            point,
-                            normal,
-                            irradiance,
-                            radius,
-                        });
-                    }
+                    cache.push(sample, reach_scale);
+                } else {
+                    ROW_SAMPLES.with(|row| {
+                        if let Some(row_caches) = row.borrow_mut().as_mut() {
+                            if let Some(row_cache) = row_caches.get_mut(depth as usize) {
+                                row_cache.push(sample, reach_scale);
+                            }
+                        }
+                    });
                 }
             }
             irradiance
@@ -273,6 +313,64 @@ impl Radiosity {
             light *= limit / brightest;
         }
         light * self.settings.brightness
+    }
+}
+
+/// `colour(column, row)` for every pixel of a `width` × `height` image, storing the samples
+/// the final render gathers: rows are traced in parallel a block of [`ROWS_PER_BLOCK`] at a
+/// time, each on one thread with its own list of new samples (which its later pixels reuse);
+/// after each block the lists join the cache in row order, so later blocks reuse them and
+/// the image does not depend on the number of threads. `progress` hears of each finished row.
+pub fn map_rows_storing(
+    radiosity: &Radiosity,
+    width: u32,
+    height: u32,
+    progress: Option<&(dyn Fn(u32) + Sync)>,
+    colour: impl Fn(u32, u32) -> DVec3 + Sync,
+) -> Vec<DVec3> {
+    let row_length = width.max(1) as usize;
+    let mut colours = vec![DVec3::ZERO; row_length * height as usize];
+    for (block, rows) in colours.chunks_mut(row_length * ROWS_PER_BLOCK).enumerate() {
+        let gathered: Vec<Vec<Cache>> = rows
+            .par_chunks_mut(row_length)
+            .enumerate()
+            .map(|(offset, line)| {
+                let row = (block * ROWS_PER_BLOCK + offset) as u32;
+                let fresh = (0..radiosity.caches.len())
+                    .map(|_| Cache::default())
+                    .collect();
+                ROW_SAMPLES.with(|samples| *samples.borrow_mut() = Some(fresh));
+                for (column, slot) in line.iter_mut().enumerate() {
+                    *slot = colour(column as u32, row);
+                }
+                if let Some(progress) = progress {
+                    progress(1);
+                }
+                ROW_SAMPLES
+                    .with(|samples| samples.borrow_mut().take())
+                    .unwrap_or_default()
+            })
+            .collect();
+        radiosity.merge(gathered);
+    }
+    colours
+}
+
+impl Radiosity {
+    /// Adds the samples rows gathered, row by row in order, to the caches of their bounces.
+    fn merge(&self, rows: Vec<Vec<Cache>>) {
+        let reach_scale = self.settings.low_error_factor;
+        for row in rows {
+            for (cache, row_cache) in self.caches.iter().zip(row) {
+                if row_cache.samples.is_empty() {
+                    continue;
+                }
+                let mut cache = cache.write().unwrap_or_else(|poison| poison.into_inner());
+                for sample in row_cache.samples {
+                    cache.push(sample, reach_scale);
+                }
+            }
+        }
     }
 }
 
@@ -406,6 +504,29 @@ mod tests {
         radiosity.set_filling(false);
         let unused = |_: DVec3| -> Gathered { panic!("the cached sample should be reused") };
         let light = radiosity.irradiance(DVec3::new(0.1, 0.0, 0.0), DVec3::Y, 0, &unused);
+        assert!((light - DVec3::ONE).length() < 1e-12);
+    }
+
+    #[test]
+    fn the_final_pass_stores_its_samples_row_by_row() {
+        let radiosity = Radiosity::new(&RadiositySettings::default(), DVec3::new(0.0, 0.0, -10.0));
+        let rays = AtomicU32::new(0);
+        let counting_sky = |direction: DVec3| {
+            rays.fetch_add(1, Ordering::Relaxed);
+            sky(direction)
+        };
+        let image = map_rows_storing(&radiosity, 4, 2, None, |column, _row| {
+            let point = DVec3::new(f64::from(column) * 0.01, 0.0, 0.0);
+            radiosity.irradiance(point, DVec3::Y, 0, &counting_sky)
+        });
+        assert!(image
+            .iter()
+            .all(|light| (*light - DVec3::ONE).length() < 1e-12));
+        // Each row of the block gathers one sample that its other pixels reuse.
+        assert_eq!(rays.load(Ordering::Relaxed), 2 * 35);
+        // After the block, the samples are in the cache for everyone.
+        let unused = |_: DVec3| -> Gathered { panic!("the stored sample should be reused") };
+        let light = radiosity.irradiance(DVec3::new(0.02, 0.0, 0.0), DVec3::Y, 0, &unused);
         assert!((light - DVec3::ONE).length() < 1e-12);
     }
 

@@ -370,6 +370,34 @@ fn same_image_with_one_and_four_threads() {
 }
 
 #[test]
+fn radiosity_final_pass_is_the_same_with_one_and_three_threads() {
+    let mut busy = busy_scene();
+    // A coarse pretrace and a low error bound: the final pass gathers and stores most samples.
+    busy.settings.radiosity = Some(crate::scene::RadiositySettings {
+        count: 12,
+        direction_pool: 12,
+        error_bound: 0.3,
+        pretrace_start: 0.25,
+        pretrace_end: 0.25,
+        ..Default::default()
+    });
+    let world = World::build(&busy);
+    let options = RenderOptions {
+        width: 40,
+        height: 30,
+        antialias: None,
+    };
+    let render_with = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| render(&busy, &world, &options, &|_| {}))
+    };
+    assert_eq!(render_with(1), render_with(3));
+}
+
+#[test]
 fn progress_counts_every_row() {
     let busy = busy_scene();
     let world = World::build(&busy);

@@ -53,6 +53,7 @@ use super::texture::{for_each_component, pigment_at_hit};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
 use crate::scene::{Scene, Texture};
 use glam::DVec3;
+use std::cell::Cell;
 
 /// Camera, reflected and transmitted rays ignore surfaces closer than this to their start
 /// (measured: POV-Ray 3.7 ignores planes, discs, triangles, boxes and spheres nearer than
@@ -344,7 +345,8 @@ impl<'a> Tracer<'a> {
                 }
             }
             travelled = hit.distance;
-            let surface = self.shade(&ray, &hit, material, level, weight, &media);
+            let indirect = Cell::new(None);
+            let surface = self.shade(&ray, &hit, material, level, weight, &media, &indirect);
             colour += carried * surface.colour;
             let Some(continued) = surface.continued else {
                 return (colour, first_distance);
@@ -427,7 +429,9 @@ impl<'a> Tracer<'a> {
 
     /// The light leaving a surface towards the ray, and how the ray continues through it
     /// when it passes without bending: the blend of the shaded plain textures the material's
-    /// texture is made of (see [`for_each_component`]).
+    /// texture is made of (see [`for_each_component`]). `indirect` holds the hit's radiosity
+    /// light once a component has gathered it: POV-Ray gathers once per hit, not per layer.
+    #[allow(clippy::too_many_arguments)]
     fn shade(
         &self,
         ray: &Ray,
@@ -436,6 +440,7 @@ impl<'a> Tracer<'a> {
         level: u32,
         weight: RayWeight,
         media: &Media,
+        indirect: &Cell<Option<DVec3>>,
     ) -> Shaded {
         if let Some(blend) = &hit.corner_blend {
             // A mesh triangle with a texture per corner: each shaded, blended by weight.
@@ -452,14 +457,24 @@ impl<'a> Tracer<'a> {
                     corner_blend: None,
                     ..*hit
                 };
-                let part = self.shade(ray, &single, corner_material, level, weight, media);
+                let part = self.shade(
+                    ray,
+                    &single,
+                    corner_material,
+                    level,
+                    weight,
+                    media,
+                    indirect,
+                );
                 total.add(DVec3::splat(share.max(0.0)), part);
             }
             return total;
         }
         let texture = material.texture_facing(ray.direction, hit.normal);
         if texture.compound.is_none() {
-            return self.shade_plain(ray, hit, material, texture, true, level, weight, media);
+            return self.shade_plain(
+                ray, hit, material, texture, true, level, weight, media, indirect,
+            );
         }
         let mut total = Shaded {
             colour: DVec3::ZERO,
@@ -476,6 +491,7 @@ impl<'a> Tracer<'a> {
                 level,
                 weight,
                 media,
+                indirect,
             );
             total.add(share, part);
         });
@@ -483,7 +499,8 @@ impl<'a> Tracer<'a> {
     }
 
     /// [`Self::shade`] for one plain texture; `passes_light` false for an upper layer of a
-    /// layered texture (the layers below stand for what is seen through it).
+    /// layered texture (the layers below stand for what is seen through it); `indirect` is
+    /// the hit's radiosity light, gathered by the first component that needs it.
     #[allow(clippy::too_many_arguments)]
     fn shade_plain(
         &self,
@@ -495,6 +512,7 @@ impl<'a> Tracer<'a> {
         level: u32,
         weight: RayWeight,
         media: &Media,
+        indirect: &Cell<Option<DVec3>>,
     ) -> Shaded {
         let surface = hit_surface(hit.point, ray.direction, hit.normal);
         let pigment = pigment_at_hit(&texture.pigment, hit, &surface);
@@ -521,7 +539,11 @@ impl<'a> Tracer<'a> {
             } else {
                 surface.normal
             };
-            let light = self.indirect_light(hit.point, oriented, level, media);
+            let light = indirect.get().unwrap_or_else(|| {
+                let light = self.indirect_light(hit.point, oriented, level, media);
+                indirect.set(Some(light));
+                light
+            });
             local.body += pigment.rgb_vec() * texture.finish.diffuse * light;
         }
         let opacity = if self.legacy_opacity {

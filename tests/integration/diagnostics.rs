@@ -795,6 +795,19 @@ fn radiosity_pretrace_size_out_of_range_is_refused() {
 }
 
 #[test]
+fn radiosity_importance_out_of_range_is_refused() {
+    check(
+        "radiosity_importance_out_of_range",
+        2,
+        56,
+        &[
+            "radiosity importance 1.5 is out of range",
+            "above 0 and at most 1",
+        ],
+    );
+}
+
+#[test]
 fn interior_texture_outside_an_object_is_an_error() {
     check(
         "interior_texture_alone",
