@@ -9,10 +9,10 @@
 //! 0, 30 and 60 degrees, thicknesses 0.02 to 1, amounts 0.5 and 1): channel c gets
 //! `1 + amount · cos(2π · thickness · (cos_light + cos_view) / λ_c)` with wavelengths
 //! λ = (0.70, 0.52, 0.48), POV-Ray's default `irid_wavelength`. Swapping the light and the
-//! viewer gives the same colour. `turbulence` u varies the thickness: durer uses
-//! `thickness · (1 + u · turbulence(point))` (POV-Ray's noise turbulence, 6 octaves, at the
-//! world point) — a fit, not a measurement: it gives textures/pigments/irid.pov's blobs
-//! their shapes roughly (12% of pixels off).
+//! viewer gives the same colour. `turbulence` u varies the thickness to
+//! `thickness · (1 + u · (2 · turbulence(point) − 1))`, with POV-Ray's scalar noise
+//! turbulence of 5 octaves (omega 0.5, lambda 2) at the world point (measured by inverting
+//! the interference colour of a lit plane; textures/pigments/irid.pov then matches exactly).
 
 use crate::noise::{turbulence, NoiseGenerator, TurbulenceShape};
 use crate::scene::Irid;
@@ -22,13 +22,17 @@ use std::f64::consts::TAU;
 /// POV-Ray's default `irid_wavelength` (measured from the interference phases).
 pub const IRID_WAVELENGTHS: DVec3 = DVec3::new(0.70, 0.52, 0.48);
 
-/// The film thickness of `irid` at world `point`: its `thickness`, varied by `turbulence`.
+/// The film thickness of `irid` at world `point`: its `thickness`, varied by `turbulence`
+/// around it (turbulence 0.5 is the middle).
 /// It depends only on the point, so shading computes it once per surface sample.
 pub fn irid_thickness(irid: &Irid, point: DVec3) -> f64 {
     if irid.turbulence != 0.0 {
-        let shape = TurbulenceShape::default();
+        let shape = TurbulenceShape {
+            octaves: 5,
+            ..TurbulenceShape::default()
+        };
         let stir = turbulence(point, &shape, NoiseGenerator::default());
-        irid.thickness * (1.0 + irid.turbulence * stir)
+        irid.thickness * (1.0 + irid.turbulence * (2.0 * stir - 1.0))
     } else {
         irid.thickness
     }
