@@ -242,6 +242,11 @@ impl PatternSpec {
         });
     }
 
+    /// True for the patterns whose value depends on the surface normal (`slope`, `aoi`).
+    pub fn depends_on_surface(&self) -> bool {
+        matches!(self.kind, PatternKind::Slope(_) | PatternKind::Aoi)
+    }
+
     /// For block patterns (`checker`, `hexagon`, `brick`, ...): how many blocks there are.
     /// `None` for patterns with a continuous value.
     pub fn block_count(&self) -> Option<usize> {

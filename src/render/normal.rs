@@ -201,9 +201,9 @@ fn slope_map_height(entries: &[SlopeEntry], value: f64) -> f64 {
     let t = (value - low.key) / span;
     let (t2, t3) = (t * t, t * t * t);
     (2.0 * t3 - 3.0 * t2 + 1.0) * low.height
-        + (t3 - 2.0 * t2 + t) * span * low.slope
+        + (t3 - 2.0 * t2 + t) * low.slope
         + (-2.0 * t3 + 3.0 * t2) * high.height
-        + (t3 - t2) * span * high.slope
+        + (t3 - t2) * high.slope
 }
 
 #[cfg(test)]
