@@ -24,8 +24,9 @@
 //!   pattern's discontinuity (the wrap of `gradient x`, checker edges) then matches POV-Ray
 //!   to a pixel. Block patterns (`checker`) are heights 0 on the first block, 1 on the
 //!   second (their value).
-//! - a reflected ray that a perturbed normal would send into the surface is mirrored about
-//!   the unperturbed normal instead (see `render::trace`).
+//! - a reflected ray that a perturbed normal would send into the surface is mirrored once
+//!   more about the surface plane, or about the unperturbed normal when the ray met the
+//!   perturbed normal from behind (see `render::trace`).
 //! - the tilt is applied to the normal facing the viewer (the same picture from above and
 //!   below a plane lit from the viewer's side).
 //! - `normal_map`, block normals and `average`: the weighted sum of the entries' perturbed
