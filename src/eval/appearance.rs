@@ -39,7 +39,9 @@ impl Evaluator {
                     average = true;
                     continue;
                 }
-                if let Some(spec) = self.pattern_keyword(word, *span, stream)? {
+                if let Some(spec) =
+                    self.pattern_keyword_outside_normal(word, *span, stream, "texture")?
+                {
                     let blocks = match spec.block_count() {
                         Some(count) => self.texture_block_list(stream, count)?,
                         None => None,
@@ -358,7 +360,9 @@ impl Evaluator {
                 continue;
             }
             if let Item::Keyword(word, span) = &item {
-                if let Some(spec) = self.pattern_keyword(word, *span, stream)? {
+                if let Some(spec) =
+                    self.pattern_keyword_outside_normal(word, *span, stream, "pigment")?
+                {
                     if let Some(earlier) = earlier {
                         return Err(self.pattern_not_first(word, *span, earlier));
                     }

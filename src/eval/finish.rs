@@ -172,6 +172,8 @@ impl Evaluator {
             amount: 0.0,
             thickness: 0.0,
             turbulence: 0.0,
+            wavelengths: self.settings.irid_wavelength,
+            noise_generator: self.settings.noise_generator,
         });
         while let Some(item) = self.next_item(stream)? {
             match &item {

@@ -166,7 +166,9 @@ impl Evaluator {
                 continue;
             }
             if let Item::Keyword(word, span) = &item {
-                if let Some(spec) = self.pattern_keyword(word, *span, stream)? {
+                if let Some(spec) =
+                    self.pattern_keyword_outside_normal(word, *span, stream, "density")?
+                {
                     let map = match spec.block_count() {
                         Some(count) => PigmentMap::Blocks(self.density_list(stream, count)?),
                         None => PigmentMap::Colours(grey_ramp()),

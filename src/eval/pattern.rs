@@ -136,6 +136,31 @@ impl Evaluator {
         .into()
     }
 
+    /// [`Self::pattern_keyword`] for the blocks other than `normal` (pigment, texture,
+    /// density, pattern functions): `facets` is refused there, as POV-Ray does ("can only be
+    /// used in a normal statement").
+    pub(crate) fn pattern_keyword_outside_normal(
+        &mut self,
+        word: &str,
+        span: Span,
+        stream: &mut Stream,
+        owner: &str,
+    ) -> EvalResult<Option<PatternSpec>> {
+        let spec = self.pattern_keyword(word, span, stream)?;
+        if let Some(PatternSpec {
+            kind: PatternKind::Facets { .. },
+            ..
+        }) = spec
+        {
+            return Err(self
+                .error(span, "`facets` can only be used in a `normal`")
+                .with_label(format!("not allowed in a `{owner}`"))
+                .with_help("facets only tilts normals: write it as `normal { facets .. }`")
+                .into());
+        }
+        Ok(spec)
+    }
+
     /// When `item` is a pattern written as a block (`function { .. }`, `image_pattern { .. }`,
     /// `pigment_pattern { .. }`, `slope { .. }`, `object { .. }`), parses it. For `object`
     /// the block list (the items for outside and inside) is inside the block: the stream

@@ -507,8 +507,12 @@ impl Evaluator {
                             self.expect_noise_generator(stream)?.unwrap_or_default()
                     }
                     "number_of_waves" => self.number_of_waves(stream)?,
-                    "charset" | "max_intersections" | "hf_gray_16" | "irid_wavelength"
-                    | "mm_per_unit" | "subsurface" => {
+                    "irid_wavelength" => {
+                        let (value, span) = self.expect_value(stream, "a colour")?;
+                        self.settings.irid_wavelength = self.to_colour(value, span)?.rgb_vec();
+                    }
+                    "charset" | "max_intersections" | "hf_gray_16" | "mm_per_unit"
+                    | "subsurface" => {
                         self.warn(
                             *span,
                             format!("global setting `{word}` is not supported yet; it is ignored"),

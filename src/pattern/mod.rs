@@ -242,6 +242,11 @@ impl PatternSpec {
         });
     }
 
+    /// True for the patterns whose value depends on the surface normal (`slope`, `aoi`).
+    pub fn depends_on_surface(&self) -> bool {
+        matches!(self.kind, PatternKind::Slope(_) | PatternKind::Aoi)
+    }
+
     /// For block patterns (`checker`, `hexagon`, `brick`, ...): how many blocks there are.
     /// `None` for patterns with a continuous value.
     pub fn block_count(&self) -> Option<usize> {
@@ -282,7 +287,12 @@ impl PatternSpec {
         if !point.is_finite() {
             return 0;
         }
-        let p = self.moved_point(point);
+        self.block_of_moved(self.moved_point(point))
+    }
+
+    /// [`Self::block`] at a point already through the warps and turbulence
+    /// ([`Self::moved_point`]).
+    fn block_of_moved(&self, p: DVec3) -> usize {
         match &self.kind {
             PatternKind::Checker => checker_block(p),
             PatternKind::Brick { size, mortar } => geometric::brick_block(p, *size, *mortar),
@@ -307,10 +317,20 @@ impl PatternSpec {
         if !point.is_finite() {
             return 0.0;
         }
-        if self.block_count().is_some() {
-            return self.block(point) as f64;
+        self.value_of_moved(self.moved_point(point), surface)
+    }
+
+    /// [`Self::value_at`] at a point already through the warps and turbulence
+    /// ([`Self::moved_point`]). A slope-derived normal samples the pattern this way around
+    /// the centre's moved point: POV-Ray warps only the centre (measured: `normal { gradient
+    /// x turbulence 1 }` tilts every point alike, bumping only where the value wraps).
+    pub fn value_of_moved(&self, p: DVec3, surface: &SurfaceContext) -> f64 {
+        if !p.is_finite() {
+            return 0.0;
         }
-        let p = self.moved_point(point);
+        if self.block_count().is_some() {
+            return self.block_of_moved(p) as f64;
+        }
         let value = self.wave.apply(self.raw_value(p, surface));
         if value.is_finite() {
             value

@@ -10,7 +10,9 @@
 //! - 1 spherical: u is the longitude around Y, v the latitude from the south pole (0) to
 //!   the north pole (1).
 //! - 2 cylindrical: u is the angle around Y, v is y (one unit high).
-//! - 5 torus: u the angle around Y, v the angle around the tube of a unit major radius.
+//! - 5 torus: u the angle around Y, v the angle around the tube of a unit major radius,
+//!   starting (v = 0) on the tube's inner rim (measured: half a turn from the angle
+//!   `atan2(y, distance from the Y axis − 1)`).
 //!
 //! Measured (planar maps, 16-bit output): pixel (column, row) covers
 //! `[column/width, (column+1)/width)` in u and rows count down from v = 1; `interpolate 2`
@@ -154,7 +156,7 @@ fn image_coordinates(image: &ImageMap, point: DVec3) -> Option<(f64, f64)> {
         ImageProjection::Cylindrical => (longitude(point), point.y),
         ImageProjection::Torus => {
             let radial = (point.x * point.x + point.z * point.z).sqrt() - 1.0;
-            let tube = point.y.atan2(radial).rem_euclid(TAU) / TAU;
+            let tube = (-point.y).atan2(-radial).rem_euclid(TAU) / TAU;
             (longitude(point), tube)
         }
     };

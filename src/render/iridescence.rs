@@ -8,27 +8,28 @@
 //! Rule measured in POV-Ray 3.7 (16-bit linear renders of a lit plane, lights and viewer at
 //! 0, 30 and 60 degrees, thicknesses 0.02 to 1, amounts 0.5 and 1): channel c gets
 //! `1 + amount · cos(2π · thickness · (cos_light + cos_view) / λ_c)` with wavelengths
-//! λ = (0.70, 0.52, 0.48), POV-Ray's default `irid_wavelength`. Swapping the light and the
-//! viewer gives the same colour. `turbulence` u varies the thickness: durer uses
-//! `thickness · (1 + u · turbulence(point))` (POV-Ray's noise turbulence, 6 octaves, at the
-//! world point) — a fit, not a measurement: it gives textures/pigments/irid.pov's blobs
-//! their shapes roughly (12% of pixels off).
+//! λ = `irid_wavelength` as written, or (0.70, 0.52, 0.48) without one (measured). Swapping the light and the
+//! viewer gives the same colour. `turbulence` u varies the thickness to
+//! `thickness · (1 + u · (2 · turbulence(point) − 1))`, with POV-Ray's scalar noise
+//! turbulence of 5 octaves (omega 0.5, lambda 2) at the world point (measured by inverting
+//! the interference colour of a lit plane; textures/pigments/irid.pov then matches exactly).
 
-use crate::noise::{turbulence, NoiseGenerator, TurbulenceShape};
+use crate::noise::{turbulence, TurbulenceShape};
 use crate::scene::Irid;
 use glam::DVec3;
 use std::f64::consts::TAU;
 
-/// POV-Ray's default `irid_wavelength` (measured from the interference phases).
-pub const IRID_WAVELENGTHS: DVec3 = DVec3::new(0.70, 0.52, 0.48);
-
-/// The film thickness of `irid` at world `point`: its `thickness`, varied by `turbulence`.
+/// The film thickness of `irid` at world `point`: its `thickness`, varied by `turbulence`
+/// around it (turbulence 0.5 is the middle).
 /// It depends only on the point, so shading computes it once per surface sample.
 pub fn irid_thickness(irid: &Irid, point: DVec3) -> f64 {
     if irid.turbulence != 0.0 {
-        let shape = TurbulenceShape::default();
-        let stir = turbulence(point, &shape, NoiseGenerator::default());
-        irid.thickness * (1.0 + irid.turbulence * stir)
+        let shape = TurbulenceShape {
+            octaves: 5,
+            ..TurbulenceShape::default()
+        };
+        let stir = turbulence(point, &shape, irid.noise_generator);
+        irid.thickness * (1.0 + irid.turbulence * (2.0 * stir - 1.0))
     } else {
         irid.thickness
     }
@@ -39,7 +40,7 @@ pub fn irid_thickness(irid: &Irid, point: DVec3) -> f64 {
 /// the directions to the light and to the viewer.
 pub fn iridescence(irid: &Irid, thickness: f64, cos_light: f64, cos_view: f64) -> DVec3 {
     let path = TAU * thickness * (cos_light + cos_view);
-    let phase = DVec3::splat(path) / IRID_WAVELENGTHS;
+    let phase = DVec3::splat(path) / irid.wavelengths;
     let factor = DVec3::ONE + irid.amount * DVec3::new(phase.x.cos(), phase.y.cos(), phase.z.cos());
     if factor.is_finite() {
         factor
@@ -57,6 +58,8 @@ mod tests {
             amount,
             thickness,
             turbulence: 0.0,
+            wavelengths: crate::scene::DEFAULT_IRID_WAVELENGTHS,
+            noise_generator: crate::noise::NoiseGenerator::default(),
         }
     }
 

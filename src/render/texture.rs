@@ -13,14 +13,21 @@
 //!   through the layers above it, weighted by the product of their transmission
 //!   (`filter · pigment + transmit`). Only the bottom layer lets rays pass on through the
 //!   surface.
+//! - a texture map's two neighbouring entries are visited upper first, then lower. After a
+//!   plain texture with a `normal` has been visited, the surface-dependent patterns (`slope`,
+//!   `aoi`) of the maps evaluated later at the same hit see its perturbed normal instead of
+//!   the surface's (measured: `texture_map { [0 T] [1 V] }`, T a `slope` map and V bumpy,
+//!   gives T a bumpy slope boundary; with the entries swapped T's boundary stays smooth).
 
 use super::image_map::material_choice;
 use super::lights::transmission;
+use super::normal::perturbed_normal_at;
 use super::pattern::{blend_position, block_index, pigment_colour_at};
 use crate::geometry::SurfaceHit;
 use crate::pattern::SurfaceContext;
-use crate::scene::{BlendMap, Colour, CompoundTexture, Pigment, Texture};
+use crate::scene::{BlendMap, Colour, CompoundTexture, Normal, Pigment, Texture};
 use glam::DVec3;
+use std::cell::Cell;
 
 /// How far nested compound textures are followed.
 const MAX_TEXTURE_NESTING: u32 = 32;
@@ -33,7 +40,11 @@ pub fn for_each_component(
     surface: &SurfaceContext,
     visit: &mut dyn FnMut(&Texture, DVec3, bool),
 ) {
-    let place = Place { hit, surface };
+    let place = Place {
+        hit,
+        surface,
+        last_normal: Cell::new(None),
+    };
     components(texture, &place, DVec3::ONE, true, 0, visit);
 }
 
@@ -41,6 +52,23 @@ pub fn for_each_component(
 struct Place<'a> {
     hit: &'a SurfaceHit,
     surface: &'a SurfaceContext,
+    /// The `normal` of the plain texture visited last that has one, if any.
+    last_normal: Cell<Option<&'a Normal>>,
+}
+
+impl Place<'_> {
+    /// The surface a map's `pattern` sees: the surface itself, or for a surface-dependent
+    /// pattern after a plain texture with a `normal` was visited, the surface with that
+    /// texture's perturbed normal.
+    fn surface_for(&self, pattern: &crate::scene::Pattern) -> SurfaceContext {
+        match self.last_normal.get() {
+            Some(normal) if pattern.depends_on_surface() => SurfaceContext {
+                normal: perturbed_normal_at(normal, self.hit.point, self.surface),
+                ..*self.surface
+            },
+            _ => *self.surface,
+        }
+    }
 }
 
 /// The pigment colour the surface shows at `hit` (the blend of its components' pigments,
@@ -75,9 +103,9 @@ pub fn pigment_at_hit(pigment: &Pigment, hit: &SurfaceHit, surface: &SurfaceCont
 }
 
 /// Visits the components of `texture`, whose results are weighted by `weight`.
-fn components(
-    texture: &Texture,
-    place: &Place,
+fn components<'a>(
+    texture: &'a Texture,
+    place: &Place<'a>,
     weight: DVec3,
     passes_light: bool,
     depth: u32,
@@ -85,12 +113,15 @@ fn components(
 ) {
     let Some(compound) = &texture.compound else {
         visit(texture, weight, passes_light);
+        if let Some(normal) = &texture.normal {
+            place.last_normal.set(Some(normal));
+        }
         return;
     };
     if depth >= MAX_TEXTURE_NESTING {
         return;
     }
-    let mut recurse = |inner: &Texture, share: DVec3, passes: bool| {
+    let mut recurse = |inner: &'a Texture, share: DVec3, passes: bool| {
         components(inner, place, weight * share, passes, depth + 1, visit)
     };
     match &**compound {
@@ -119,19 +150,20 @@ fn components(
             }
             match map {
                 BlendMap::Blocks(blocks) => {
-                    let index = block_index(pattern, point, blocks.len(), place.surface);
+                    let surface = place.surface_for(pattern);
+                    let index = block_index(pattern, point, blocks.len(), &surface);
                     if let Some(block) = blocks.get(index).or(blocks.last()) {
                         recurse(block, DVec3::ONE, passes_light);
                     }
                 }
                 BlendMap::Entries(entries) => {
-                    let value = pattern.value_at(point, place.surface);
+                    let value = pattern.value_at(point, &place.surface_for(pattern));
                     if let Some((low, high, fraction)) = blend_position(entries, value) {
-                        if fraction < 1.0 {
-                            recurse(&entries[low].1, DVec3::splat(1.0 - fraction), passes_light);
-                        }
                         if fraction > 0.0 {
                             recurse(&entries[high].1, DVec3::splat(fraction), passes_light);
+                        }
+                        if fraction < 1.0 {
+                            recurse(&entries[low].1, DVec3::splat(1.0 - fraction), passes_light);
                         }
                     }
                 }

@@ -638,13 +638,19 @@ impl<'a> Tracer<'a> {
     }
 }
 
-/// The mirror direction of `direction` about the (possibly perturbed) unit `normal`; when a
-/// perturbed normal would send it into the surface (against the geometric `facing` normal),
-/// the mirror direction about `facing` instead.
+/// The mirror direction of `direction` about the (possibly perturbed) unit `normal`. When a
+/// perturbed normal would send it into the surface (against the geometric `facing` normal):
+/// if it also points against `normal` (the ray met the perturbed normal from behind), the
+/// mirror direction about `facing`; otherwise that direction mirrored once more, about the
+/// surface plane (measured: directions read off a coloured sky reflected by a bumped plane).
 fn reflected_direction(direction: DVec3, normal: DVec3, facing: DVec3) -> Option<DVec3> {
     let reflected = mirror(direction, normal).try_normalize()?;
-    if reflected.dot(facing) < 0.0 {
-        return mirror(direction, facing).try_normalize();
+    let below = reflected.dot(facing);
+    if below < 0.0 {
+        if reflected.dot(normal) < 0.0 {
+            return mirror(direction, facing).try_normalize();
+        }
+        return (reflected - 2.0 * below * facing).try_normalize();
     }
     Some(reflected)
 }

@@ -88,7 +88,17 @@ pub struct Irid {
     pub thickness: f64,
     /// Variation of the thickness (default 0).
     pub turbulence: f64,
+    /// The wavelengths of red, green and blue light: `global_settings { irid_wavelength }`
+    /// in force when the finish was parsed.
+    pub wavelengths: DVec3,
+    /// The noise generator of the thickness turbulence: the `global_settings` one in force
+    /// when the finish was parsed (measured: POV-Ray's irid follows `noise_generator`).
+    pub noise_generator: crate::noise::NoiseGenerator,
 }
+
+/// The irid wavelengths without `irid_wavelength` (measured from the interference phases;
+/// an explicit `irid_wavelength` is used as it is written).
+pub const DEFAULT_IRID_WAVELENGTHS: DVec3 = DVec3::new(0.70, 0.52, 0.48);
 
 /// What is inside an object.
 #[derive(Clone, Debug)]

@@ -24,7 +24,7 @@ pub use camera::{
     DEFAULT_ANGLE,
 };
 pub use colour::Colour;
-pub use finish::{Finish, Interior, Irid};
+pub use finish::{Finish, Interior, Irid, DEFAULT_IRID_WAVELENGTHS};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
 pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, LightSource, Spotlight};
@@ -76,6 +76,8 @@ pub struct GlobalSettings {
     pub ambient_light: DVec3,
     /// The noise generator patterns use unless they name their own (default 2).
     pub noise_generator: crate::noise::NoiseGenerator,
+    /// `irid_wavelength`: the wavelengths of red, green and blue light for `irid`.
+    pub irid_wavelength: DVec3,
     /// `number_of_waves` (default 10): how many wave sources `ripples` and `waves` use.
     pub number_of_waves: usize,
     /// The wave sources every `ripples` and `waves` pattern of the scene shares (fixed
@@ -96,6 +98,7 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
             noise_generator: crate::noise::NoiseGenerator::default(),
+            irid_wavelength: finish::DEFAULT_IRID_WAVELENGTHS,
             number_of_waves: 10,
             wave_sources: crate::pattern::SceneWaveSources::default(),
             radiosity: None,

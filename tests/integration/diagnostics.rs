@@ -819,3 +819,26 @@ fn interior_texture_outside_an_object_is_an_error() {
         ],
     );
 }
+
+#[test]
+fn facets_outside_a_normal_is_an_error() {
+    check(
+        "facets_in_pigment",
+        2,
+        35,
+        &[
+            "`facets` can only be used in a `normal`",
+            "not allowed in a `pigment`",
+            "normal { facets .. }",
+        ],
+    );
+    check(
+        "facets_in_texture",
+        2,
+        25,
+        &[
+            "`facets` can only be used in a `normal`",
+            "not allowed in a `texture`",
+        ],
+    );
+}
