@@ -164,14 +164,14 @@ impl JuliaFractal {
                 };
             }
             if estimates {
-                let degree = if self.function == JuliaFunction::Cube {
-                    3.0
-                } else {
-                    2.0
-                };
                 match self.algebra {
+                    // |d(h^n)/dh| = n |h|^(n-1).
                     JuliaAlgebra::Quaternion => {
-                        slope *= degree * norm_squared.sqrt().powf(degree - 1.0)
+                        slope *= if self.function == JuliaFunction::Cube {
+                            3.0 * norm_squared
+                        } else {
+                            2.0 * norm_squared.sqrt()
+                        }
                     }
                     JuliaAlgebra::Hypercomplex => {
                         let (a, b) = to_duplex(h);
