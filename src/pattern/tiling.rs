@@ -20,6 +20,10 @@
 //! black-to-white colour map, sampled on grids with `#debug`): the period, the tiles in one
 //! period, their types and the bevel width.
 
+mod penrose;
+
+use penrose::Penrose;
+
 /// √3, for the tilings built on equilateral triangles and hexagons.
 const SQRT_3: f64 = 1.732_050_807_568_877_2;
 
@@ -698,11 +702,14 @@ fn layout(number: u8) -> Option<&'static Layout> {
 
 /// Whether `tiling number` is implemented.
 pub fn is_supported(number: u8) -> bool {
-    layout(number).is_some()
+    layout(number).is_some() || Penrose::from_number(number).is_some()
 }
 
 /// The value of `tiling number` at `point` (x and z); 0 for an unsupported number.
 pub fn tiling_value(number: u8, point: glam::DVec3) -> f64 {
+    if let Some(penrose) = Penrose::from_number(number) {
+        return penrose.value(point.x, point.z);
+    }
     let Some(layout) = layout(number) else {
         return 0.0;
     };
