@@ -1,5 +1,5 @@
 //! The `tiling N` pattern: periodic tilings of the x-z plane by convex tiles, each tile
-//! bevelled towards its edges.
+//! bevelled towards its edges; the aperiodic Penrose tilings 26 and 27 live in `penrose`.
 //!
 //! In: a pattern-space point (y is ignored) and the tiling number. Out: the value in [0, 1].
 //! Holds: static tables, no allocation; non-finite input is the caller's concern (the
