@@ -23,10 +23,10 @@
 use glam::DVec2;
 
 /// The golden ratio φ.
-const PHI: f64 = 1.618_033_988_749_895;
+pub(super) const PHI: f64 = 1.618_033_988_749_895;
 
 /// How close to the origin POV-Ray's value is 1.
-const ORIGIN_RADIUS: f64 = 1e-10;
+pub(super) const ORIGIN_RADIUS: f64 = 1e-10;
 
 /// The kind of a Robinson triangle.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
