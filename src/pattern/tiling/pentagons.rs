@@ -32,13 +32,9 @@ const TYPES: f64 = 6.0;
 /// values across edges, the same in every tile type).
 const BEVEL: f64 = 0.291_537_7;
 
-/// How far (in its edge lengths) from a tile's centre the tiles it splits into, and theirs
-/// in turn, can reach (measured on five splits of each kind: at most 1.38, for the star).
-const REACH: f64 = 1.5;
-
-/// The most tiles kept at one level (at most 7 were needed at any of 3000 random points
-/// from 0.1 to 10⁵ units out).
-const MAX_KEPT: usize = 24;
+/// The most tiles kept at one level (measured: at most 5 were kept at any of 1500 random
+/// points from 0.1 to 10⁵ units out; the tests check a spiral of points).
+const MAX_KEPT: usize = 16;
 
 /// The most tiles one tile splits into (a star and a type-0 pentagon make 11).
 const MAX_CHILDREN: usize = 11;
@@ -54,6 +50,13 @@ const TURN_72: Turn = Turn(DVec2::new(
     0.309_016_994_374_947_45,
     0.951_056_516_295_153_5,
 ));
+/// 18°.
+const TURN_18: Turn = Turn(DVec2::new(
+    0.951_056_516_295_153_5,
+    0.309_016_994_374_947_45,
+));
+/// 54°.
+const TURN_54: Turn = Turn(DVec2::new(0.587_785_252_292_473_1, 0.809_016_994_374_947_5));
 /// 108°.
 const TURN_108: Turn = Turn(DVec2::new(
     -0.309_016_994_374_947_45,
@@ -255,15 +258,35 @@ impl Tile {
         }
     }
 
-    /// The centre the reach of the tile's offspring is measured from.
+    /// The centre the reach of the tile's offspring is measured from: a pentagon's or
+    /// star's centre (a boat's star's), a diamond's middle.
     fn centre(&self) -> DVec2 {
+        let along_left = self.left - self.apex;
         match self.shape {
+            // The centre lies on the apex corner's bisector, the circumradius (1 / (2 sin
+            // 36°) edges) from the apex, or for a star its points' radius (tan 54° edges).
             Shape::CentrePentagon | Shape::OuterPentagon | Shape::CornerPentagon => {
-                self.pentagon_corners().iter().sum::<DVec2>() / 5.0
+                self.apex + TURN_54.0.rotate(along_left) * (0.5 / TURN_36.0.y)
+            }
+            Shape::Star | Shape::Boat => {
+                self.apex + TURN_18.0.rotate(along_left) * (TURN_54.0.y / TURN_54.0.x)
             }
             Shape::Diamond => (self.left + self.right) / 2.0,
-            Shape::Star | Shape::Boat => self.star_corners().centre(),
         }
+    }
+
+    /// How far (in edge lengths) from its centre the tiles this one splits into, and
+    /// theirs in turn, can reach, with a margin for rounding (measured over six splits of
+    /// each kind: a type-0 or type-2 pentagon 1.0515, a type-1 pentagon 0.8828, a diamond
+    /// 0.9511 and a star or boat 1.3764, the last three their own corners' distances).
+    fn reach(&self) -> f64 {
+        let measured = match self.shape {
+            Shape::CentrePentagon | Shape::CornerPentagon => 1.0515,
+            Shape::OuterPentagon => 0.8828,
+            Shape::Diamond => 0.9511,
+            Shape::Star | Shape::Boat => 1.3764,
+        };
+        measured + 0.01
     }
 
     /// The tiles one split makes of this one, scaled by 1/φ² (`None` pads the list).
@@ -564,18 +587,22 @@ pub(super) fn value(x: f64, z: f64) -> f64 {
     let mut kept_count = 1;
     for _ in 0..splits {
         let mut next = [start; MAX_KEPT];
+        let mut next_centres = [DVec2::ZERO; MAX_KEPT];
         let mut next_count = 0;
         for parent in &kept[..kept_count] {
             for child in parent.split().into_iter().flatten() {
                 let edge = child.edge();
                 let centre = child.centre();
-                let reaches = centre.distance(point) <= REACH * edge;
+                if centre.distance(point) > child.reach() * edge {
+                    continue;
+                }
                 // Neighbours make the tiles on their shared edges twice.
-                let twice = next[..next_count]
+                let twice = next_centres[..next_count]
                     .iter()
-                    .any(|other| other.centre().distance(centre) < 1e-6 * edge);
-                if reaches && !twice && next_count < MAX_KEPT {
+                    .any(|other| other.distance(centre) < 1e-6 * edge);
+                if !twice && next_count < MAX_KEPT {
                     next[next_count] = child;
+                    next_centres[next_count] = centre;
                     next_count += 1;
                 }
             }
@@ -705,29 +732,33 @@ mod tests {
 
     #[test]
     fn every_point_lies_in_a_tile() {
-        // Points on a spiral from near the origin to 10⁴ units out: the tile picked holds
-        // the point (to rounding), so no offspring that could hold it was dropped.
+        // Points on a spiral from near the origin to 10⁴ units out: a tile kept to the end
+        // holds the point (to rounding), so no offspring that could hold it was dropped.
         for step in 0..2000 {
             let radius = 0.01 * 1.007_f64.powi(step);
             let point = DVec2::from_angle(f64::from(step) * 2.4) * radius;
             let (start, splits) = starting_pentagon(point).expect("a finite point");
             let mut deepest = f64::NEG_INFINITY;
             let mut kept = vec![start];
+            let mut most_kept = 1;
             for _ in 0..splits {
                 let mut next: Vec<Tile> = Vec::new();
                 for parent in &kept {
                     for child in parent.split().into_iter().flatten() {
-                        if child.centre().distance(point) <= REACH * child.edge() {
+                        if child.centre().distance(point) <= child.reach() * child.edge() {
                             next.push(child);
                         }
                     }
                 }
                 kept = next;
+                most_kept = most_kept.max(kept.len());
             }
             for tile in &kept {
                 deepest = deepest.max(tile.insideness(point));
             }
             assert!(deepest > -1e-9, "no tile holds {point}");
+            // Even counting the tiles made twice, the kept tiles fit.
+            assert!(most_kept <= MAX_KEPT, "{most_kept} tiles kept at {point}");
         }
     }
 
