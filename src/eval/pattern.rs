@@ -97,14 +97,7 @@ impl Evaluator {
                         .into());
                 }
                 // In range, so the conversion is exact.
-                let number = number as u8;
-                if !crate::pattern::is_supported_tiling(number) {
-                    self.warn(
-                        number_span,
-                        format!("`tiling {number}` is not supported yet; its value is 0"),
-                    );
-                }
-                PatternKind::Tiling(number)
+                PatternKind::Tiling(number as u8)
             }
             "triangular" => PatternKind::Triangular,
             "waves" => PatternKind::Waves(self.settings.wave_sources.clone()),

@@ -41,7 +41,6 @@ pub use geometric::checker_block;
 pub use noise_based::{ClassicTurbulence, Crackle};
 pub use pavement::{corner_setting as pavement_corner_setting, Pavement, PavementPolygon};
 pub use surface::{Altitude, Slope, SurfaceContext};
-pub use tiling::is_supported as is_supported_tiling;
 pub use warp::{BlackHole, Mapping, MappingKind, Repeat, Warp};
 pub use wave::{Wave, WaveShape};
 pub use waves::{SceneWaveSources, WaveSources, MAX_WAVE_COUNT};

@@ -1,5 +1,6 @@
 //! The `tiling N` pattern: periodic tilings of the x-z plane by convex tiles, each tile
-//! bevelled towards its edges.
+//! bevelled towards its edges; the aperiodic Penrose tilings live in `pentagons` (25) and
+//! `penrose` (26 and 27).
 //!
 //! In: a pattern-space point (y is ignored) and the tiling number. Out: the value in [0, 1].
 //! Holds: static tables, no allocation; non-finite input is the caller's concern (the
@@ -19,6 +20,11 @@
 //! Each layout below was measured with probe scenes (`pigment { tiling N }` through a
 //! black-to-white colour map, sampled on grids with `#debug`): the period, the tiles in one
 //! period, their types and the bevel width.
+
+mod penrose;
+mod pentagons;
+
+use penrose::Penrose;
 
 /// √3, for the tilings built on equilateral triangles and hexagons.
 const SQRT_3: f64 = 1.732_050_807_568_877_2;
@@ -696,13 +702,17 @@ fn layout(number: u8) -> Option<&'static Layout> {
     }
 }
 
-/// Whether `tiling number` is implemented.
-pub fn is_supported(number: u8) -> bool {
-    layout(number).is_some()
-}
+/// The number of the Penrose tiling of pentagons, stars, boats and diamonds.
+const PENTAGONS: u8 = 25;
 
 /// The value of `tiling number` at `point` (x and z); 0 for an unsupported number.
 pub fn tiling_value(number: u8, point: glam::DVec3) -> f64 {
+    if number == PENTAGONS {
+        return pentagons::value(point.x, point.z);
+    }
+    if let Some(penrose) = Penrose::from_number(number) {
+        return penrose.value(point.x, point.z);
+    }
     let Some(layout) = layout(number) else {
         return 0.0;
     };
