@@ -806,3 +806,18 @@ fn interior_texture_outside_an_object_is_an_error() {
         ],
     );
 }
+
+/// POV-Ray ends a macro's argument list at a directive right after an argument (a
+/// directive may only start an argument); durer refuses it at the directive.
+#[test]
+fn directive_after_a_macro_argument_is_refused() {
+    check(
+        "directive_after_macro_argument",
+        2,
+        58,
+        &[
+            "directive after a macro argument",
+            "POV-Ray ends the argument list here",
+        ],
+    );
+}
