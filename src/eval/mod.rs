@@ -158,6 +158,7 @@ const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("chars.inc", include_str!("stdlib/chars.inc")),
     ("shapes3.inc", include_str!("stdlib/shapes3.inc")),
     ("makegrass.inc", include_str!("stdlib/makegrass.inc")),
+    ("meshmaker.inc", include_str!("stdlib/meshmaker.inc")),
 ];
 
 /// Folder name under which embedded include files appear in diagnostics.
@@ -230,6 +231,8 @@ pub(crate) struct Evaluator {
     pub(crate) query_worlds: HashMap<usize, (Arc<Object>, Rc<crate::geometry::World>)>,
     /// Data files opened by `#fopen`; closed ones are `None`.
     pub(crate) files: Vec<Option<files::DataFile>>,
+    /// Text macro bodies parsed once for all calls (see `token_macro`).
+    pub(crate) text_macro_cache: token_macro::TextMacroCache,
 }
 
 impl Evaluator {
@@ -260,6 +263,7 @@ impl Evaluator {
             random_streams: Vec::new(),
             files: Vec::new(),
             query_worlds: HashMap::new(),
+            text_macro_cache: Default::default(),
         }
     }
 
@@ -307,6 +311,21 @@ impl Evaluator {
         if let Some((_, items)) = self.parsed.get(&key) {
             return Ok(items.clone());
         }
+        let (file, text) = self.read_source(path, from)?;
+        let items = crate::syntax::parse(&text, file).map_err(|mut d| {
+            d.trace = self.trace_for_diagnostic();
+            d
+        })?;
+        self.parsed.insert(key, (file, items.clone()));
+        Ok(items)
+    }
+
+    /// Reads a file (or the embedded file standing for it) and adds it to the sources.
+    pub(crate) fn read_source(
+        &mut self,
+        path: &Path,
+        from: Option<Span>,
+    ) -> EvalResult<(FileId, Arc<str>)> {
         let embedded = path
             .strip_prefix(EMBEDDED_FOLDER)
             .ok()
@@ -330,12 +349,7 @@ impl Evaluator {
         })?;
         let text: Arc<str> = Arc::from(String::from_utf8_lossy(&bytes).into_owned());
         let file = self.sources.add(path, text.clone());
-        let items = crate::syntax::parse(&text, file).map_err(|mut d| {
-            d.trace = self.trace_for_diagnostic();
-            d
-        })?;
-        self.parsed.insert(key, (file, items.clone()));
-        Ok(items)
+        Ok((file, text))
     }
 
     /// Finds an include file: the scene's folder, `-L` folders, `DURER_INCLUDE_PATH`,

@@ -101,9 +101,10 @@ impl Spline {
             other => other,
         };
         if kind == SplineKind::Cubic {
-            // Only the second to the next-to-last point are on the curve.
+            // Only the second to the next-to-last point are on the curve (with three
+            // points, just the middle one, whatever `t` is, even NaN).
             let (low, high) = (points[1], points[n - 2]);
-            if t <= low.0 {
+            if t <= low.0 || n < 4 {
                 return low.1;
             }
             if t >= high.0 {
@@ -247,6 +248,21 @@ mod tests {
         // A single point is always replaced.
         let single = spline(&[(0.0, 0.0), (0.0, 9.0), (0.0, 8.0)]);
         assert_eq!(at(&single, 0.0), 8.0);
+    }
+
+    /// A cubic spline of three points is its middle point, also when its parameters are not
+    /// numbers (meshmaker.inc's BuildSpline gives three points parameters -inf, NaN, NaN).
+    #[test]
+    fn three_point_cubic_spline_is_its_middle_point() {
+        let three = spline(&[(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)]);
+        for t in [-1.0, 0.5, 1.5, 3.0] {
+            assert_eq!(three.evaluate(t, SplineKind::Cubic)[0], 1.0);
+        }
+        let broken = spline(&[(f64::NEG_INFINITY, 0.0), (f64::NAN, 1.0), (f64::NAN, 2.0)]);
+        for t in [-1.0, 0.5, 3.0] {
+            let value = broken.evaluate(t, SplineKind::Cubic)[0];
+            assert!((0.0..=2.0).contains(&value), "{value} at {t}");
+        }
     }
 
     #[test]

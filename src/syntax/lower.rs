@@ -257,6 +257,7 @@ impl<'m> Lowerer<'m> {
                         Rule::spline_kind => {
                             Argument::Expr(Expr::Ident(Name::from(a.as_str()), self.span(&a)))
                         }
+                        Rule::expr => Argument::Expr(self.expr(a)),
                         _ => Argument::Expr(self.full_expr(a)),
                     })
                     .collect()

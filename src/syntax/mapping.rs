@@ -8,7 +8,7 @@
 use crate::diag::Span;
 
 /// Maps byte offsets of generated text back to spans of source files.
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
 pub struct OffsetMap {
     /// `(output offset where the piece starts, the source span it stands for)`.
     pieces: Vec<(usize, Span)>,

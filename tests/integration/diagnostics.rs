@@ -842,3 +842,16 @@ fn facets_outside_a_normal_is_an_error() {
         ],
     );
 }
+
+#[test]
+fn directive_after_a_macro_argument_is_refused() {
+    check(
+        "directive_after_macro_argument",
+        2,
+        58,
+        &[
+            "directive after a macro argument",
+            "POV-Ray ends the argument list here",
+        ],
+    );
+}

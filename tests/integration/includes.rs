@@ -1418,3 +1418,75 @@ fn meshmaker_macros_render_like_povray() {
         "the written surface renders unlike the direct one"
     );
 }
+
+/// durer's own meshmaker.inc: renders tests/stdlib/meshmaker.pov like POV-Ray did, and its
+/// macros write the same mesh files, byte for byte, as POV-Ray's meshmaker.inc (run by
+/// durer) in all four formats. The sweeps are checked against POV-Ray's extents instead
+/// (POV-Ray reads its file's `vlength(Waist(su).x)` in its own way).
+#[test]
+fn embedded_meshmaker_matches_povrays() {
+    stdlib_scene_renders_like_povray("meshmaker", false);
+    let sweeps = "#version 3.7;\n#include \"meshmaker.inc\"\n\
+        #declare Track = spline { cubic_spline -1, <0,0,-1> 0, <0,0,0> 1, <1,1,1> 2, <2,1,2> 3, <3,0,3> }\n\
+        #declare Shape = spline { linear_spline 0, <1,0> 0.25, <0,1> 0.5, <-1,0> 0.75, <0,-1> 1, <1,0> }\n\
+        #declare Waist = spline { linear_spline 0, <0.3,0> 1, <0.1,0> }\n\
+        #macro Near(A, B) #if (vlength(A - B) > 1e-5) #error \"extent differs\" #end #end\n\
+        #declare I = SweepSpline1(Track, Shape, Waist, 6, 8, \"\")\n\
+        Near(min_extent(I), <-0.268221, -0.273743, -0.134379>)\n\
+        Near(max_extent(I), <0.910341, 0.993507, 0.932988>)\n\
+        #declare J = SweepSpline2(Track, Shape, Waist, 6, 8, \"\")\n\
+        Near(min_extent(J), <-0.268221, -0.273743, -0.134379>)\n\
+        Near(max_extent(J), <0.918600, 0.991418, 0.922374>)\n";
+    let dir = scratch("meshmaker-sweeps");
+    if let Err(errors) = render_scene(&dir.join("sweeps.pov"), sweeps, false, (4, 3)) {
+        panic!("the sweeps differ from POV-Ray's:\n{}", errors.join("\n"));
+    }
+    if povray_include_folder().is_none() {
+        return;
+    }
+    let writer = "#version 3.7;\n#include \"meshmaker.inc\"\n\
+        #declare Wave = function(u, v) { sin(u * 3) * 0.3 + v * v * 0.1 }\n\
+        #declare Profile = spline { cubic_spline -0.25, <0.2, -0.2, 0> 0, <0.5, 0, 0> 0.5, <1, 1, 0> 1, <0.3, 2, 0> 1.25, <0.2, 2.5, 0> }\n\
+        #declare A = TwoVarSurf(Wave, <-1, 1>, <-1, 1>, 4, 3, \"surf.inc\")\n\
+        #declare B = Lathe(Profile, 4, 360, 5, \"lathe.obj\")\n\
+        #declare C = Lathe(Profile, 3, 180, 4, \"lathe.pcm\")\n\
+        #declare D = TwoVarSurf(Wave, <-1, 1>, <-1, 1>, 4, 4, \"surf.arr\")\n\
+        #declare E = Coons(spline { linear_spline 0, <0,0,0> 1, <1,0,0> }, spline { linear_spline 0, <1,0,0> 1, <1,0.3,1> }, \
+            spline { linear_spline 0, <1,0.3,1> 1, <0,0,1> }, spline { linear_spline 0, <0,0,1> 1, <0,0,0> }, 3, 3, \"coons.inc\")\n\
+        #declare Points = array[5] { <0, 0, 0>, <1, 0.5, 0>, <2, 0, 1>, <3, 0.5, 0>, <4, 1, 1> }\n\
+        #declare F = Prism(BuildSpline(Points, \"C\"), 4, 1, 2, \"prism.inc\")\n\
+        #declare Shapes = array[4] {\n\
+          spline { linear_spline 0, <-1, 0, 0> 1, <0, 0, 1> 2, <1, 0, 0> 3, <0, 0, -1> 4, <-1, 0, 0> },\n\
+          spline { linear_spline 0, <-0.5, 2, 0> 1, <0, 2, 0.5> 2, <0.5, 2, 0> 3, <0, 2, -0.5> 4, <-0.5, 2, 0> },\n\
+          spline { linear_spline 0, <-1, 1, 0> 1, <0, 1, 1.5> 2, <1, 1, 0> 3, <0, 1, -1> 4, <-1, 1, 0> },\n\
+          spline { linear_spline 0, <-1, 3, 0> 1, <0, 3, 1> 2, <1, 3, 0> 3, <0, 3, -1> 4, <-1, 3, 0> } }\n\
+        #declare G = MSM(Shapes, 4, \"c\", 3, \"msm.inc\")\n\
+        #declare H = Parametric(function(u, v) { cos(u) * (1 + 0.3 * cos(v)) }, function(u, v) { 0.3 * sin(v) }, \
+            function(u, v) { sin(u) * (1 + 0.3 * cos(v)) }, <FromU(0), 0>, <ToU(2 * pi), 2 * pi>, 4, 3, \"param.inc\")\n";
+    let files = [
+        "surf.inc",
+        "lathe.obj",
+        "lathe.pcm",
+        "surf.arr",
+        "coons.inc",
+        "prism.inc",
+        "msm.inc",
+        "param.inc",
+    ];
+    let ours = scratch("meshmaker-ours");
+    let theirs = scratch("meshmaker-povray");
+    for (dir, installed) in [(&ours, false), (&theirs, true)] {
+        if let Err(errors) = render_scene(&dir.join("write.pov"), writer, installed, (4, 3)) {
+            panic!("the mesh writer fails:\n{}", errors.join("\n"));
+        }
+    }
+    for file in files {
+        let read = |dir: &PathBuf| {
+            std::fs::read_to_string(dir.join(file)).unwrap_or_else(|e| panic!("{file}: {e}"))
+        };
+        assert!(
+            read(&ours) == read(&theirs),
+            "{file} differs from POV-Ray's"
+        );
+    }
+}

@@ -98,3 +98,49 @@ Check(Near(max_extent(Lensed).z, 0.5), "the declaration without the block")
 Check(Near(max_extent(Used).x, 10), "an included file's items inside a text macro")
 #declare Used = Use(false, 2)
 Check(Near(max_extent(Used).x, 2), "the other branch of the include")
+
+// A macro call whose argument list runs across directives (in a text macro): a directive
+// may start an argument, and the rest of the list, even its `)`, may lie in one branch.
+#macro Three(A, B, C) <A, B, C> #end
+#macro Crossing(Which)
+  #if (1) union { #end
+  sphere { Three(1, #if (Which) 2, 3) #else 4, 5) #end, 1 }
+  #if (1) } #end
+#end
+#declare Crossed = Crossing(true)
+Check(Near(max_extent(Crossed).z, 4), "a call's arguments and `)` inside the chosen branch")
+#declare Crossed = Crossing(false)
+Check(Near(max_extent(Crossed).z, 6), "a call's arguments and `)` in the #else branch")
+#macro Mixed()
+  #if (1) union { #end
+  sphere { Three(#local Q = 7; Q, -#if (1) 2, #end <1, #if (1) 3 #end, 5>.y), 0.5 }
+  #if (1) } #end
+#end
+#declare Mixed_ = Mixed()
+Check(Near(max_extent(Mixed_).x, 7.5), "a directive before an argument")
+Check(Near(min_extent(Mixed_).y, -2.5), "a directive after an operator")
+Check(Near(max_extent(Mixed_).z, 3.5), "a directive inside a vector argument")
+// Arguments are read when the call completes: a plain name is passed by reference, one
+// bound only inside an included file is read before that file's scope ends.
+#macro SetNine(X) #declare X = 9; #end
+#declare Target = 0;
+#macro ByReference() SetNine(#if (1) Target) #end #end
+ByReference()
+Check((Target = 9), "a plain name passes by reference across directives")
+#fopen Out "text_macros_value.tmp" write
+#write(Out, "#local Inside = 11; Inside\n")
+#fclose Out
+#macro Add(A, B) (A + B) #end
+#macro FromInclude() Add(1, #include "text_macros_value.tmp" ) #end
+Check((FromInclude() = 12), "an argument read from an included file")
+
+// An included file need not parse on its own: here it closes the union the macro opened.
+#fopen Out "text_macros_close.tmp" write
+#write(Out, "sphere { <3, 0, 0>, 1 }\n}\n")
+#fclose Out
+#macro Closed()
+  union { sphere { 0, 1 }
+  #include "text_macros_close.tmp"
+#end
+#declare Closed_ = Closed()
+Check(Near(max_extent(Closed_).x, 4), "an included file closing the macro's block")

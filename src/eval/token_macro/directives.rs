@@ -74,7 +74,8 @@ impl Evaluator {
             "ifdef" | "ifndef" => {
                 self.expect_punctuation(run, "(", span)?;
                 let start = skip_trivia(run.text, run.position);
-                let (target, length) = self.traced(run.parse_at(Rule::ifdef_target, start))?;
+                let parsed = self.parse_at(run, Rule::ifdef_target, start);
+                let (target, length) = self.traced(parsed)?;
                 run.position = start + length;
                 self.expect_punctuation(run, ")", span)?;
                 let Prefix::Target(target) = &*target else {
@@ -116,7 +117,8 @@ impl Evaluator {
             }
             "break" => return Ok(self.text_break(run)),
             "include" => {
-                let (parsed, length) = self.traced(run.parse_at(Rule::include, token.start))?;
+                let parsed = self.parse_at(run, Rule::include, token.start);
+                let (parsed, length) = self.traced(parsed)?;
                 run.position = token.start + length;
                 if let Prefix::Directive(directive) = &*parsed {
                     if let DirectiveKind::Include(name) = &directive.kind {
@@ -129,7 +131,7 @@ impl Evaluator {
                 let Some(rule) = directive_rule(word) else {
                     return Err(self.stray(span, word));
                 };
-                match run.parse_at(rule, token.start) {
+                match self.parse_at(run, rule, token.start) {
                     Ok((directive, length)) => {
                         run.position = token.start + length;
                         self.run_whole_directive(&directive)?;
@@ -176,7 +178,8 @@ impl Evaluator {
     /// Parses an expression at the run's position (`rule` is `expr` or `full_expr`).
     fn text_expression(&mut self, run: &mut TextRun, rule: Rule) -> EvalResult<Expr> {
         let start = skip_trivia(run.text, run.position);
-        let (parsed, length) = self.traced(run.parse_at(rule, start))?;
+        let parsed = self.parse_at(run, rule, start);
+        let (parsed, length) = self.traced(parsed)?;
         run.position = start + length;
         match &*parsed {
             Prefix::Expr(expr) => Ok(expr.clone()),

@@ -6,9 +6,10 @@
 //! `#local`, `#write` whose argument list spans directives, ...) run as they are met, and
 //! macro calls and `#include`s met in the body run at once with their tokens spliced in, as
 //! in POV-Ray's token stream. Holds: a name bound to a variable when it is emitted is replaced
-//! by its value (a number or vector) or by a hidden name bound (in the text macro's scope) to
-//! a snapshot of its value at that moment, so `P[J]` emitted inside a loop keeps that pass's
-//! `J`; spans of everything parsed from the emitted text point into the macro body.
+//! by a hidden name bound (in the text macro's scope) to a snapshot of its value at that
+//! moment, so `P[J]` emitted inside a loop keeps that pass's `J`; spans of everything parsed
+//! from the emitted text point into the macro body. What is parsed is kept for later calls
+//! ([`TextMacroCache`]), so repeated calls parse nothing again.
 
 use super::value::Value;
 use super::{Entered, Entering, EvalResult, Evaluator, Scope};
@@ -19,7 +20,9 @@ use crate::syntax::symbol::Symbol;
 use crate::syntax::tokens::{next_token, Token, TokenKind};
 use crate::syntax::{parse_generated, parse_prefix, Prefix, Rule};
 use std::collections::HashMap;
+use std::path::PathBuf;
 use std::rc::Rc;
+use std::sync::Arc;
 
 mod directives;
 
@@ -47,23 +50,36 @@ impl Emitted {
     }
 }
 
-/// A directive that runs across other directives, collected token by token until it is
-/// complete: a `#write(` until its `)`, a `#local`/`#declare` whose value is a block opened
-/// under an `#if` until that block's `}` (or a `;`).
+/// A directive or macro call that runs across other directives, collected token by token
+/// until it is complete: a `#write(` or a macro call until its `)`, a `#local`/`#declare`
+/// whose value is a block opened under an `#if` until that block's `}` (or a `;`).
 struct PendingDirective {
-    /// `write`, `local` or `declare`.
+    /// `write`, `local`, `declare` or `call`.
     rule: Rule,
     emitted: Emitted,
-    /// Parentheses (`#write`) or braces (declarations) open in the collected text.
+    /// Parentheses (`#write`, calls) or braces (declarations) open in the collected text.
     depth: usize,
-    /// The directive word's span.
+    /// Braces, brackets and vectors open directly inside a call's parentheses.
+    inner_depth: usize,
+    /// Whether the last token collected directly inside a call's parentheses ends a value (a
+    /// number, name, string or closing bracket): POV-Ray's argument reader takes no
+    /// directive there.
+    after_value: bool,
+    /// The directive word's (or macro name's) span.
     span: Span,
+    /// How many scopes were open when collecting started (they still are when it ends).
+    scope_depth: usize,
 }
 
 impl PendingDirective {
+    /// Whether the brackets are parentheses (else braces).
+    fn in_parentheses(&self) -> bool {
+        matches!(self.rule, Rule::write | Rule::call)
+    }
+
     /// Counts the brackets of `token`; returns whether it completes the directive.
     fn completed_by(&mut self, token: &str) -> bool {
-        let (open, close) = if self.rule == Rule::write {
+        let (open, close) = if self.in_parentheses() {
             ("(", ")")
         } else {
             ("{", "}")
@@ -72,10 +88,33 @@ impl PendingDirective {
             self.depth += 1;
         } else if token == close && self.depth > 0 {
             self.depth -= 1;
-            return self.depth == 0;
+            if self.depth == 0 {
+                return true;
+            }
         }
-        self.rule != Rule::write && self.depth == 0 && token == ";"
+        if self.depth == 1 && self.rule == Rule::call {
+            let opens_vector = token == "<" && !self.after_value;
+            if token == "{" || token == "[" || opens_vector {
+                self.inner_depth += 1;
+            } else if (token == "}" || token == "]" || token == ">") && self.inner_depth > 0 {
+                self.inner_depth -= 1;
+            }
+            self.after_value = ends_value(token);
+        }
+        !self.in_parentheses() && self.depth == 0 && token == ";"
     }
+
+    /// Whether a directive met now comes right after a complete argument of a call, where
+    /// POV-Ray ends the argument list.
+    fn directive_ends_arguments(&self) -> bool {
+        self.rule == Rule::call && self.depth == 1 && self.inner_depth == 0 && self.after_value
+    }
+}
+
+/// Whether `token` ends a value: a number, name, string or closing bracket.
+fn ends_value(token: &str) -> bool {
+    token.starts_with(|c: char| c.is_ascii_alphanumeric() || matches!(c, '_' | '"' | '.'))
+        || matches!(token, ")" | "]" | "}" | ">")
 }
 
 /// What a text macro call emits, shared with the macro calls spliced into it.
@@ -87,9 +126,28 @@ struct Sink {
     /// The scope of the text macro call, where hidden names are bound.
     bind_scope: usize,
     hidden_names: usize,
-    /// What was parsed at each file offset, so loops and repeated calls parse once.
-    parsed: HashMap<(FileId, usize), Parsed>,
 }
+
+/// What text macros parsed, kept for all later calls: a body's directives and calls are
+/// parsed once per place in their file, and an expansion once per distinct emitted text.
+/// Names are emitted as hidden names (never as their values), so a macro that takes the
+/// same path through its directives emits the same text on every call and is parsed once.
+#[derive(Default)]
+pub(crate) struct TextMacroCache {
+    /// What was parsed with each rule at each file offset.
+    pieces: HashMap<(FileId, usize, Rule), Parsed>,
+    /// The items parsed from each emitted text (with the map leading it back to its source).
+    expansions: HashMap<(String, OffsetMap), Rc<[Item]>>,
+    /// Files included by text macros (read, never parsed whole), by path.
+    included: HashMap<PathBuf, (FileId, Arc<str>)>,
+}
+
+/// Emitted texts longer than this are parsed every time rather than kept (such big
+/// expansions, meshes written out by loops, rarely repeat).
+const CACHED_EXPANSION_MAX_LENGTH: usize = 64 * 1024;
+
+/// How many expansions are kept at most; later ones are parsed every time.
+const CACHED_EXPANSIONS_MAX: usize = 4096;
 
 /// A piece parsed from a body and its length, or why it does not parse.
 type Parsed = Result<(Rc<Prefix>, usize), Box<Diagnostic>>;
@@ -117,18 +175,6 @@ impl TextRun<'_, '_> {
     /// The map for text parsed straight from the body at `start`.
     fn map_from(&self, start: usize) -> OffsetMap {
         OffsetMap::copied(self.span(start, self.text.len()))
-    }
-
-    /// Parses `rule` at body offset `start` (once per offset).
-    fn parse_at(&mut self, rule: Rule, start: usize) -> Parsed {
-        let key = (self.file, self.base + start);
-        if let Some(parsed) = self.sink.parsed.get(&key) {
-            return parsed.clone();
-        }
-        let parsed = parse_prefix(rule, &self.text[start..], &self.map_from(start))
-            .map(|(prefix, length)| (Rc::new(prefix), length));
-        self.sink.parsed.insert(key, parsed.clone());
-        parsed
     }
 
     /// Skips to just past the `#end` closing the innermost open directive, passing over
@@ -171,30 +217,6 @@ fn static_word(word: &str) -> &'static str {
     }
 }
 
-/// A finite float or vector written as SDL that reads back as the same value (negative
-/// numbers in parentheses, so that they stay one operand).
-fn literal(value: &Value) -> Option<String> {
-    let number = |x: f64| {
-        if x < 0.0 || (x == 0.0 && x.is_sign_negative()) {
-            format!("({x:?})")
-        } else {
-            format!("{x:?}")
-        }
-    };
-    match value {
-        Value::Float(x) if x.is_finite() => Some(number(*x)),
-        Value::Vector(vector) if vector.len >= 2 => {
-            let components = &vector.components[..usize::from(vector.len)];
-            if !components.iter().all(|x| x.is_finite()) {
-                return None;
-            }
-            let parts: Vec<String> = components.iter().map(|x| number(*x)).collect();
-            Some(format!("<{}>", parts.join(",")))
-        }
-        _ => None,
-    }
-}
-
 /// Whether two snapshots are the same value, so one hidden name serves both (cheap checks
 /// only: numbers, vectors and shared values; anything else gets a new name).
 fn same_snapshot(a: &Value, b: &Value) -> bool {
@@ -210,6 +232,19 @@ fn same_snapshot(a: &Value, b: &Value) -> bool {
 }
 
 impl Evaluator {
+    /// Parses `rule` at body offset `start` of `run` (once per place in a file, for all
+    /// calls).
+    fn parse_at(&mut self, run: &TextRun, rule: Rule, start: usize) -> Parsed {
+        let key = (run.file, run.base + start, rule);
+        if let Some(parsed) = self.text_macro_cache.pieces.get(&key) {
+            return parsed.clone();
+        }
+        let parsed = parse_prefix(rule, &run.text[start..], &run.map_from(start))
+            .map(|(prefix, length)| (Rc::new(prefix), length));
+        self.text_macro_cache.pieces.insert(key, parsed.clone());
+        parsed
+    }
+
     /// Runs a text macro's body (its arguments bound in the innermost scope) and returns the
     /// items it produced.
     pub(crate) fn expand_text_macro(&mut self, text: &str, span: Span) -> EvalResult<Rc<[Item]>> {
@@ -219,7 +254,6 @@ impl Evaluator {
             after_dot: false,
             bind_scope: self.scopes.len() - 1,
             hidden_names: 0,
-            parsed: HashMap::new(),
         };
         self.run_body(text, span, &mut sink)?;
         if let Some(pending) = &sink.pending {
@@ -228,11 +262,20 @@ impl Evaluator {
                 .with_label("its arguments or value do not end before the macro does")
                 .into());
         }
-        parse_generated(&sink.emitted.text, &sink.emitted.map).map_err(|mut d| {
+        let key = (sink.emitted.text, sink.emitted.map);
+        if let Some(items) = self.text_macro_cache.expansions.get(&key) {
+            return Ok(items.clone());
+        }
+        let items = parse_generated(&key.0, &key.1).map_err(|mut d| {
             d.trace = self.trace_for_diagnostic();
             d.message = format!("in the text this macro produced: {}", d.message);
             d
-        })
+        })?;
+        let expansions = &mut self.text_macro_cache.expansions;
+        if key.0.len() <= CACHED_EXPANSION_MAX_LENGTH && expansions.len() < CACHED_EXPANSIONS_MAX {
+            expansions.insert(key, items.clone());
+        }
+        Ok(items)
     }
 
     /// Runs one macro body (`text`, at `span`) token by token into `sink`, up to its closing
@@ -260,6 +303,7 @@ impl Evaluator {
             run.position = token.end;
             match token.kind {
                 TokenKind::Directive => {
+                    self.check_directive_in_call(&run, token)?;
                     if self.text_directive(&mut run, token)? {
                         return Ok(());
                     }
@@ -270,6 +314,26 @@ impl Evaluator {
                 _ => self.emit(&mut run, token)?,
             }
         }
+    }
+
+    /// Refuses a directive met inside a collected macro call's arguments where POV-Ray's
+    /// argument reader does not take one: anywhere but at an argument's start or inside
+    /// brackets, POV-Ray ends the argument list there.
+    fn check_directive_in_call(&self, run: &TextRun, token: Token) -> EvalResult<()> {
+        let Some(pending) = &run.sink.pending else {
+            return Ok(());
+        };
+        if !pending.directive_ends_arguments() {
+            return Ok(());
+        }
+        Err(self
+            .error(
+                run.span(token.start, token.end),
+                "directive after a macro argument",
+            )
+            .with_label("POV-Ray ends the argument list here: put the directive before an argument")
+            .with_secondary(pending.span, "the macro call")
+            .into())
     }
 
     /// Whether `token` names a macro and a `(` follows it.
@@ -283,15 +347,42 @@ impl Evaluator {
     /// Runs a macro call met in a text body at once, as POV-Ray does: its arguments are
     /// evaluated now and its body's tokens are spliced into the output (directives in it run
     /// in order with the caller's).
+    /// A call whose argument list runs across directives is collected token by token first.
     fn splice_call(&mut self, run: &mut TextRun, token: Token) -> EvalResult<()> {
-        let (parsed, length) = self.traced(run.parse_at(Rule::call, token.start))?;
+        if self.call_crosses_directive(run, token) {
+            return self.start_pending(run, token, Rule::call);
+        }
+        let parsed = self.parse_at(run, Rule::call, token.start);
+        let (parsed, length) = self.traced(parsed)?;
         run.position = token.start + length;
-        let Prefix::Call(call) = &*parsed else {
+        self.run_spliced_call(&parsed, run.sink)
+    }
+
+    /// Whether a directive comes before the `)` closing the call at `name`.
+    fn call_crosses_directive(&self, run: &TextRun, name: Token) -> bool {
+        let mut depth = 0usize;
+        let mut position = name.end;
+        while let Some(token) = next_token(run.text, position) {
+            position = token.end;
+            match token.text(run.text) {
+                _ if token.kind == TokenKind::Directive => return true,
+                "(" => depth += 1,
+                ")" if depth <= 1 => return false,
+                ")" => depth -= 1,
+                _ => {}
+            }
+        }
+        false
+    }
+
+    /// Runs a parsed macro call, its body's tokens going to `sink`.
+    fn run_spliced_call(&mut self, parsed: &Prefix, sink: &mut Sink) -> EvalResult<()> {
+        let Prefix::Call(call) = parsed else {
             return Ok(());
         };
         let definition = self.bind_macro_call(call)?;
         let result = match &definition.body {
-            MacroBody::Text { text, span } => self.run_body(text, *span, run.sink),
+            MacroBody::Text { text, span } => self.run_body(text, *span, sink),
             MacroBody::Items(_, span) => {
                 let text = self
                     .sources
@@ -302,7 +393,7 @@ impl Evaluator {
                             .map(Rc::from)
                     });
                 match text {
-                    Some(text) => self.run_body(&text, *span, run.sink),
+                    Some(text) => self.run_body(&text, *span, sink),
                     None => Err(self
                         .error(call.span, "cannot find the text of this macro's body")
                         .into()),
@@ -314,7 +405,9 @@ impl Evaluator {
     }
 
     /// Runs an included file token by token into `sink`, as POV-Ray reads it into the macro's
-    /// token stream (in its own scope, as any included file).
+    /// token stream (in its own scope, as any included file). The file need not parse on its
+    /// own: its tokens join the macro's wherever they fall (it may close a block the macro
+    /// opened).
     fn splice_include(&mut self, name: &str, span: Span, sink: &mut Sink) -> EvalResult<()> {
         let path = self.find_file(name, span, "include file", "included here")?;
         self.enter_nesting(span)?;
@@ -322,17 +415,7 @@ impl Evaluator {
             what: Entering::File(Rc::from(name)),
             span,
         });
-        let result = self.load_file(&path, Some(span)).and_then(|_| {
-            let key = path.canonicalize().unwrap_or_else(|_| path.clone());
-            let file = self.parsed.get(&key).map(|(file, _)| *file);
-            let text = file
-                .and_then(|file| self.sources.file(file))
-                .map(|f| f.text.clone());
-            let (Some(file), Some(text)) = (file, text) else {
-                return Err(self
-                    .error(span, format!("cannot find the text of `{name}`"))
-                    .into());
-            };
+        let result = self.included_text(path, span).and_then(|(file, text)| {
             self.scopes.push(Scope::default());
             let result = self.run_body(&text, Span::new(file, 0, text.len()), sink);
             self.scopes.pop();
@@ -343,11 +426,32 @@ impl Evaluator {
         result
     }
 
+    /// The text of a file included by a text macro, read once.
+    fn included_text(&mut self, path: PathBuf, span: Span) -> EvalResult<(FileId, Arc<str>)> {
+        let key = path.canonicalize().unwrap_or_else(|_| path.clone());
+        if let Some(known) = self.text_macro_cache.included.get(&key) {
+            return Ok(known.clone());
+        }
+        let source = self.read_source(&path, Some(span))?;
+        self.text_macro_cache.included.insert(key, source.clone());
+        Ok(source)
+    }
+
     /// Appends a token to the emitted text (or to a pending directive, running it once it
     /// is complete), naming snapshots for names bound to variables.
     fn emit(&mut self, run: &mut TextRun, token: Token) -> EvalResult<()> {
         let text = token.text(run.text);
-        let hidden = if token.kind == TokenKind::Word && !run.sink.after_dot {
+        // A call's arguments are read when it is complete, right after: a name still bound
+        // then stays itself (so that it is passed by reference); one bound in a scope that
+        // ends first (an included file's, a spliced macro's) is snapshotted.
+        let kept_for_call = run.sink.pending.as_ref().is_some_and(|pending| {
+            pending.rule == Rule::call
+                && self
+                    .scopes
+                    .innermost_binding(Symbol::intern(text))
+                    .is_none_or(|(scope, _)| scope < pending.scope_depth)
+        });
+        let hidden = if token.kind == TokenKind::Word && !run.sink.after_dot && !kept_for_call {
             self.snapshot_name(run, text)
         } else {
             None
@@ -377,6 +481,9 @@ impl Evaluator {
                 .with_secondary(pending.span, "the directive")
                 .into());
         }
+        if pending.rule == Rule::call {
+            return self.run_spliced_call(&parsed, run.sink);
+        }
         self.run_whole_directive(&parsed)
     }
 
@@ -395,7 +502,7 @@ impl Evaluator {
         }
         let mut emitted = Emitted::default();
         emitted.push(token.text(run.text), span);
-        if rule != Rule::write {
+        if matches!(rule, Rule::local | Rule::declare) {
             if let Some(target) =
                 next_token(run.text, run.position).filter(|target| target.kind == TokenKind::Word)
             {
@@ -407,19 +514,18 @@ impl Evaluator {
             rule,
             emitted,
             depth: 0,
+            inner_depth: 0,
+            after_value: false,
+            scope_depth: self.scopes.len(),
             span,
         });
         Ok(())
     }
 
-    /// What to emit for `name`: its value written out when it is a finite number or vector,
-    /// else a hidden name bound to a snapshot of its value; `None` when `name` is no variable
-    /// (a keyword, a function's parameter, a macro).
+    /// What to emit for `name`: a hidden name bound to a snapshot of its value; `None` when
+    /// `name` is no variable (a keyword, a function's parameter, a macro).
     fn snapshot_name(&mut self, run: &mut TextRun, name: &str) -> Option<Rc<str>> {
         let value = self.lookup(Symbol::intern(name))?;
-        if let Some(literal) = literal(value) {
-            return Some(Rc::from(literal));
-        }
         if matches!(value, Value::Macro(_)) {
             return None;
         }

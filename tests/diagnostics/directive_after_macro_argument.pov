@@ -1,0 +1,3 @@
+#macro Three(A, B, C) <A, B, C> #end
+#macro Broken() #if (1) union { #end sphere { Three(1, 2 #if (1) , #end 3), 1 } #if (1) } #end #end
+#declare Shape = Broken()

@@ -1,0 +1,25 @@
+// Commas between macro-call arguments are optional, as in POV-Ray (its argument reader
+// takes an optional comma); a `<` after an argument starts the next one, a vector. Values
+// checked against POV-Ray 3.7.
+#version 3.7;
+#macro Check(Condition, Message)
+  #if (!(Condition)) #error concat("failed: ", Message) #end
+#end
+#macro Three(A, B, C) <A, B, C> #end
+#macro Vectors(A, B, C) (A + B * 10 + C * 100) #end
+
+Check((vlength(Three(1 2 3) - <1, 2, 3>) = 0), "numbers without commas")
+Check((vlength(Three(1 (2) 3) - <1, 2, 3>) = 0), "a parenthesised argument without commas")
+#macro Two(A, B) <A, B> #end
+Check((vlength(Two(1 -2 3) - <-1, 3>) = 0), "`1 -2` is one argument, a difference")
+#declare A = 4;
+Check((vlength(Three(A A A) - <4, 4, 4>) = 0), "names without commas")
+Check((vlength(Three(1, 2, 3,) - <1, 2, 3>) = 0), "a trailing comma")
+Check((vlength(Three(sin(0) cos(0) 3) - <0, 1, 3>) = 0), "calls without commas")
+// portfolio/o_shapes.pov: `HF_Square(F, off, off <100,100>, on, ...)`.
+Check((vlength(Vectors(<1, 2> <3, 4> <5, 6>) - <531, 642>) = 0), "vectors without commas")
+Check((vlength(Vectors(<1, 2>, 0 <3, 4>) - <301, 402>) = 0), "a number then a vector")
+Check((vlength(Vectors(<1, 2>, 2 - 2 <3, 4>) - <301, 402>) = 0), "a difference then a vector")
+// Inside functions `<` still compares.
+#declare Negative = function(x) { max(x < 0, 0.5) }
+Check((Negative(-3) = 1 & Negative(3) = 0.5), "`<` compares in a function's call")
