@@ -384,14 +384,30 @@ fn area_light_sizes_must_be_positive() {
     );
 }
 
+/// Area light modifiers on a light without `area_light`: `jitter` is ignored silently and
+/// `circular` with a warning at the keyword, as povray does.
 #[test]
-fn area_light_modifiers_need_an_area_light() {
-    check(
-        "area_modifier_alone",
-        2,
-        3,
-        &["`jitter` needs an `area_light` before it"],
+fn area_light_modifiers_without_an_area_light_are_ignored() {
+    let path = tests_folder()
+        .join("diagnostics")
+        .join("area_modifier_alone.pov");
+    let evaluated = evaluate(&path);
+    assert_eq!(
+        evaluated.diagnostics.len(),
+        1,
+        "expected one warning, got {:?}",
+        evaluated.diagnostics
     );
+    let warning = &evaluated.diagnostics[0];
+    assert_eq!(warning.severity, Severity::Warning);
+    assert_eq!(
+        warning.message,
+        "`circular` only affects an area light; it is ignored"
+    );
+    let position = evaluated
+        .sources
+        .line_column(warning.span.file, warning.span.start);
+    assert_eq!(position, (2, 10));
 }
 
 #[test]
