@@ -822,3 +822,14 @@ fn interior_texture_outside_an_object_is_an_error() {
         ],
     );
 }
+
+/// A `pot` height field must be a GIF (Fractint continuous potential).
+#[test]
+fn pot_height_field_that_is_not_a_gif_is_refused_at_the_file_name() {
+    check(
+        "pot_not_a_gif",
+        1,
+        20,
+        &["cannot read `", "palette8.png`: cannot decode"],
+    );
+}
