@@ -2,10 +2,15 @@
 //! and `height_field`.
 //!
 //! In: a file path and POV-Ray's format keyword (`png`, `jpeg`, `tga`, `ppm`, `pgm`, `hdr`,
-//! `gif`, `bmp`, `sys`). Out: a [`Raster`] of raw channel values in [0, 1] (HDR values may be
+//! `gif`, `pot`, `bmp`, `sys`). Out: a [`Raster`] of raw channel values in [0, 1] (HDR values may be
 //! larger), rows from the top of the image. Holds: no gamma is applied here; what a value means
 //! (colour to linearise, height to use as is) is for the caller to decide. Palette PNG files
 //! also give each pixel's palette index (for `material_map`).
+//!
+//! `pot` (Fractint continuous potential) is a GIF twice as wide as the picture: the palette
+//! indices of the left half are the high bytes of 16-bit levels, those of the right half the
+//! low bytes. It is read as a 16-bit grey raster of the left half's size, its rows in the
+//! order the file stores them (an interlaced file is not put back in order, as in POV-Ray).
 
 use std::path::Path;
 
@@ -50,6 +55,8 @@ pub enum RasterFormat {
     Pgm,
     Hdr,
     Gif,
+    /// Fractint continuous potential: a double-width GIF of 16-bit levels.
+    Pot,
     Bmp,
     /// `sys`: the platform's default format (PNG here... detected from the contents).
     System,
@@ -66,6 +73,7 @@ impl RasterFormat {
             "pgm" => RasterFormat::Pgm,
             "hdr" => RasterFormat::Hdr,
             "gif" => RasterFormat::Gif,
+            "pot" => RasterFormat::Pot,
             "bmp" => RasterFormat::Bmp,
             "sys" => RasterFormat::System,
             _ => return None,
@@ -79,7 +87,7 @@ impl RasterFormat {
             RasterFormat::Tga => image::ImageFormat::Tga,
             RasterFormat::Ppm | RasterFormat::Pgm => image::ImageFormat::Pnm,
             RasterFormat::Hdr => image::ImageFormat::Hdr,
-            RasterFormat::Gif => image::ImageFormat::Gif,
+            RasterFormat::Gif | RasterFormat::Pot => image::ImageFormat::Gif,
             RasterFormat::Bmp => image::ImageFormat::Bmp,
             RasterFormat::System => return None,
         })
@@ -96,6 +104,10 @@ const MAX_SIDE: u32 = 1 << 16;
 pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
     let bytes =
         std::fs::read(path).map_err(|error| format!("cannot read {}: {error}", path.display()))?;
+    if format == RasterFormat::Pot {
+        return potential_levels(&bytes)
+            .map_err(|message| format!("cannot decode {}: {message}", path.display()));
+    }
     let guessed = image::guess_format(&bytes).ok();
     let chosen = format
         .image_format()
@@ -156,6 +168,79 @@ fn png_states_gamma(bytes: &[u8]) -> bool {
     })
 }
 
+/// A Fractint continuous potential file as a 16-bit grey raster: each level is the palette
+/// index in the left half of the GIF times 256 plus the one in the right half.
+fn potential_levels(bytes: &[u8]) -> Result<Raster, String> {
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::Indexed);
+    let mut decoder = options
+        .read_info(std::io::Cursor::new(bytes))
+        .map_err(|error| error.to_string())?;
+    let (screen_width, screen_height) = (u32::from(decoder.width()), u32::from(decoder.height()));
+    let frame = decoder
+        .next_frame_info()
+        .map_err(|error| error.to_string())?
+        .ok_or("the file holds no image")?;
+    let (frame_width, frame_height) = (u32::from(frame.width), u32::from(frame.height));
+    // The decoder puts an interlaced file's rows back in order; POV-Ray does not.
+    let interlaced = frame.interlaced;
+    if (frame_width, frame_height) != (screen_width, screen_height) {
+        return Err("the image does not cover the whole screen".to_string());
+    }
+    let mut buffer = vec![0; decoder.buffer_size()];
+    if buffer.len() != frame_width as usize * frame_height as usize {
+        return Err("the image is not one palette index per pixel".to_string());
+    }
+    decoder
+        .read_into_buffer(&mut buffer)
+        .map_err(|error| error.to_string())?;
+    let width = frame_width / 2;
+    if width == 0 || frame_height == 0 {
+        return Err(format!(
+            "a {frame_width}x{frame_height} image is too small for a potential file"
+        ));
+    }
+    let rows: Vec<&[u8]> = buffer.chunks(frame_width as usize).collect();
+    let mut pixels = Vec::with_capacity(width as usize * frame_height as usize);
+    for stored in 0..rows.len() {
+        let row = if interlaced {
+            rows[interlaced_row(stored, rows.len())]
+        } else {
+            rows[stored]
+        };
+        for column in 0..width as usize {
+            let level = u16::from(row[column]) << 8 | u16::from(row[column + width as usize]);
+            let value = f32::from(level) / f32::from(u16::MAX);
+            pixels.push([value, value, value, 1.0]);
+        }
+    }
+    Ok(Raster {
+        width,
+        height: frame_height,
+        pixels,
+        grey: true,
+        sixteen_bit: true,
+        high_dynamic_range: false,
+        gamma_unstated: false,
+        palette_indices: None,
+    })
+}
+
+/// The picture row that an interlaced GIF stores in place `stored` (passes: every 8th row
+/// from 0, every 8th from 4, every 4th from 2, every 2nd from 1). POV-Ray reads a `pot`
+/// file's rows in stored order (measured: an interlaced file's rows come out permuted).
+fn interlaced_row(stored: usize, height: usize) -> usize {
+    let mut remaining = stored;
+    for (start, step) in [(0, 8), (4, 8), (2, 4), (1, 2)] {
+        let in_pass = height.saturating_sub(start).div_ceil(step);
+        if remaining < in_pass {
+            return start + remaining * step;
+        }
+        remaining -= in_pass;
+    }
+    stored
+}
+
 /// The palette index of every pixel of a palette PNG (`None` for other PNGs or when the
 /// file does not decode to `width` × `height` pixels).
 fn png_palette_indices(bytes: &[u8], width: u32, height: u32) -> Option<Vec<u8>> {
@@ -207,6 +292,17 @@ mod tests {
         assert!(load(&folder.join("none.png"), RasterFormat::Png).is_err());
         assert!(raster.palette_indices.is_none());
         std::fs::remove_dir_all(&folder).unwrap();
+    }
+
+    #[test]
+    fn interlaced_gif_rows_are_listed_pass_by_pass() {
+        let order: Vec<usize> = (0..16).map(|stored| interlaced_row(stored, 16)).collect();
+        assert_eq!(
+            order,
+            [0, 8, 4, 12, 2, 6, 10, 14, 1, 3, 5, 7, 9, 11, 13, 15]
+        );
+        let order: Vec<usize> = (0..3).map(|stored| interlaced_row(stored, 3)).collect();
+        assert_eq!(order, [0, 2, 1]);
     }
 
     #[test]

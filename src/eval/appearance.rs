@@ -420,8 +420,9 @@ impl Evaluator {
                             format!("`{word}` has no pattern to modify here; it is ignored"),
                         );
                     }
-                    "red" | "green" | "blue" | "filter" | "transmit" | "gray" | "grey" => {
-                        // Colour components given straight in the pigment modify its colour.
+                    "filter" | "transmit" => {
+                        // Colour components given straight in the pigment modify its colour
+                        // (`red 1`, which the grammar reads as a colour, is handled below).
                         let amount = self.expect_float(stream, "a float")?;
                         if let Pigment::Solid(colour) = &mut pigment {
                             set_colour_component(colour, word, amount);
@@ -449,6 +450,12 @@ impl Evaluator {
                         Value::Pigment(p) => pigment = Rc::unwrap_or_clone(p),
                         Value::Nothing => {}
                         _ => return Err(self.unexpected_in(&item, "pigment")),
+                    }
+                }
+                // `pigment { Red green 0.5 }`: components alone modify the colour.
+                Item::Expr(Expr::Colour(literal)) if literal.is_components_only() => {
+                    if let Pigment::Solid(colour) = &mut pigment {
+                        self.apply_colour_components(colour, literal)?;
                     }
                 }
                 Item::Expr(expr) => match self.eval_expr(expr)? {
@@ -583,20 +590,25 @@ impl Evaluator {
                     while let Some(part) = self.next_item(&mut entry)? {
                         match &part {
                             Item::Comma(_) => {}
+                            // `[0.2 Red green 0.3]`: components alone change the entry's
+                            // colour (black when it has none yet).
+                            Item::Expr(Expr::Colour(literal))
+                                if literal.is_components_only() && !values.is_empty() =>
+                            {
+                                if values.len() < 2 {
+                                    values.push((Value::Colour(Colour::BLACK), literal.span));
+                                }
+                                let last = values.len() - 1;
+                                let (value, at) = values[last].clone();
+                                let mut colour = self.to_colour(value, at)?;
+                                self.apply_colour_components(&mut colour, literal)?;
+                                values[last] = (Value::Colour(colour), at);
+                            }
                             Item::Expr(e) => values.push((self.eval_expr(e)?, e.span())),
-                            // `[0.2 green 0.3]`: colour components written as keywords
-                            // change the entry's colour (black when it has none yet).
+                            // `[0.2 Red filter 0.3]`: `filter` and `transmit` change the
+                            // entry's colour (black when it has none yet).
                             Item::Keyword(word, span)
-                                if matches!(
-                                    &**word,
-                                    "red"
-                                        | "green"
-                                        | "blue"
-                                        | "filter"
-                                        | "transmit"
-                                        | "gray"
-                                        | "grey"
-                                ) =>
+                                if matches!(&**word, "filter" | "transmit") =>
                             {
                                 let amount = self.expect_float(&mut entry, "a float")?;
                                 if values.len() < 2 {
@@ -674,19 +686,12 @@ impl Evaluator {
     }
 }
 
-/// Sets the component a colour keyword (`red green blue filter transmit gray grey`) names.
+/// Sets the component a `filter` or `transmit` keyword names.
 fn set_colour_component(colour: &mut Colour, keyword: &str, amount: f64) {
-    match keyword {
-        "red" => colour.red = amount,
-        "green" => colour.green = amount,
-        "blue" => colour.blue = amount,
-        "filter" => colour.filter = amount,
-        "transmit" => colour.transmit = amount,
-        _ => {
-            colour.red = amount;
-            colour.green = amount;
-            colour.blue = amount;
-        }
+    if keyword == "filter" {
+        colour.filter = amount;
+    } else {
+        colour.transmit = amount;
     }
 }
 

@@ -8,8 +8,13 @@
 //! block (`gamma srgb` or a number), else with the sRGB transfer function, except for HDR
 //! files, which are linear already, and PNG files that state no gamma (no `gAMA`, `sRGB`
 //! or `iCCP` chunk) read under `#version` below 3.7, whose stored values are used as they
-//! are (measured: a stored 85 gives 0.333333 at `assumed_gamma` 1 and 2.2 alike).
-//! `image_pattern` and `bump_map` use the stored values whatever `gamma` says (measured: a stored 64 gives the pattern value 0.25098 with and
+//! are (measured: a stored 85 gives 0.333333 at `assumed_gamma` 1 and 2.2 alike); then
+//! raised to 1 / `assumed_gamma` to join the scene's
+//! colours. In a legacy scene (no `assumed_gamma` and no `#version 3.7` yet when the image is
+//! read) only a `gamma` given in the block decodes them (measured: a stored 32, 64, 128, 192
+//! is written back unchanged with ambient 1 under any `assumed_gamma`, and as 4, 16, 64,
+//! 145 with `gamma 2` in a legacy scene). `image_pattern` and `bump_map` use the stored values
+//! whatever `gamma` says (measured: a stored 64 gives the pattern value 0.25098 with and
 //! without `gamma 1.0`; bump tilts are linear in the stored grey levels).
 
 use super::stream::Stream;
@@ -230,24 +235,31 @@ impl Evaluator {
             )
             .with_label("unreadable image")
         })?;
+        let working_gamma = self.working_gamma();
         let decoding = match gamma {
             _ if purpose == ImageUse::StoredValues => ImageGamma::Linear,
             Some(gamma) => gamma,
-            None if raster.high_dynamic_range => ImageGamma::Linear,
+            None if raster.high_dynamic_range || working_gamma.is_none() => ImageGamma::Linear,
             None if self.version < 3.7 && raster.gamma_unstated => ImageGamma::Linear,
             None => ImageGamma::Srgb,
+        };
+        // Into the scene's working gamma (none for stored values and legacy scenes).
+        let encoding = match working_gamma {
+            Some(gamma) if purpose == ImageUse::Colours && gamma != 1.0 => 1.0 / gamma as f32,
+            _ => 1.0,
+        };
+        let working = |value: f32| {
+            let value = linear(value, decoding);
+            if encoding == 1.0 {
+                value
+            } else {
+                value.max(0.0).powf(encoding)
+            }
         };
         let pixels = raster
             .pixels
             .iter()
-            .map(|&[r, g, b, a]| {
-                [
-                    linear(r, decoding),
-                    linear(g, decoding),
-                    linear(b, decoding),
-                    a,
-                ]
-            })
+            .map(|&[r, g, b, a]| [working(r), working(g), working(b), a])
             .collect();
         let image = ImageMap {
             width: raster.width,
@@ -265,6 +277,21 @@ impl Evaluator {
             palette_transmit,
         };
         Ok((image, bump_size))
+    }
+}
+
+impl Evaluator {
+    /// The gamma of scene colours at this point of parsing, which image colours are
+    /// converted to when the image is read (measured: povray uses the `assumed_gamma` and
+    /// `#version` in force then, not at the end of parsing): the `assumed_gamma` given so
+    /// far, else 1 under `#version 3.7`; `None` for a legacy scene, whose images are used as
+    /// stored (decoded only by a `gamma` given in the block).
+    fn working_gamma(&self) -> Option<f64> {
+        match self.settings.assumed_gamma {
+            Some(gamma) if gamma > 0.0 && gamma.is_finite() => Some(gamma),
+            _ if self.version_declared && self.version >= 3.7 - 1e-9 => Some(1.0),
+            _ => None,
+        }
     }
 }
 

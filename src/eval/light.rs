@@ -25,6 +25,16 @@ const CYLINDER_DEFAULT: (f64, f64) = (0.75, 1.0);
 /// The largest number of point lights along one axis of an area light.
 const MAX_AREA_SIZE: f64 = 257.0;
 
+/// The area light modifiers a `light_source` block names, with where they were written.
+#[derive(Default)]
+struct AreaModifiers {
+    jitter: bool,
+    circular: Option<Span>,
+    orient: Option<Span>,
+    adaptive: Option<u32>,
+    area_illumination: Option<(bool, Span)>,
+}
+
 impl Evaluator {
     pub(crate) fn eval_light(&mut self, stream: &mut Stream) -> EvalResult<LightSource> {
         let mut light = match self.peek_item(stream)? {
@@ -55,6 +65,7 @@ impl Evaluator {
         });
         let mut is_spot = light.spotlight.is_some();
         let mut cone_given = (false, false);
+        let mut area_modifiers = AreaModifiers::default();
         while let Some(item) = self.next_item(stream)? {
             match &item {
                 Item::Keyword(word, span) => match &**word {
@@ -107,22 +118,16 @@ impl Evaluator {
                     "media_interaction" => light.media_interaction = self.optional_bool(stream)?,
                     "media_attenuation" => light.media_attenuation = self.optional_bool(stream)?,
                     "area_light" => light.area = Some(self.eval_area_light(stream, light.area)?),
-                    "jitter" | "circular" | "orient" => {
-                        let area = self.area_of(&mut light, word, *span)?;
-                        match &**word {
-                            "jitter" => area.jitter = true,
-                            "circular" => area.circular = true,
-                            _ => area.orient = true,
-                        }
-                    }
+                    "jitter" => area_modifiers.jitter = true,
+                    "circular" => area_modifiers.circular = Some(*span),
+                    "orient" => area_modifiers.orient = Some(*span),
                     "adaptive" => {
                         let level = self.expect_float(stream, "a float")?;
-                        let area = self.area_of(&mut light, word, *span)?;
-                        area.adaptive = Some(level.clamp(0.0, 30.0) as u32);
+                        area_modifiers.adaptive = Some(level.clamp(0.0, 30.0) as u32);
                     }
                     "area_illumination" => {
                         let on = self.optional_bool(stream)?;
-                        self.area_of(&mut light, word, *span)?.area_illumination = on;
+                        area_modifiers.area_illumination = Some((on, *span));
                     }
                     _ => return Err(self.unexpected_in(&item, "light_source")),
                 },
@@ -152,7 +157,42 @@ impl Evaluator {
             light.parallel = Some(spot.point_at);
         }
         light.spotlight = is_spot.then_some(spot);
+        self.apply_area_modifiers(&mut light, area_modifiers);
         Ok(light)
+    }
+
+    /// Gives the area light the modifiers the block named, before or after `area_light`
+    /// (as in POV-Ray). Without an area light, `jitter` and `adaptive` are ignored silently
+    /// and the others with a warning, as POV-Ray does.
+    fn apply_area_modifiers(&mut self, light: &mut LightSource, modifiers: AreaModifiers) {
+        let Some(area) = &mut light.area else {
+            let ignored = [
+                ("circular", modifiers.circular),
+                ("orient", modifiers.orient),
+                (
+                    "area_illumination",
+                    modifiers.area_illumination.map(|(_, span)| span),
+                ),
+            ];
+            for (word, span) in ignored {
+                if let Some(span) = span {
+                    self.warn(
+                        span,
+                        format!("`{word}` only affects an area light; it is ignored"),
+                    );
+                }
+            }
+            return;
+        };
+        area.jitter |= modifiers.jitter;
+        area.circular |= modifiers.circular.is_some();
+        area.orient |= modifiers.orient.is_some();
+        if let Some(level) = modifiers.adaptive {
+            area.adaptive = Some(level);
+        }
+        if let Some((on, _)) = modifiers.area_illumination {
+            area.area_illumination = on;
+        }
     }
 
     /// `area_light <axis1>, <axis2>, size1, size2` (modifiers already given are kept).
@@ -199,22 +239,6 @@ impl Evaluator {
         area.size1 = sizes[0];
         area.size2 = sizes[1];
         Ok(area)
-    }
-
-    /// The light's area light settings, for a modifier that needs them.
-    fn area_of<'a>(
-        &mut self,
-        light: &'a mut LightSource,
-        word: &str,
-        span: Span,
-    ) -> EvalResult<&'a mut AreaLight> {
-        match &mut light.area {
-            Some(area) => Ok(area),
-            None => Err(self
-                .error(span, format!("`{word}` needs an `area_light` before it"))
-                .with_label("this light is not an area light")
-                .into()),
-        }
     }
 
     /// The one object in a `looks_like { .. }` or `projected_through { .. }` block.

@@ -71,6 +71,16 @@ impl Evaluator {
                 }
             };
         }
+        self.apply_colour_components(&mut colour, literal)?;
+        Ok(Value::Colour(colour))
+    }
+
+    /// Sets the components a colour literal names (`red 1 green 0.5`) on `colour`.
+    pub(crate) fn apply_colour_components(
+        &mut self,
+        colour: &mut Colour,
+        literal: &ColourLiteral,
+    ) -> EvalResult<()> {
         for (component, expr) in &literal.components {
             let v = self.eval_float(expr)?;
             match component {
@@ -86,7 +96,7 @@ impl Evaluator {
                 }
             }
         }
-        Ok(Value::Colour(colour))
+        Ok(())
     }
 
     pub(crate) fn eval_array(&mut self, literal: &ArrayLiteral) -> EvalResult<Value> {

@@ -109,11 +109,6 @@ impl Media {
         self.entries[..self.len].iter().rev().map(|entry| entry.0)
     }
 
-    /// The material of the innermost object the ray is in.
-    fn innermost(&self) -> Option<u32> {
-        self.len.checked_sub(1).map(|at| self.entries[at].0)
-    }
-
     /// The media after entering an object with this material and index.
     fn entered(&self, material: u32, ior: f64) -> Media {
         let mut media = *self;
@@ -335,12 +330,14 @@ impl<'a> Tracer<'a> {
             let Some(material) = self.world.materials.get(hit.material as usize) else {
                 return (colour, first_distance);
             };
-            // Light from this hit fades on its way through the object the ray is in.
-            if let Some(inside) = media
-                .innermost()
-                .and_then(|id| self.world.materials.get(id as usize))
+            // Light from this hit fades on its way through the object the ray is in, when
+            // the hit is on that object (measured: povray fades nothing on the way to
+            // another object inside it, nor out through a clipped-away part).
+            if media
+                .materials_innermost_first()
+                .any(|id| id == hit.material)
             {
-                if let Some(kept) = interior_fade(&inside.interior, hit.distance - travelled) {
+                if let Some(kept) = interior_fade(&material.interior, hit.distance - travelled) {
                     carried *= kept;
                 }
             }

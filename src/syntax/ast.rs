@@ -254,8 +254,18 @@ pub struct ColourLiteral {
     pub base: Option<Expr>,
     /// Component overrides in order.
     pub components: Vec<(ColourComponent, Expr)>,
+    /// Written with the `color` keyword.
+    pub has_colour_word: bool,
     /// The whole literal.
     pub span: Span,
+}
+
+impl ColourLiteral {
+    /// Only component keywords (`red 1 green 0.5`): in a pigment or a colour map entry
+    /// they modify the colour before them rather than start a new one.
+    pub fn is_components_only(&self) -> bool {
+        !self.has_colour_word && self.kind.is_none() && self.base.is_none()
+    }
 }
 
 /// `array[n][m] { ... }`.

@@ -277,10 +277,12 @@ impl<'m> Lowerer<'m> {
             kind: None,
             base: None,
             components: Vec::new(),
+            has_colour_word: false,
             span,
         };
         for p in pair.into_inner() {
             match p.as_rule() {
+                Rule::colour_word => literal.has_colour_word = true,
                 Rule::colour_type => {
                     literal.kind = Some(match p.as_str() {
                         "rgb" => ColourType::Rgb,

@@ -1,2 +1,2 @@
 light_source { <0, 5, 0> rgb 1
-  jitter }
+  jitter circular }

@@ -384,14 +384,30 @@ fn area_light_sizes_must_be_positive() {
     );
 }
 
+/// Area light modifiers on a light without `area_light`: `jitter` is ignored silently and
+/// `circular` with a warning at the keyword, as povray does.
 #[test]
-fn area_light_modifiers_need_an_area_light() {
-    check(
-        "area_modifier_alone",
-        2,
-        3,
-        &["`jitter` needs an `area_light` before it"],
+fn area_light_modifiers_without_an_area_light_are_ignored() {
+    let path = tests_folder()
+        .join("diagnostics")
+        .join("area_modifier_alone.pov");
+    let evaluated = evaluate(&path);
+    assert_eq!(
+        evaluated.diagnostics.len(),
+        1,
+        "expected one warning, got {:?}",
+        evaluated.diagnostics
     );
+    let warning = &evaluated.diagnostics[0];
+    assert_eq!(warning.severity, Severity::Warning);
+    assert_eq!(
+        warning.message,
+        "`circular` only affects an area light; it is ignored"
+    );
+    let position = evaluated
+        .sources
+        .line_column(warning.span.file, warning.span.start);
+    assert_eq!(position, (2, 10));
 }
 
 #[test]
@@ -795,19 +811,6 @@ fn radiosity_pretrace_size_out_of_range_is_refused() {
 }
 
 #[test]
-fn radiosity_importance_out_of_range_is_refused() {
-    check(
-        "radiosity_importance_out_of_range",
-        2,
-        56,
-        &[
-            "radiosity importance 1.5 is out of range",
-            "above 0 and at most 1",
-        ],
-    );
-}
-
-#[test]
 fn interior_texture_outside_an_object_is_an_error() {
     check(
         "interior_texture_alone",
@@ -816,6 +819,30 @@ fn interior_texture_outside_an_object_is_an_error() {
         &[
             "`interior_texture` belongs in an object or a `material`",
             "not a value of its own",
+        ],
+    );
+}
+
+/// A `pot` height field must be a GIF (Fractint continuous potential).
+#[test]
+fn pot_height_field_that_is_not_a_gif_is_refused_at_the_file_name() {
+    check(
+        "pot_not_a_gif",
+        1,
+        20,
+        &["cannot read `", "palette8.png`: cannot decode"],
+    );
+}
+
+#[test]
+fn radiosity_importance_out_of_range_is_refused() {
+    check(
+        "radiosity_importance_out_of_range",
+        2,
+        56,
+        &[
+            "radiosity importance 1.5 is out of range",
+            "above 0 and at most 1",
         ],
     );
 }

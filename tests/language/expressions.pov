@@ -67,3 +67,17 @@ Check(max_extent(plane { y, 0 }).x = 1e10, "unbounded objects reach 1e10")
 Check(vlength(Hit - <2, 4, 4>) < 1e-9 & vlength(Normal - <0, 0, -1>) < 1e-9, "trace returns the hit and its normal")
 #declare Miss = trace(Ball, <20, 4, -10>, z, Normal);
 Check(vlength(Miss) = 0 & vlength(Normal) = 0, "a missed trace gives zero vectors")
+// The old colour syntax without `color`: component keywords alone make a colour, and in a
+// pigment or a colour map entry they modify the colour before them (values from povray 3.7,
+// whose pigment functions give single-precision results).
+#declare OldColour = red 1 green 0.5;
+Check(OldColour.red = 1 & OldColour.green = 0.5 & OldColour.blue = 0, "components alone")
+#declare QuickColoured = function { pigment { rgb <0.1, 0.2, 0.3> quick_color red 0.95 green 0.62 } }
+#declare QuickSample = QuickColoured(0, 0, 0);
+Check(abs(QuickSample.green - 0.2) < 1e-6, "quick_color red .. green ..")
+#declare Modified = function { pigment { rgb <0.2, 0.4, 0.6> green 0.8 } }
+#declare ModifiedSample = Modified(0, 0, 0);
+Check(abs(ModifiedSample.green - 0.8) < 1e-6 & abs(ModifiedSample.blue - 0.6) < 1e-6, "pigment component modifies")
+#declare OldMap = function { pigment { gradient x color_map { [0 red 1 green 0.5] [1 rgb <0, 0, 1> red 0.5] } } }
+#declare Halfway = OldMap(0.5, 0, 0);
+Check(abs(Halfway.red - 0.75) < 1e-6 & abs(Halfway.green - 0.25) < 1e-6 & abs(Halfway.blue - 0.5) < 1e-6, "old colours in a colour map")

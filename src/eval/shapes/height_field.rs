@@ -39,7 +39,7 @@ impl Evaluator {
                 let Some(format) = RasterFormat::from_keyword(&word) else {
                     return Err(self
                         .error(keyword_span, format!("`{word}` is not an image format"))
-                        .with_help("use png, pgm, ppm, tga, gif, jpeg, hdr or sys")
+                        .with_help("use png, pgm, ppm, tga, gif, pot, jpeg, hdr or sys")
                         .into());
                 };
                 let (name, name_span) = self.expect_file_name(stream)?;

@@ -1,0 +1,1 @@
+height_field { pot "images/palette8.png" }
