@@ -15,6 +15,7 @@ mod julia;
 mod mesh;
 mod prism;
 mod sphere_sweep;
+mod spindle;
 mod text;
 
 use super::stream::Stream;

@@ -67,6 +67,8 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "height_field",
     "sphere_sweep",
     "bicubic_patch",
+    "ovus",
+    "lemon",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -85,8 +87,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "media_attenuation",
     "parametric",
     "photons",
-    "ovus",
-    "lemon",
 ];
 
 impl Evaluator {
@@ -129,9 +129,9 @@ impl Evaluator {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
-            | "isosurface" | "height_field" | "sphere_sweep" | "bicubic_patch" | "object"
-            | "julia_fractal" | "union" | "intersection" | "difference" | "merge"
-            | "light_group" => Ok(match self.eval_object(head, block, stream)? {
+            | "isosurface" | "height_field" | "sphere_sweep" | "bicubic_patch" | "ovus"
+            | "lemon" | "object" | "julia_fractal" | "union" | "intersection" | "difference"
+            | "merge" | "light_group" => Ok(match self.eval_object(head, block, stream)? {
                 Some(object) => Value::Object(std::sync::Arc::new(object)),
                 None => Value::Nothing,
             }),

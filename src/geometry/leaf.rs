@@ -23,6 +23,7 @@ use super::roots::Roots;
 use super::round::{Cone, Sphere};
 use super::sor::Sor;
 use super::sphere_sweep::SphereSweep;
+use super::spindle::{Lemon, Ovus};
 use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
 use super::uv::{barycentric, corner_weighted, shape_uv};
@@ -78,6 +79,10 @@ pub enum LocalShape {
     SphereSweep(Box<SphereSweep>),
     /// A julia fractal.
     JuliaFractal(Box<JuliaFractal>),
+    /// An ovus.
+    Ovus(Box<Ovus>),
+    /// A lemon.
+    Lemon(Box<Lemon>),
 }
 
 /// A triangle of a mesh (or bicubic patch) placed on its own, as in CSG: it keeps the uv
@@ -197,6 +202,19 @@ impl LocalShape {
             Shape::JuliaFractal(ref spec) => {
                 JuliaFractal::new(spec).map(|j| Self::JuliaFractal(Box::new(j)))
             }
+            Shape::Ovus {
+                bottom_radius,
+                top_radius,
+            } => Ovus::new(bottom_radius, top_radius).map(|o| Self::Ovus(Box::new(o))),
+            Shape::Lemon(ref spec) => Lemon::new(
+                spec.base,
+                spec.base_radius,
+                spec.cap,
+                spec.cap_radius,
+                spec.inner_radius,
+                spec.open,
+            )
+            .map(|l| Self::Lemon(Box::new(l))),
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -293,6 +311,8 @@ impl LocalShape {
             LocalShape::HeightField(shape) => shape.intersect(origin, direction, roots),
             LocalShape::SphereSweep(shape) => shape.intersect(origin, direction, roots),
             LocalShape::JuliaFractal(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Ovus(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Lemon(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -319,6 +339,8 @@ impl LocalShape {
             LocalShape::HeightField(shape) => shape.inside(point),
             LocalShape::SphereSweep(shape) => shape.inside(point),
             LocalShape::JuliaFractal(shape) => shape.inside(point),
+            LocalShape::Ovus(shape) => shape.inside(point),
+            LocalShape::Lemon(shape) => shape.inside(point),
         }
     }
 
@@ -347,6 +369,8 @@ impl LocalShape {
             LocalShape::HeightField(shape) => shape.normal(point),
             LocalShape::SphereSweep(shape) => shape.normal(point),
             LocalShape::JuliaFractal(shape) => shape.normal(point),
+            LocalShape::Ovus(shape) => shape.normal(point, part),
+            LocalShape::Lemon(shape) => shape.normal(point, part),
         }
     }
 
@@ -373,6 +397,8 @@ impl LocalShape {
             LocalShape::HeightField(shape) => Some(shape.bounds()),
             LocalShape::SphereSweep(shape) => Some(shape.bounds()),
             LocalShape::JuliaFractal(shape) => Some(shape.bounds()),
+            LocalShape::Ovus(shape) => Some(shape.bounds()),
+            LocalShape::Lemon(shape) => Some(shape.bounds()),
         }
     }
 

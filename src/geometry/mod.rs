@@ -27,6 +27,7 @@ mod roots;
 mod round;
 mod sor;
 mod sphere_sweep;
+mod spindle;
 mod superellipsoid;
 mod torus;
 mod uv;

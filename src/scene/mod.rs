@@ -14,6 +14,7 @@ mod light_group;
 mod media;
 mod mesh;
 mod radiosity;
+mod spindle;
 mod texture;
 mod transform;
 mod uv_faces;
@@ -32,6 +33,7 @@ pub use light_group::{separate_light_groups, LightGroup};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 pub use radiosity::RadiositySettings;
+pub use spindle::Lemon;
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
     Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
@@ -263,6 +265,10 @@ pub enum Shape {
     SphereSweep(Arc<SphereSweep>),
     /// `julia_fractal { .. }`: a 3D slice of a 4D Julia set.
     JuliaFractal(Arc<JuliaFractal>),
+    /// `ovus { bottom_radius, top_radius }`: an egg standing on the origin.
+    Ovus { bottom_radius: f64, top_radius: f64 },
+    /// `lemon { .. }`: a circle arc turned around an axis, with flat ends.
+    Lemon(Arc<Lemon>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,
