@@ -149,6 +149,7 @@ impl Evaluator {
             "bicubic_patch" => self.eval_bicubic_patch(block.head_span, stream)?,
             "ovus" => self.eval_ovus(stream)?,
             "lemon" => self.eval_lemon(block.head_span, stream)?,
+            "parametric" => self.eval_parametric(block.head_span, stream)?,
             "sor" => {
                 let count = self.expect_float(stream, "the number of points")?;
                 if !(0.0..=1e7).contains(&count) {

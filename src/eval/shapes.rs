@@ -13,6 +13,7 @@ mod height_field;
 mod isosurface;
 mod julia;
 mod mesh;
+mod parametric;
 mod prism;
 mod sphere_sweep;
 mod spindle;

@@ -69,6 +69,7 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "bicubic_patch",
     "ovus",
     "lemon",
+    "parametric",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -85,7 +86,6 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "irid",
     "subsurface",
     "media_attenuation",
-    "parametric",
     "photons",
 ];
 
@@ -130,11 +130,13 @@ impl Evaluator {
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
             | "isosurface" | "height_field" | "sphere_sweep" | "bicubic_patch" | "ovus"
-            | "lemon" | "object" | "julia_fractal" | "union" | "intersection" | "difference"
-            | "merge" | "light_group" => Ok(match self.eval_object(head, block, stream)? {
-                Some(object) => Value::Object(std::sync::Arc::new(object)),
-                None => Value::Nothing,
-            }),
+            | "lemon" | "parametric" | "object" | "julia_fractal" | "union" | "intersection"
+            | "difference" | "merge" | "light_group" => {
+                Ok(match self.eval_object(head, block, stream)? {
+                    Some(object) => Value::Object(std::sync::Arc::new(object)),
+                    None => Value::Nothing,
+                })
+            }
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "spline" => self.eval_spline(block.span, stream),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),

@@ -16,6 +16,7 @@ use super::height_field::HeightField;
 use super::isosurface::Isosurface;
 use super::julia::JuliaFractal;
 use super::lathe::Lathe;
+use super::parametric::ParametricSurface;
 use super::poly::PolySurface;
 use super::polygon::{Polygon, SmoothTriangle};
 use super::quadric::Quadric;
@@ -83,6 +84,8 @@ pub enum LocalShape {
     Ovus(Box<Ovus>),
     /// A lemon.
     Lemon(Box<Lemon>),
+    /// A parametric surface.
+    Parametric(Box<ParametricSurface>),
 }
 
 /// A triangle of a mesh (or bicubic patch) placed on its own, as in CSG: it keeps the uv
@@ -215,6 +218,9 @@ impl LocalShape {
                 spec.open,
             )
             .map(|l| Self::Lemon(Box::new(l))),
+            Shape::Parametric(ref spec) => {
+                ParametricSurface::new(spec).map(|p| Self::Parametric(Box::new(p)))
+            }
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -282,6 +288,7 @@ impl LocalShape {
                 | LocalShape::SmoothTriangle(_)
                 | LocalShape::MeshFace(_)
                 | LocalShape::Polygon(_)
+                | LocalShape::Parametric(_)
         )
     }
 
@@ -313,6 +320,7 @@ impl LocalShape {
             LocalShape::JuliaFractal(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Ovus(shape) => shape.intersect(origin, direction, roots),
             LocalShape::Lemon(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Parametric(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -341,6 +349,7 @@ impl LocalShape {
             LocalShape::JuliaFractal(shape) => shape.inside(point),
             LocalShape::Ovus(shape) => shape.inside(point),
             LocalShape::Lemon(shape) => shape.inside(point),
+            LocalShape::Parametric(_) => false,
         }
     }
 
@@ -371,6 +380,7 @@ impl LocalShape {
             LocalShape::JuliaFractal(shape) => shape.normal(point),
             LocalShape::Ovus(shape) => shape.normal(point, part),
             LocalShape::Lemon(shape) => shape.normal(point, part),
+            LocalShape::Parametric(shape) => shape.normal(point),
         }
     }
 
@@ -399,6 +409,7 @@ impl LocalShape {
             LocalShape::JuliaFractal(shape) => Some(shape.bounds()),
             LocalShape::Ovus(shape) => Some(shape.bounds()),
             LocalShape::Lemon(shape) => Some(shape.bounds()),
+            LocalShape::Parametric(shape) => Some(shape.bounds()),
         }
     }
 
@@ -432,7 +443,8 @@ impl LocalShape {
             | LocalShape::Triangle(_)
             | LocalShape::SmoothTriangle(_)
             | LocalShape::MeshFace(_)
-            | LocalShape::Polygon(_) => InsideReach::Nowhere,
+            | LocalShape::Polygon(_)
+            | LocalShape::Parametric(_) => InsideReach::Nowhere,
             LocalShape::Plane(_)
             | LocalShape::Quadric(_)
             | LocalShape::Poly(_)

@@ -20,6 +20,7 @@ mod julia;
 mod julia_algebra;
 mod lathe;
 mod leaf;
+mod parametric;
 mod poly;
 mod polygon;
 mod quadric;

@@ -13,6 +13,7 @@ mod light;
 mod light_group;
 mod media;
 mod mesh;
+mod parametric;
 mod radiosity;
 mod spindle;
 mod texture;
@@ -32,6 +33,7 @@ pub use light::{AreaLight, LightSource, Spotlight};
 pub use light_group::{separate_light_groups, LightGroup};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
+pub use parametric::Parametric;
 pub use radiosity::RadiositySettings;
 pub use spindle::Lemon;
 pub use texture::{
@@ -269,6 +271,8 @@ pub enum Shape {
     Ovus { bottom_radius: f64, top_radius: f64 },
     /// `lemon { .. }`: a circle arc turned around an axis, with flat ends.
     Lemon(Arc<Lemon>),
+    /// `parametric { .. }`: the points three functions of u and v give.
+    Parametric(Arc<Parametric>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,
