@@ -435,3 +435,75 @@ fn container_bounds(container: &Container) -> Aabb {
         ),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::function::{Binary, Node};
+
+    /// The plane sheet (u, v, 0.5 u) over the uv square [-1, 1]².
+    fn sheet() -> ParametricSurface {
+        let function = |node: Node| Arc::new(Function::new(node, 3));
+        let half_u = Node::Binary(
+            Binary::Multiply,
+            Box::new([Node::Constant(0.5), Node::Parameter(0)]),
+        );
+        ParametricSurface::new(&ParametricSpec {
+            functions: [
+                function(Node::Parameter(0)),
+                function(Node::Parameter(1)),
+                function(half_u),
+            ],
+            uv_corner1: DVec2::splat(-1.0),
+            uv_corner2: DVec2::splat(1.0),
+            container: Container::Box {
+                corner1: DVec3::splat(-2.0),
+                corner2: DVec3::splat(2.0),
+            },
+            max_gradient: 1.1,
+            accuracy: 0.001,
+        })
+        .unwrap()
+    }
+
+    #[test]
+    fn random_lines_meet_the_sheet_where_it_is() {
+        let surface = sheet();
+        let mut random = crate::geometry::test_support::Random::new(7);
+        let mut hits = 0;
+        for _ in 0..300 {
+            let origin = random.vector(1.5) - DVec3::Z * 3.0;
+            let target = DVec3::new(random.range(-1.2, 1.2), random.range(-1.2, 1.2), 0.0);
+            let target = DVec3::new(target.x, target.y, 0.5 * target.x);
+            let direction = target - origin;
+            let mut roots = Roots::new();
+            surface.intersect(origin, direction, &mut roots);
+            let inside = target.x.abs() < 0.999 && target.y.abs() < 0.999;
+            let outside = target.x.abs() > 1.001 || target.y.abs() > 1.001;
+            match roots.nearest_within(0.0, f64::INFINITY) {
+                Some((distance, _)) => {
+                    assert!(!outside, "hit outside the uv square at {target}");
+                    assert!((distance - 1.0).abs() < 1e-6, "{distance} for {target}");
+                    let normal = surface.normal(origin + direction * distance).normalize();
+                    let expected = DVec3::new(-0.5, 0.0, 1.0).normalize();
+                    assert!(
+                        normal.abs_diff_eq(expected, 1e-4) || normal.abs_diff_eq(-expected, 1e-4)
+                    );
+                    hits += 1;
+                }
+                None => assert!(!inside, "missed the sheet at {target}"),
+            }
+        }
+        assert!(hits > 100);
+    }
+
+    #[test]
+    fn lines_from_the_surface_do_not_meet_their_start() {
+        let surface = sheet();
+        let start = DVec3::new(0.3, 0.2, 0.15);
+        let mut roots = Roots::new();
+        surface.intersect(start, DVec3::new(0.2, 0.1, 1.0), &mut roots);
+        assert_eq!(roots.iter().count(), 0);
+        assert!(!surface.bounds().is_empty());
+    }
+}
