@@ -149,6 +149,9 @@ impl Evaluator {
             "height_field" => self.eval_height_field(block.head_span, stream)?,
             "sphere_sweep" => self.eval_sphere_sweep(block.head_span, stream)?,
             "bicubic_patch" => self.eval_bicubic_patch(block.head_span, stream)?,
+            "ovus" => self.eval_ovus(stream)?,
+            "lemon" => self.eval_lemon(block.head_span, stream)?,
+            "parametric" => self.eval_parametric(block.head_span, stream)?,
             "sor" => {
                 let count = self.expect_float(stream, "the number of points")?;
                 if !(0.0..=1e7).contains(&count) {
@@ -280,6 +283,7 @@ impl Evaluator {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
                     Shape::Prism(prism) => Arc::make_mut(prism).open = true,
                     Shape::Sor { open, .. } => *open = true,
+                    Shape::Lemon(lemon) => Arc::make_mut(lemon).open = true,
                     _ => return Err(self.unexpected_in(&item, head)),
                 },
                 "sturm" => {

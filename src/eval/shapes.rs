@@ -13,8 +13,10 @@ mod height_field;
 mod isosurface;
 mod julia;
 mod mesh;
+mod parametric;
 mod prism;
 mod sphere_sweep;
+mod spindle;
 mod text;
 
 use super::stream::Stream;

@@ -67,6 +67,9 @@ pub(crate) const BLOCK_KEYWORDS: &[&str] = &[
     "height_field",
     "sphere_sweep",
     "bicubic_patch",
+    "ovus",
+    "lemon",
+    "parametric",
 ];
 
 /// Block keywords of POV-Ray that durer does not evaluate yet.
@@ -83,10 +86,7 @@ const UNSUPPORTED_BLOCKS: &[&str] = &[
     "irid",
     "subsurface",
     "media_attenuation",
-    "parametric",
     "photons",
-    "ovus",
-    "lemon",
 ];
 
 impl Evaluator {
@@ -129,12 +129,14 @@ impl Evaluator {
             "sphere" | "box" | "plane" | "cylinder" | "cone" | "torus" | "disc" | "quadric"
             | "triangle" | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "poly" | "cubic"
             | "quartic" | "text" | "prism" | "lathe" | "blob" | "superellipsoid" | "sor"
-            | "isosurface" | "height_field" | "sphere_sweep" | "bicubic_patch" | "object"
-            | "julia_fractal" | "union" | "intersection" | "difference" | "merge"
-            | "light_group" => Ok(match self.eval_object(head, block, stream)? {
-                Some(object) => Value::Object(std::sync::Arc::new(object)),
-                None => Value::Nothing,
-            }),
+            | "isosurface" | "height_field" | "sphere_sweep" | "bicubic_patch" | "ovus"
+            | "lemon" | "parametric" | "object" | "julia_fractal" | "union" | "intersection"
+            | "difference" | "merge" | "light_group" => {
+                Ok(match self.eval_object(head, block, stream)? {
+                    Some(object) => Value::Object(std::sync::Arc::new(object)),
+                    None => Value::Nothing,
+                })
+            }
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "spline" => self.eval_spline(block.span, stream),
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),

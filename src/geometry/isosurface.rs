@@ -93,34 +93,7 @@ impl Isosurface {
 
     /// The parameter interval of the line inside the container.
     fn container_span(&self, origin: DVec3, direction: DVec3) -> Option<(f64, f64)> {
-        match self.container {
-            Container::Box { corner1, corner2 } => {
-                let low = corner1.min(corner2);
-                let high = corner1.max(corner2);
-                let mut entry = f64::NEG_INFINITY;
-                let mut exit = f64::INFINITY;
-                for axis in 0..3 {
-                    if direction[axis] == 0.0 {
-                        if origin[axis] < low[axis] || origin[axis] > high[axis] {
-                            return None;
-                        }
-                        continue;
-                    }
-                    let first = (low[axis] - origin[axis]) / direction[axis];
-                    let second = (high[axis] - origin[axis]) / direction[axis];
-                    entry = entry.max(first.min(second));
-                    exit = exit.min(first.max(second));
-                }
-                (entry < exit).then_some((entry, exit))
-            }
-            Container::Sphere { centre, radius } => {
-                let offset = origin - centre;
-                let a = direction.length_squared();
-                let half_b = offset.dot(direction);
-                let c = offset.length_squared() - radius * radius;
-                super::roots::solve_quadratic(a, half_b, c).filter(|(near, far)| near < far)
-            }
-        }
+        line_in_container(&self.container, origin, direction)
     }
 
     /// Pushes the crossings of the line `origin + t direction`.
@@ -310,6 +283,41 @@ impl Isosurface {
             Container::Sphere { centre, radius } => {
                 Aabb::from_points([centre - DVec3::splat(radius), centre + DVec3::splat(radius)])
             }
+        }
+    }
+}
+/// The parameter interval of the line `origin + t direction` inside `container`.
+pub(super) fn line_in_container(
+    container: &Container,
+    origin: DVec3,
+    direction: DVec3,
+) -> Option<(f64, f64)> {
+    match *container {
+        Container::Box { corner1, corner2 } => {
+            let low = corner1.min(corner2);
+            let high = corner1.max(corner2);
+            let mut entry = f64::NEG_INFINITY;
+            let mut exit = f64::INFINITY;
+            for axis in 0..3 {
+                if direction[axis] == 0.0 {
+                    if origin[axis] < low[axis] || origin[axis] > high[axis] {
+                        return None;
+                    }
+                    continue;
+                }
+                let first = (low[axis] - origin[axis]) / direction[axis];
+                let second = (high[axis] - origin[axis]) / direction[axis];
+                entry = entry.max(first.min(second));
+                exit = exit.min(first.max(second));
+            }
+            (entry < exit).then_some((entry, exit))
+        }
+        Container::Sphere { centre, radius } => {
+            let offset = origin - centre;
+            let a = direction.length_squared();
+            let half_b = offset.dot(direction);
+            let c = offset.length_squared() - radius * radius;
+            super::roots::solve_quadratic(a, half_b, c).filter(|(near, far)| near < far)
         }
     }
 }

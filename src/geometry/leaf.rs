@@ -16,6 +16,7 @@ use super::height_field::HeightField;
 use super::isosurface::Isosurface;
 use super::julia::JuliaFractal;
 use super::lathe::Lathe;
+use super::parametric::ParametricSurface;
 use super::poly::PolySurface;
 use super::polygon::{Polygon, SmoothTriangle};
 use super::quadric::Quadric;
@@ -23,6 +24,7 @@ use super::roots::Roots;
 use super::round::{Cone, Sphere};
 use super::sor::Sor;
 use super::sphere_sweep::SphereSweep;
+use super::spindle::{Lemon, Ovus};
 use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
 use super::uv::{barycentric, corner_weighted, shape_uv};
@@ -79,6 +81,12 @@ pub enum LocalShape {
     SphereSweep(Box<SphereSweep>),
     /// A julia fractal.
     JuliaFractal(Box<JuliaFractal>),
+    /// An ovus.
+    Ovus(Box<Ovus>),
+    /// A lemon.
+    Lemon(Box<Lemon>),
+    /// A parametric surface.
+    Parametric(Box<ParametricSurface>),
 }
 
 /// A triangle of a mesh (or bicubic patch) placed on its own, as in CSG: it keeps the uv
@@ -198,6 +206,22 @@ impl LocalShape {
             Shape::JuliaFractal(ref spec) => {
                 JuliaFractal::new(spec).map(|j| Self::JuliaFractal(Box::new(j)))
             }
+            Shape::Ovus {
+                bottom_radius,
+                top_radius,
+            } => Ovus::new(bottom_radius, top_radius).map(|o| Self::Ovus(Box::new(o))),
+            Shape::Lemon(ref spec) => Lemon::new(
+                spec.base,
+                spec.base_radius,
+                spec.cap,
+                spec.cap_radius,
+                spec.inner_radius,
+                spec.open,
+            )
+            .map(|l| Self::Lemon(Box::new(l))),
+            Shape::Parametric(ref spec) => {
+                ParametricSurface::new(spec).map(|p| Self::Parametric(Box::new(p)))
+            }
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
@@ -265,6 +289,7 @@ impl LocalShape {
                 | LocalShape::SmoothTriangle(_)
                 | LocalShape::MeshFace(_)
                 | LocalShape::Polygon(_)
+                | LocalShape::Parametric(_)
         )
     }
 
@@ -294,6 +319,9 @@ impl LocalShape {
             LocalShape::HeightField(shape) => shape.intersect(origin, direction, roots),
             LocalShape::SphereSweep(shape) => shape.intersect(origin, direction, roots),
             LocalShape::JuliaFractal(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Ovus(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Lemon(shape) => shape.intersect(origin, direction, roots),
+            LocalShape::Parametric(shape) => shape.intersect(origin, direction, roots),
         }
     }
 
@@ -320,6 +348,9 @@ impl LocalShape {
             LocalShape::HeightField(shape) => shape.inside(point),
             LocalShape::SphereSweep(shape) => shape.inside(point),
             LocalShape::JuliaFractal(shape) => shape.inside(point),
+            LocalShape::Ovus(shape) => shape.inside(point),
+            LocalShape::Lemon(shape) => shape.inside(point),
+            LocalShape::Parametric(_) => false,
         }
     }
 
@@ -348,6 +379,9 @@ impl LocalShape {
             LocalShape::HeightField(shape) => shape.normal(point),
             LocalShape::SphereSweep(shape) => shape.normal(point),
             LocalShape::JuliaFractal(shape) => shape.normal(point),
+            LocalShape::Ovus(shape) => shape.normal(point, part),
+            LocalShape::Lemon(shape) => shape.normal(point, part),
+            LocalShape::Parametric(shape) => shape.normal(point),
         }
     }
 
@@ -374,6 +408,9 @@ impl LocalShape {
             LocalShape::HeightField(shape) => Some(shape.bounds()),
             LocalShape::SphereSweep(shape) => Some(shape.bounds()),
             LocalShape::JuliaFractal(shape) => Some(shape.bounds()),
+            LocalShape::Ovus(shape) => Some(shape.bounds()),
+            LocalShape::Lemon(shape) => Some(shape.bounds()),
+            LocalShape::Parametric(shape) => Some(shape.bounds()),
         }
     }
 
@@ -407,7 +444,8 @@ impl LocalShape {
             | LocalShape::Triangle(_)
             | LocalShape::SmoothTriangle(_)
             | LocalShape::MeshFace(_)
-            | LocalShape::Polygon(_) => InsideReach::Nowhere,
+            | LocalShape::Polygon(_)
+            | LocalShape::Parametric(_) => InsideReach::Nowhere,
             LocalShape::Plane(_)
             | LocalShape::Quadric(_)
             | LocalShape::Poly(_)

@@ -6,10 +6,12 @@
 //! union of its spheres and of the cone frustums tangent to each pair of neighbours; a cubic or
 //! B-spline sweep is sampled along each segment into such a chain (fine enough that the
 //! difference to POV-Ray's exact sweep is below a pixel at usual sizes). A line's crossings
-//! are the ends of the union of the pieces' intervals along it; nothing allocates.
+//! are the ends of the union of the pieces' intervals along it. The pieces sit in a small
+//! bounding hierarchy, so a line, a point or a normal only looks at the pieces near it;
+//! nothing allocates.
 
 use super::roots::{solve_quadratic, Roots};
-use crate::accel::Aabb;
+use crate::accel::{Aabb, Bvh};
 use crate::scene::{SphereSweep as SphereSweepSpec, SweepSpline};
 use glam::DVec3;
 
@@ -45,13 +47,75 @@ struct Frustum {
     /// Bounding sphere for a quick rejection.
     centre: DVec3,
     reach: f64,
+    /// The two balls the frustum joins: radii and the distance between their centres.
+    start_radius: f64,
+    end_radius: f64,
+    length: f64,
+}
+
+/// One piece of the chain: a ball or the frustum joining two neighbours.
+#[derive(Clone, Copy, Debug)]
+enum Piece {
+    Ball(Ball),
+    Frustum(Frustum),
+}
+
+impl Piece {
+    /// The parameter interval of the line inside the piece.
+    fn interval(&self, origin: DVec3, direction: DVec3) -> Option<(f64, f64)> {
+        match self {
+            Piece::Ball(ball) => ball_interval(ball.centre, ball.radius, origin, direction),
+            Piece::Frustum(frustum) => {
+                ball_interval(frustum.centre, frustum.reach, origin, direction)?;
+                frustum.interval(origin, direction)
+            }
+        }
+    }
+
+    fn contains(&self, point: DVec3) -> bool {
+        match self {
+            Piece::Ball(ball) => point.distance_squared(ball.centre) < ball.radius * ball.radius,
+            Piece::Frustum(frustum) => frustum.contains(point),
+        }
+    }
+
+    /// Distance-like gap of `point` from the piece's surface, and the outward normal there.
+    fn surface_gap(&self, point: DVec3) -> Option<(f64, DVec3)> {
+        match self {
+            Piece::Ball(ball) => {
+                let offset = point - ball.centre;
+                Some(((offset.length() - ball.radius).abs(), offset))
+            }
+            Piece::Frustum(frustum) => frustum.surface_gap(point),
+        }
+    }
+
+    /// Bounds of the piece, grown by `margin`: a frustum lies within its two balls' boxes.
+    fn bounds(&self, margin: f64) -> Aabb {
+        let ball_box = |centre: DVec3, radius: f64| {
+            let reach = DVec3::splat(radius + margin);
+            Aabb::from_corners(centre - reach, centre + reach)
+        };
+        match self {
+            Piece::Ball(ball) => ball_box(ball.centre, ball.radius),
+            Piece::Frustum(frustum) => {
+                ball_box(frustum.start, frustum.start_radius).union(&ball_box(
+                    frustum.start + frustum.axis * frustum.length,
+                    frustum.end_radius,
+                ))
+            }
+        }
+    }
 }
 
 /// A sphere sweep in its local space.
 #[derive(Clone, Debug)]
 pub struct SphereSweep {
-    balls: Vec<Ball>,
-    frustums: Vec<Frustum>,
+    /// The balls, then the frustums, in the order of `tree`'s leaves.
+    pieces: Vec<Piece>,
+    /// Hierarchy over the pieces' slightly grown boxes (so that a surface point found by a
+    /// line is inside the box of the piece it lies on).
+    tree: Bvh,
     bounds: Aabb,
 }
 
@@ -77,7 +141,7 @@ impl SphereSweep {
         if balls.len() < 2 && spec.spline != SweepSpline::Linear {
             return None;
         }
-        let frustums = balls
+        let frustums: Vec<Frustum> = balls
             .windows(2)
             .filter_map(|pair| Frustum::between(pair[0], pair[1]))
             .collect();
@@ -87,9 +151,21 @@ impl SphereSweep {
                 ball.centre + DVec3::splat(ball.radius),
             ]))
         });
-        (!balls.is_empty()).then_some(SphereSweep {
-            balls,
-            frustums,
+        if balls.is_empty() {
+            return None;
+        }
+        let margin = bounds.extent().max_element() * 1e-9;
+        let pieces: Vec<Piece> = balls
+            .into_iter()
+            .map(Piece::Ball)
+            .chain(frustums.into_iter().map(Piece::Frustum))
+            .collect();
+        let piece_bounds: Vec<Aabb> = pieces.iter().map(|piece| piece.bounds(margin)).collect();
+        let (tree, order) = Bvh::build(&piece_bounds);
+        let pieces = order.iter().map(|&index| pieces[index as usize]).collect();
+        Some(SphereSweep {
+            pieces,
+            tree,
             bounds,
         })
     }
@@ -110,18 +186,17 @@ impl SphereSweep {
                 *farthest = interval;
             }
         };
-        for ball in &self.balls {
-            if let Some(interval) = ball_interval(ball.centre, ball.radius, origin, direction) {
-                add(interval);
-            }
-        }
-        for frustum in &self.frustums {
-            if ball_interval(frustum.centre, frustum.reach, origin, direction).is_some() {
-                if let Some(interval) = frustum.interval(origin, direction) {
+        self.tree.for_each_on_ray(
+            origin,
+            direction.recip(),
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            |position| {
+                if let Some(interval) = self.pieces[position].interval(origin, direction) {
                     add(interval);
                 }
-            }
-        }
+            },
+        );
         let intervals = &mut intervals[..count];
         intervals.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
         let mut current: Option<(f64, f64)> = None;
@@ -144,29 +219,22 @@ impl SphereSweep {
 
     /// True when `point` is inside any sphere or frustum of the chain.
     pub fn inside(&self, point: DVec3) -> bool {
-        self.balls
-            .iter()
-            .any(|ball| point.distance_squared(ball.centre) < ball.radius * ball.radius)
-            || self.frustums.iter().any(|frustum| frustum.contains(point))
+        self.tree
+            .any_containing(point, |position| self.pieces[position].contains(point))
     }
 
-    /// Outward normal at a surface point: that of the piece whose surface is nearest.
+    /// Outward normal at a surface point: that of the piece whose surface is nearest (among
+    /// the pieces whose box holds the point; the piece the point lies on is one of them).
     pub fn normal(&self, point: DVec3) -> DVec3 {
         let mut best = (f64::INFINITY, DVec3::Y);
-        for ball in &self.balls {
-            let offset = point - ball.centre;
-            let gap = (offset.length() - ball.radius).abs();
-            if gap < best.0 {
-                best = (gap, offset);
-            }
-        }
-        for frustum in &self.frustums {
-            if let Some((gap, normal)) = frustum.surface_gap(point) {
+        self.tree.any_containing(point, |position| {
+            if let Some((gap, normal)) = self.pieces[position].surface_gap(point) {
                 if gap < best.0 {
                     best = (gap, normal);
                 }
             }
-        }
+            false
+        });
         best.1
     }
 
@@ -203,6 +271,9 @@ impl Frustum {
             sin,
             centre: first.centre + offset * 0.5,
             reach,
+            start_radius: first.radius,
+            end_radius: second.radius,
+            length: distance,
         })
     }
 

@@ -13,7 +13,9 @@ mod light;
 mod light_group;
 mod media;
 mod mesh;
+mod parametric;
 mod radiosity;
+mod spindle;
 mod texture;
 mod transform;
 mod uv_faces;
@@ -31,7 +33,9 @@ pub use light::{AreaLight, LightSource, Spotlight};
 pub use light_group::{separate_light_groups, LightGroup};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
+pub use parametric::Parametric;
 pub use radiosity::RadiositySettings;
+pub use spindle::Lemon;
 pub use texture::{
     BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
     Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
@@ -266,6 +270,12 @@ pub enum Shape {
     SphereSweep(Arc<SphereSweep>),
     /// `julia_fractal { .. }`: a 3D slice of a 4D Julia set.
     JuliaFractal(Arc<JuliaFractal>),
+    /// `ovus { bottom_radius, top_radius }`: an egg standing on the origin.
+    Ovus { bottom_radius: f64, top_radius: f64 },
+    /// `lemon { .. }`: a circle arc turned around an axis, with flat ends.
+    Lemon(Arc<Lemon>),
+    /// `parametric { .. }`: the points three functions of u and v give.
+    Parametric(Arc<Parametric>),
     /// A CSG combination of child objects.
     Csg {
         operation: CsgOperation,

@@ -224,10 +224,7 @@ impl Evaluator {
             return Ok(Node::Constant(self.to_float(value, expr.span())?));
         }
         Ok(match expr {
-            Expr::Ident(name, _) => {
-                let index = names.iter().rposition(|n| n == name).unwrap_or(0);
-                Node::Parameter(index)
-            }
+            Expr::Ident(name, _) => Node::Parameter(parameter_index(names, *name).unwrap_or(0)),
             Expr::Unary(op, operand, _) => {
                 let operand = self.compile_expr(operand, names)?;
                 match op {
@@ -502,7 +499,7 @@ impl Evaluator {
     /// rather than evaluated now).
     fn reads_parameters(&self, expr: &Expr, names: &[Symbol]) -> bool {
         match expr {
-            Expr::Ident(name, _) => names.contains(name),
+            Expr::Ident(name, _) => parameter_index(names, *name).is_some(),
             Expr::Unary(_, operand, _) => self.reads_parameters(operand, names),
             Expr::Binary(_, a, b, _) => {
                 self.reads_parameters(a, names) || self.reads_parameters(b, names)
@@ -534,6 +531,20 @@ impl Evaluator {
             | Expr::Directive(_) => false,
         }
     }
+}
+
+/// The index of the parameter `name` reads: the last parameter of that name, or, in a
+/// function of the default parameters `x, y, z`, `u` for `x` and `v` for `y` (as in POV-Ray,
+/// where a `parametric`'s functions are written in `u` and `v`).
+fn parameter_index(names: &[Symbol], name: Symbol) -> Option<usize> {
+    names.iter().rposition(|n| *n == name).or_else(|| {
+        let default_parameters = names.len() >= 2 && &*names[0] == "x" && &*names[1] == "y";
+        match &*name {
+            "u" if default_parameters => Some(0),
+            "v" if default_parameters => Some(1),
+            _ => None,
+        }
+    })
 }
 
 /// How messages name what a function returns.

@@ -104,7 +104,11 @@ impl Evaluator {
     }
 
     /// `contained_by { box { .. } }` or `contained_by { sphere { .. } }`.
-    fn eval_container(&mut self, span: Span, body: &std::rc::Rc<[Item]>) -> EvalResult<Container> {
+    pub(crate) fn eval_container(
+        &mut self,
+        span: Span,
+        body: &std::rc::Rc<[Item]>,
+    ) -> EvalResult<Container> {
         let mut body = Stream::new(body.clone());
         let (value, value_span) = self.expect_value(&mut body, "a box or a sphere")?;
         let shape = match value {
