@@ -272,7 +272,10 @@ impl Evaluator {
                     apply_transform(object, &t);
                 }
                 "inverse" => object.inverse = !object.inverse,
-                "no_shadow" => object.no_shadow = true,
+                "no_shadow" => {
+                    object.no_shadow = true;
+                    object.photons.set_pass_through(true);
+                }
                 "hollow" => object.hollow = Some(self.optional_bool(stream)?),
                 "open" => match &mut object.shape {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
@@ -328,6 +331,10 @@ impl Evaluator {
                         let texture = self.eval_texture(&mut body)?;
                         self.attach_interior_texture(object, texture);
                         return Ok(());
+                    }
+                    if &**w == "photons" {
+                        let mut body = Stream::new(block.body.clone());
+                        return self.eval_object_photons(&mut body, &mut object.photons);
                     }
                     if &**w == "clipped_by" || &**w == "bounded_by" {
                         return self.eval_clip_or_bound(object, w, block);

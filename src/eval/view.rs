@@ -526,8 +526,8 @@ impl Evaluator {
                         let mut body = Stream::new(block.body.clone());
                         self.eval_radiosity(&mut body)?;
                     } else if name == "photons" {
-                        let message = format!("`{name}` is not supported yet; it is ignored");
-                        self.warn(block.head_span, message);
+                        let mut body = Stream::new(block.body.clone());
+                        self.eval_global_photons(&mut body, block.head_span)?;
                     } else {
                         return Err(self.unexpected_in(&item, "global_settings"));
                     }

@@ -26,6 +26,8 @@ pub struct World {
     unbounded: Vec<Primitive>,
     /// Number of leaf shapes.
     leaf_count: usize,
+    /// Photon targets: bounds and material (see [`World::photon_targets`]).
+    photon_targets: Vec<(Aabb, u32)>,
 }
 
 /// The nearest hit found so far, before its normal is computed.
@@ -99,7 +101,28 @@ impl World {
         let mut bounded = Vec::with_capacity(built.primitives.len());
         let mut bounds = Vec::with_capacity(built.primitives.len());
         let mut unbounded = Vec::new();
+        let is_target = |material: u32| {
+            built
+                .materials
+                .get(material as usize)
+                .is_some_and(|m| m.photons.target().is_some())
+        };
+        let mut photon_targets = Vec::new();
         for (primitive, surface) in built.primitives {
+            let target = match &primitive {
+                Primitive::Leaf(leaf) => Some(leaf.material()).filter(|&m| is_target(m)),
+                Primitive::Mesh(instance) => Some(instance.material()).filter(|&m| is_target(m)),
+                Primitive::Csg(tree) => tree
+                    .leaves
+                    .iter()
+                    .map(|leaf| leaf.material())
+                    .find(|&m| is_target(m)),
+            };
+            if let (Some(material), Some(bounds)) = (target, surface) {
+                if bounds.is_finite() && !bounds.is_empty() {
+                    photon_targets.push((bounds, material));
+                }
+            }
             match surface {
                 Some(surface) if surface.is_finite() => {
                     bounded.push(Some(primitive));
@@ -119,6 +142,7 @@ impl World {
             bvh,
             unbounded,
             leaf_count: built.leaf_count,
+            photon_targets,
         }
     }
 
@@ -194,6 +218,12 @@ impl World {
     /// Bounds of all bounded primitives, or `None` when there are none.
     pub fn bounds(&self) -> Option<Aabb> {
         self.bvh.bounds()
+    }
+
+    /// The bounds and material of every bounded primitive whose material is a photon
+    /// target (a CSG object by the first of its leaves that is one), in scene order.
+    pub fn photon_targets(&self) -> impl Iterator<Item = (Aabb, u32)> + '_ {
+        self.photon_targets.iter().copied()
     }
 
     /// Number of primitives tested by every ray because they have no finite bounds.
