@@ -83,7 +83,7 @@ impl Evaluator {
                         }
                         Item::Block(b)
                             if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
-                                if matches!(&**w, "clipped_by" | "bounded_by" | "interior_texture")) =>
+                                if matches!(&**w, "clipped_by" | "bounded_by" | "interior_texture" | "photons")) =>
                         {
                             self.object_modifier(&mut object, item, stream, head)?;
                             None

@@ -37,7 +37,7 @@
 
 use super::lights::incoming;
 use super::pattern::hit_surface;
-use super::reflection::reflection_colour;
+use super::reflection::{interior_fade, reflection_colour};
 use super::shading::mirror;
 use super::texture::surface_pigment;
 use super::trace::{refract, SURFACE_EPSILON};
@@ -448,6 +448,7 @@ impl Shooter<'_> {
             colour,
             level: 1,
             travelled: 0.0,
+            inside: None,
         };
         self.follow(light, &mut first, colour.max_element(), photons);
         hit_target
@@ -482,6 +483,14 @@ impl Shooter<'_> {
         let direction = photon.ray.direction;
         let flags = material.photons;
         photon.travelled += hit.distance;
+        // Light fades on its way through the object the photon is in.
+        if let Some(kept) = photon
+            .inside
+            .and_then(|id| self.world.materials.get(id as usize))
+            .and_then(|inside| interior_fade(&inside.interior, hit.distance))
+        {
+            photon.colour *= kept;
+        }
         if photon.level > 1 && flags.collect() {
             photons.push(Photon {
                 position: hit.point,
@@ -522,6 +531,7 @@ impl Shooter<'_> {
                             direction: bent,
                         },
                         pass,
+                        entering.then_some(hit.material),
                         start,
                         photons,
                     ),
@@ -536,19 +546,29 @@ impl Shooter<'_> {
                     origin: hit.point,
                     direction: mirrored,
                 };
-                self.branch(light, photon, ray, reflection, start, photons);
+                self.branch(
+                    light,
+                    photon,
+                    ray,
+                    reflection,
+                    photon.inside,
+                    start,
+                    photons,
+                );
             }
         }
     }
 
-    /// Sends the photon on along `ray` with its colour times `filter`, unless it is too
-    /// weak.
+    /// Sends the photon on along `ray` with its colour times `filter`, inside the object
+    /// of material `inside`, unless it is too weak.
+    #[allow(clippy::too_many_arguments)]
     fn branch(
         &self,
         light: &LightSource,
         photon: &Bounce,
         ray: Ray,
         filter: DVec3,
+        inside: Option<u32>,
         start: f64,
         photons: &mut Vec<Photon>,
     ) {
@@ -562,6 +582,7 @@ impl Shooter<'_> {
             colour,
             level: photon.level + 1,
             travelled: photon.travelled,
+            inside,
         };
         self.follow(light, &mut next, start, photons);
     }
@@ -575,6 +596,8 @@ struct Bounce {
     level: u32,
     /// The length of the photon's path so far.
     travelled: f64,
+    /// The material of the object the photon is in (its interior fades the photon).
+    inside: Option<u32>,
 }
 
 /// The material's index of refraction, 1 where it is unusable.
