@@ -139,6 +139,10 @@ impl Evaluator {
                         apply_transform(&mut object, &Transform::translation(light.position));
                         light.looks_like = Some(Arc::new(object));
                     }
+                    BlockHead::Word(w) if &**w == "photons" => {
+                        let mut body = Stream::new(block.body.clone());
+                        self.eval_light_photons(&mut body, &mut light.photons)?;
+                    }
                     BlockHead::Word(w) if &**w == "projected_through" => {
                         let object = self.single_object(block, "projected_through")?;
                         light.projected_through = Some(Arc::new(object));

@@ -19,6 +19,7 @@ mod macros;
 mod media;
 mod objects;
 mod pattern;
+mod photons;
 mod radiosity;
 mod scopes;
 mod shapes;

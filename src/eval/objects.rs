@@ -84,7 +84,7 @@ impl Evaluator {
                         }
                         Item::Block(b)
                             if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
-                                if matches!(&**w, "clipped_by" | "bounded_by" | "interior_texture" | "material")) =>
+                                if matches!(&**w, "clipped_by" | "bounded_by" | "interior_texture" | "material" | "photons")) =>
                         {
                             self.object_modifier(&mut object, item, stream, head)?;
                             None
@@ -277,7 +277,10 @@ impl Evaluator {
                     apply_transform(object, &t);
                 }
                 "inverse" => object.inverse = !object.inverse,
-                "no_shadow" => object.no_shadow = true,
+                "no_shadow" => {
+                    object.no_shadow = true;
+                    object.photons.set_pass_through(true);
+                }
                 "hollow" => object.hollow = Some(self.optional_bool(stream)?),
                 "open" => match &mut object.shape {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,
@@ -338,6 +341,10 @@ impl Evaluator {
                     if &**w == "radiosity" {
                         let mut body = Stream::new(block.body.clone());
                         return self.eval_object_radiosity(&mut body);
+                    }
+                    if &**w == "photons" {
+                        let mut body = Stream::new(block.body.clone());
+                        return self.eval_object_photons(&mut body, &mut object.photons);
                     }
                     if &**w == "clipped_by" || &**w == "bounded_by" {
                         return self.eval_clip_or_bound(object, w, block);

@@ -531,7 +531,10 @@ impl Evaluator {
                     if name == "radiosity" {
                         let mut body = Stream::new(block.body.clone());
                         self.eval_radiosity(&mut body)?;
-                    } else if name == "photons" || name == "subsurface" {
+                    } else if name == "photons" {
+                        let mut body = Stream::new(block.body.clone());
+                        self.eval_global_photons(&mut body, block.head_span)?;
+                    } else if name == "subsurface" {
                         let message = format!("`{name}` is not supported yet; it is ignored");
                         self.warn(block.head_span, message);
                     } else {

@@ -157,6 +157,7 @@ struct Flags {
     double_illuminate: bool,
     hollow: bool,
     light_group: Option<crate::scene::LightGroup>,
+    photons: crate::scene::ObjectPhotons,
 }
 
 /// What materials are shared by: texture, interior texture, interior and flags.
@@ -383,6 +384,10 @@ impl Builder {
         if let Some(hollow) = object.hollow {
             flags.hollow = hollow;
         }
+        // A `photons` block applies to everything inside the object that has none.
+        if object.photons != crate::scene::ObjectPhotons::default() {
+            flags.photons = object.photons;
+        }
         // Nested light groups (measured): the innermost group's lights light an object,
         // the outermost group's `global_lights` decides whether scene lights do.
         if let Some(group) = object.light_group {
@@ -482,6 +487,7 @@ impl Builder {
                     .as_ref()
                     .is_some_and(|(texture, _)| texture_uses_uv(texture)),
             light_group: appearance.flags.light_group,
+            photons: appearance.flags.photons,
         });
         self.last_material = Some((appearance.material_key(), index));
         index

@@ -169,6 +169,8 @@ pub struct Material {
     pub uses_uv: bool,
     /// The `light_group` the material's object sits in (its lights and `global_lights`).
     pub light_group: Option<crate::scene::LightGroup>,
+    /// The object's `photons` block (inherited from its CSG parents).
+    pub photons: crate::scene::ObjectPhotons,
 }
 
 impl Material {

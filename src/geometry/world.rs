@@ -26,6 +26,8 @@ pub struct World {
     unbounded: Vec<Primitive>,
     /// Number of leaf shapes.
     leaf_count: usize,
+    /// Photon targets: bounds and material (see [`World::photon_targets`]).
+    photon_targets: Vec<(Aabb, u32)>,
 }
 
 /// The nearest hit found so far, before its normal is computed.
@@ -102,6 +104,31 @@ impl World {
             bounds,
             unbounded,
         } = built.primitives;
+        let is_target = |material: u32| {
+            built
+                .materials
+                .get(material as usize)
+                .is_some_and(|m| m.photons.target().is_some())
+        };
+        // Photon targets in build order (so shooting does not depend on the hierarchy).
+        let photon_targets = primitives
+            .iter()
+            .zip(&bounds)
+            .filter_map(|(primitive, bounds)| {
+                let material = match primitive {
+                    Primitive::Leaf(leaf) => Some(leaf.material()).filter(|&m| is_target(m)),
+                    Primitive::Mesh(instance) => {
+                        Some(instance.material()).filter(|&m| is_target(m))
+                    }
+                    Primitive::Csg(tree) => tree
+                        .leaves
+                        .iter()
+                        .map(|leaf| leaf.material())
+                        .find(|&m| is_target(m)),
+                }?;
+                (!bounds.is_empty()).then_some((*bounds, material))
+            })
+            .collect();
         let (bvh, order) = Bvh::build(&bounds);
         drop(bounds);
         permute_in_place(&mut primitives, &order);
@@ -111,6 +138,7 @@ impl World {
             bvh,
             unbounded,
             leaf_count: built.leaf_count,
+            photon_targets,
         }
     }
 
@@ -186,6 +214,12 @@ impl World {
     /// Bounds of all bounded primitives, or `None` when there are none.
     pub fn bounds(&self) -> Option<Aabb> {
         self.bvh.bounds()
+    }
+
+    /// The bounds and material of every bounded primitive whose material is a photon
+    /// target (a CSG object by the first of its leaves that is one), in scene order.
+    pub fn photon_targets(&self) -> impl Iterator<Item = (Aabb, u32)> + '_ {
+        self.photon_targets.iter().copied()
     }
 
     /// Number of primitives tested by every ray because they have no finite bounds.

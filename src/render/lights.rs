@@ -11,7 +11,7 @@
 //!   cr = cos(radius), cf = cos(falloff) (cf raised to cr when falloff < radius): zero when
 //!   c < cf; `c^tightness` when c ≥ cr; between, `c^tightness · s²(3 − 2s)` with
 //!   s = (c − cf)/(cr − cf). A negative radius acts through its cosine.
-//! - shadows: every surface between the point and the light that is not `no_shadow`
+//! - shadows (see [`super::photons`] for photon targets): every surface between the point and the light that is not `no_shadow`
 //!   multiplies the light by `filter · pigment + transmit` of its pigment at the crossing
 //!   (no clamping; so a sphere of `rgbf <0.8,0.5,0.2,1>` passes 0.64, 0.25, 0.04); an
 //!   opaque surface gives zero. The number of surfaces is not limited by
@@ -50,6 +50,9 @@ pub struct SceneLight {
     pub attenuating_media: Vec<Media>,
     /// The fogs that dim this light on its way (`media_attenuation on`).
     pub attenuating_fogs: Vec<Fog>,
+    /// The light shoots refracted photons: photon targets that refract them block its
+    /// shadow rays (their caustics stand for the light through them).
+    pub photon_targets_block: bool,
 }
 
 /// The scene's lights, ready for rendering.
@@ -73,6 +76,7 @@ pub fn prepare_lights(scene: &Scene) -> Vec<SceneLight> {
             } else {
                 Vec::new()
             },
+            photon_targets_block: scene.settings.photons.is_some() && source.photons.refraction,
         })
         .collect()
 }
@@ -135,7 +139,7 @@ fn filter_along(
         }
     }
     let mut filter = if can_be_shadowed {
-        shadow_filter(world, point, direction, limit)
+        shadow_filter(world, point, direction, limit, light.photon_targets_block)
     } else {
         DVec3::ONE
     };
@@ -277,8 +281,15 @@ pub fn transmission(pigment: Colour) -> DVec3 {
 ///
 /// Light also fades through objects whose interior has `fade_distance` and a positive
 /// `fade_power`, over the length between entering and leaving them (from the lit point when
-/// it is inside).
-pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f64) -> DVec3 {
+/// it is inside). With `photon_targets_block`, photon targets that refract photons are
+/// opaque.
+pub fn shadow_filter(
+    world: &World,
+    point: DVec3,
+    direction: DVec3,
+    distance: f64,
+    photon_targets_block: bool,
+) -> DVec3 {
     let ray = Ray {
         origin: point,
         direction,
@@ -294,6 +305,13 @@ pub fn shadow_filter(world: &World, point: DVec3, direction: DVec3, distance: f6
         let Some(material) = world.materials.get(hit.material as usize) else {
             return DVec3::ZERO;
         };
+        if photon_targets_block
+            && !material.no_image
+            && material.photons.refraction()
+            && material.photons.target().is_some()
+        {
+            return DVec3::ZERO;
+        }
         filter *= hit_transmission(world, &hit, direction);
         if material.interior.caustics > 0.0 {
             filter *= fake_caustics(material, &hit, direction);

@@ -29,6 +29,7 @@ pub mod mesh_camera;
 pub mod normal;
 pub mod output;
 pub mod pattern;
+pub mod photons;
 pub mod radiosity;
 pub mod radiosity_index;
 pub mod reflection;

@@ -46,6 +46,7 @@ use super::lights::{prepare_lights, transmission, SceneLight};
 use super::media::{ActiveMedia, MediaShader, Stretch};
 use super::normal::perturbed_normal_at;
 use super::pattern::hit_surface;
+use super::photons::PhotonMap;
 use super::radiosity::{Gathered, Radiosity};
 use super::reflection::{apply_exponent, interior_fade, reflection_colour};
 use super::shading::{local_light, mirror, SurfaceSample};
@@ -161,6 +162,8 @@ pub struct Tracer<'a> {
     any_no_radiosity: bool,
     /// Indirect diffuse light, when the scene has a radiosity block.
     radiosity: Option<Radiosity>,
+    /// Caustics, when the scene has a photons block.
+    photons: Option<PhotonMap>,
 }
 
 /// What a ray is for, which decides the objects it can see.
@@ -212,6 +215,7 @@ impl<'a> Tracer<'a> {
                 .radiosity
                 .as_ref()
                 .map(|radiosity| Radiosity::new(radiosity, scene.camera.location)),
+            photons: PhotonMap::build(scene, world),
         }
     }
 
@@ -542,6 +546,12 @@ impl<'a> Tracer<'a> {
                 light
             });
             local.body += pigment.rgb_vec() * texture.finish.diffuse * light;
+        }
+        if let Some(photons) = &self.photons {
+            if material.photons.collect() && texture.finish.diffuse != 0.0 {
+                let finish = &texture.finish;
+                local.body += photons.irradiance(hit.point, normal, finish, pigment.rgb_vec());
+            }
         }
         let opacity = if self.legacy_opacity {
             1.0 - pigment.filter * pigment.rgb_vec().max_element() - pigment.transmit

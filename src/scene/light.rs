@@ -41,6 +41,8 @@ pub struct LightSource {
     /// The id of the `light_group` the light was written in (it lights only that group's
     /// objects); `None` for a scene light.
     pub group: Option<u32>,
+    /// The light's `photons { }` block: which photons it shoots.
+    pub photons: super::LightPhotons,
 }
 
 impl LightSource {
@@ -60,6 +62,7 @@ impl LightSource {
             media_interaction: true,
             media_attenuation: false,
             group: None,
+            photons: super::LightPhotons::default(),
         }
     }
 

@@ -14,6 +14,7 @@ mod light_group;
 mod media;
 mod mesh;
 mod parametric;
+mod photons;
 mod radiosity;
 mod spindle;
 mod texture;
@@ -34,6 +35,7 @@ pub use light_group::{separate_light_groups, LightGroup};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 pub use parametric::Parametric;
+pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, PhotonSettings};
 pub use radiosity::RadiositySettings;
 pub use spindle::Lemon;
 pub use texture::{
@@ -90,6 +92,8 @@ pub struct GlobalSettings {
     /// The `radiosity { }` block, when given: indirect diffuse light is gathered, and in
     /// 3.7 scenes every finish's ambient term counts as zero.
     pub radiosity: Option<RadiositySettings>,
+    /// The `photons { }` block, when given: caustics from photon mapping.
+    pub photons: Option<PhotonSettings>,
 }
 
 impl Default for GlobalSettings {
@@ -106,6 +110,7 @@ impl Default for GlobalSettings {
             number_of_waves: 10,
             wave_sources: crate::pattern::SceneWaveSources::default(),
             radiosity: None,
+            photons: None,
         }
     }
 }
@@ -154,6 +159,9 @@ pub struct Object {
     /// The `light_group` this object is (the root of every object written in the group):
     /// only the group's lights, and with `global_lights on` the scene's, light it.
     pub light_group: Option<LightGroup>,
+    /// The `photons { }` block: whether photons are shot at the object, bounce off it,
+    /// pass into it or land on it.
+    pub photons: ObjectPhotons,
 }
 
 impl Object {
@@ -176,6 +184,7 @@ impl Object {
             double_illuminate: false,
             lights: None,
             light_group: None,
+            photons: ObjectPhotons::default(),
         }
     }
 
@@ -375,9 +384,10 @@ mod tests {
             "{}",
             std::mem::size_of::<Shape>()
         );
-        // 168 bytes before `interior_texture` (one pointer; no field had room to share).
+        // 168 bytes before `interior_texture` (one pointer; no field had room to share),
+        // 184 since `photons` (eight bytes: a spacing multiplier and on/off bits).
         assert!(
-            std::mem::size_of::<Object>() <= 176,
+            std::mem::size_of::<Object>() <= 184,
             "{}",
             std::mem::size_of::<Object>()
         );

@@ -882,3 +882,33 @@ fn directive_after_a_macro_argument_is_refused() {
         ],
     );
 }
+
+#[test]
+fn photons_block_without_density_is_refused() {
+    check(
+        "photons_without_density",
+        2,
+        19,
+        &["needs `spacing` or `count`", "no photon density given"],
+    );
+}
+
+#[test]
+fn photon_spacing_must_be_positive() {
+    check(
+        "photons_negative_spacing",
+        2,
+        37,
+        &["the photon spacing -0.1 must be positive"],
+    );
+}
+
+#[test]
+fn photon_target_multiplier_must_be_positive() {
+    check(
+        "photons_target_multiplier",
+        2,
+        32,
+        &["photon spacing multiplier 0 must be positive"],
+    );
+}

@@ -1,0 +1,704 @@
+//! Photon mapping: caustics from light reflected and refracted by photon targets.
+//!
+//! In: the scene's [`PhotonSettings`], its lights and the [`World`] (materials carry each
+//! object's `photons` flags). Out: a [`PhotonMap`] built once before rendering, and
+//! [`PhotonMap::irradiance`], the caustic light arriving at a surface point. Holds: shooting
+//! runs in a fixed order (light by light, target by target, ring by ring) with jitter drawn
+//! from a hash of the photon's place in that order, so the map is the same on any number of
+//! threads; gathering allocates nothing (each thread reuses one buffer).
+//!
+//! Rules, from POV-Ray 3.7's manual and renders of a glass sphere over a plane:
+//! - photons leave each light that shoots them (`photons { refraction | reflection }` of the
+//!   light, both on by default) towards each target's bounding sphere, on a spiral of rings
+//!   around the direction to its centre: ring i at angle i·dθ from it, dθ = spacing ·
+//!   target multiplier / distance to the centre, about 2π sin θ / dθ photons per ring, each
+//!   direction jittered by `jitter` times the spacing. Rings stop at the bounding sphere's
+//!   edge, or earlier when a whole ring misses the target after one photon has hit it and the
+//!   spiral is beyond `autostop` of the way out (measured: a sphere of radius 1 at distance
+//!   5.745 and spacing 0.02 gets 8311 photons, the sphere's own cone plus one ring, not the
+//!   24,000 of its bounding box's sphere).
+//! - a photon carries the light's colour (faded and spotlit as the light arrives at its first
+//!   hit) times (spacing · multiplier)², the area it stands for where it meets the target.
+//! - at a surface whose object reflects photons it goes on mirrored, times the finish's
+//!   reflection; where the object refracts photons it goes on bent by Snell's law, times
+//!   `filter · pigment + transmit` (total internal reflection sends it all back). Photons
+//!   cross `pass_through` objects unchanged. After at least one bounce a photon is stored
+//!   where it meets an object that collects photons. Bounces end at `max_trace_level` or
+//!   when the photon's largest component falls below `adc_bailout` of its start.
+//! - shadows: a target that refracts photons blocks the shadow rays of lights that shoot
+//!   refracted photons (its caustic stands for the light through it; measured: no other
+//!   combination changes the shadow). A `no_image` target is neither shot at nor blocks.
+//! - gathering: the photons within the gather radius (estimated as 5 spacings, POV-Ray's
+//!   recommended ratio, or `radius`, times its multiplier), the nearest `gather` max of them;
+//!   with fewer than `gather` min the radius is doubled once and the wider estimate kept
+//!   unless it raises the density by more than `expand_thresholds`' fraction with at least
+//!   its minimum found. Each photon lights the point like a light from the direction it came
+//!   from (diffuse, brilliance); their sum is divided by the area of the disc searched.
+
+use super::lights::incoming;
+use super::pattern::hit_surface;
+use super::reflection::{interior_fade, reflection_colour};
+use super::shading::mirror;
+use super::texture::surface_pigment;
+use super::trace::{refract, SURFACE_EPSILON};
+use crate::geometry::{Material, Ray, World};
+use crate::scene::{Finish, LightSource, PhotonDensity, PhotonSettings, Scene};
+use glam::DVec3;
+use std::cell::RefCell;
+use std::f64::consts::{PI, TAU};
+
+/// POV-Ray's recommended ratio of gather radius to photon spacing.
+const RADIUS_PER_SPACING: f64 = 5.0;
+
+/// At most this many photons are shot in all, whatever the spacing asks for.
+const SHOT_LIMIT: u64 = 20_000_000;
+
+/// Salt of the jitter random numbers.
+const JITTER_SALT: u64 = 0x51a7_c0de_9e37_79b9;
+
+/// One stored photon.
+#[derive(Clone, Copy, Debug)]
+struct Photon {
+    /// Where it landed.
+    position: DVec3,
+    /// The unit direction it travelled.
+    direction: DVec3,
+    /// The light it carries.
+    power: DVec3,
+}
+
+/// A target to shoot at: its bounding sphere and its material.
+#[derive(Clone, Copy, Debug)]
+struct Target {
+    centre: DVec3,
+    radius: f64,
+    spacing_multiplier: f64,
+    material: u32,
+}
+
+/// The stored photons in a kd-tree, and how to gather them.
+pub struct PhotonMap {
+    /// Photons in kd-tree order: the median of each range is the node splitting it.
+    photons: Vec<Photon>,
+    /// The axis (0, 1, 2) each node splits, by index.
+    axes: Vec<u8>,
+    /// The search radius of a gather.
+    radius: f64,
+    gather_min: usize,
+    gather_max: usize,
+    expand_increase: f64,
+    expand_min: usize,
+    /// Photons shot in all.
+    shot: u64,
+}
+
+thread_local! {
+    /// The photons found by one gather (index, squared distance), reused by every gather
+    /// on the thread.
+    static FOUND: RefCell<Vec<(u32, f64)>> = const { RefCell::new(Vec::new()) };
+}
+
+impl PhotonMap {
+    /// Shoots the scene's photons and stores them; `None` when the scene has no photons
+    /// block.
+    pub fn build(scene: &Scene, world: &World) -> Option<PhotonMap> {
+        let settings = scene.settings.photons.as_ref()?;
+        let targets = targets(world);
+        let spacing = match settings.density {
+            PhotonDensity::Spacing(spacing) => spacing,
+            PhotonDensity::Count(count) => spacing_for_count(scene, &targets, count),
+        };
+        let max_level = settings
+            .max_trace_level
+            .unwrap_or(scene.settings.max_trace_level)
+            .clamp(1, 256);
+        let bailout = settings.adc_bailout.unwrap_or(scene.settings.adc_bailout);
+        let shooter = Shooter {
+            world,
+            max_level,
+            bailout: if bailout.is_nan() { 0.0 } else { bailout },
+        };
+        let mut photons = Vec::new();
+        let mut shot = 0u64;
+        for (light_index, light) in scene.lights.iter().enumerate() {
+            if !(light.photons.refraction || light.photons.reflection) {
+                continue;
+            }
+            for (target_index, target) in targets.iter().enumerate() {
+                let seed = (light_index as u64) << 32 | target_index as u64;
+                shot += shooter.shoot_at(
+                    light,
+                    target,
+                    spacing * target.spacing_multiplier,
+                    settings,
+                    seed,
+                    &mut photons,
+                );
+            }
+        }
+        let radius = if settings.radius > 0.0 {
+            settings.radius
+        } else {
+            RADIUS_PER_SPACING * spacing
+        } * settings.radius_multiplier;
+        let axes = build_tree(&mut photons);
+        Some(PhotonMap {
+            photons,
+            axes,
+            radius,
+            gather_min: settings.gather_min as usize,
+            gather_max: settings.gather_max.max(1) as usize,
+            expand_increase: settings.expand_increase,
+            expand_min: settings.expand_min as usize,
+            shot,
+        })
+    }
+
+    /// Number of photons stored.
+    pub fn stored(&self) -> usize {
+        self.photons.len()
+    }
+
+    /// Number of photons shot.
+    pub fn shot(&self) -> u64 {
+        self.shot
+    }
+
+    /// The caustic light a surface with `finish` and `pigment` sends on from photons
+    /// around `point` (unit `normal` facing the viewer): the diffuse term of every photon
+    /// gathered, over the area searched.
+    pub fn irradiance(
+        &self,
+        point: DVec3,
+        normal: DVec3,
+        finish: &Finish,
+        pigment: DVec3,
+    ) -> DVec3 {
+        if self.photons.is_empty() || !point.is_finite() {
+            return DVec3::ZERO;
+        }
+        FOUND.with(|found| {
+            let mut found = found.borrow_mut();
+            let light = |found: &[(u32, f64)]| -> DVec3 {
+                found
+                    .iter()
+                    .map(|&(index, _)| {
+                        let photon = &self.photons[index as usize];
+                        let cosine = -photon.direction.dot(normal);
+                        if cosine > 0.0 {
+                            photon.power * brilliant(cosine, finish.brilliance)
+                        } else {
+                            DVec3::ZERO
+                        }
+                    })
+                    .sum()
+            };
+            let (count, reach) = self.nearest(point, self.radius, &mut found);
+            if count == 0 {
+                return DVec3::ZERO;
+            }
+            let mut estimate = light(&found) / (PI * reach * reach);
+            if count < self.gather_min {
+                let (wider_count, wider_reach) = self.nearest(point, 2.0 * self.radius, &mut found);
+                let wider = light(&found) / (PI * wider_reach * wider_reach);
+                let increase = wider.max_element() / estimate.max_element().max(1e-300) - 1.0;
+                if increase <= self.expand_increase || wider_count < self.expand_min {
+                    estimate = wider;
+                }
+            }
+            finish.diffuse * pigment * estimate
+        })
+    }
+
+    /// Fills `found` with the nearest `gather_max` photons within `radius` of `point`;
+    /// returns how many and the radius of the disc they stand for (the farthest one's
+    /// distance when the search was cut short, else `radius`).
+    fn nearest(&self, point: DVec3, radius: f64, found: &mut Vec<(u32, f64)>) -> (usize, f64) {
+        found.clear();
+        self.collect(point, radius * radius, 0, self.photons.len(), found);
+        if found.len() > self.gather_max {
+            found.select_nth_unstable_by(self.gather_max - 1, |a, b| a.1.total_cmp(&b.1));
+            found.truncate(self.gather_max);
+            let farthest = found.iter().map(|f| f.1).fold(0.0, f64::max);
+            return (found.len(), farthest.sqrt().max(1e-12));
+        }
+        (found.len(), radius)
+    }
+
+    /// Adds the photons of the range `start..end` within `sqrt(radius2)` of `point`.
+    fn collect(
+        &self,
+        point: DVec3,
+        radius2: f64,
+        start: usize,
+        end: usize,
+        found: &mut Vec<(u32, f64)>,
+    ) {
+        if start >= end {
+            return;
+        }
+        let middle = (start + end) / 2;
+        let photon = &self.photons[middle];
+        let distance2 = photon.position.distance_squared(point);
+        if distance2 <= radius2 {
+            found.push((middle as u32, distance2));
+        }
+        let axis = usize::from(self.axes[middle]);
+        let offset = point[axis] - photon.position[axis];
+        let (near, far) = if offset <= 0.0 {
+            ((start, middle), (middle + 1, end))
+        } else {
+            ((middle + 1, end), (start, middle))
+        };
+        self.collect(point, radius2, near.0, near.1, found);
+        if offset * offset <= radius2 {
+            self.collect(point, radius2, far.0, far.1, found);
+        }
+    }
+}
+
+/// `cosine^brilliance`, with the common brilliance 1 exact.
+fn brilliant(cosine: f64, brilliance: f64) -> f64 {
+    if brilliance == 1.0 {
+        cosine
+    } else {
+        cosine.powf(brilliance)
+    }
+}
+
+/// Orders `photons` as a balanced kd-tree (each range's median splits it along the axis
+/// where the range is widest) and returns each node's axis.
+fn build_tree(photons: &mut [Photon]) -> Vec<u8> {
+    let mut axes = vec![0u8; photons.len()];
+    // Ranges still to split, kept on an explicit stack.
+    let mut pending = vec![(0usize, photons.len())];
+    while let Some((start, end)) = pending.pop() {
+        if end - start < 2 {
+            continue;
+        }
+        let range = &mut photons[start..end];
+        let (low, high) = range.iter().fold(
+            (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+            |(low, high), p| (low.min(p.position), high.max(p.position)),
+        );
+        let extent = high - low;
+        let axis = if extent.x >= extent.y && extent.x >= extent.z {
+            0
+        } else if extent.y >= extent.z {
+            1
+        } else {
+            2
+        };
+        let middle = range.len() / 2;
+        range.select_nth_unstable_by(middle, |a, b| a.position[axis].total_cmp(&b.position[axis]));
+        axes[start + middle] = axis as u8;
+        pending.push((start, start + middle));
+        pending.push((start + middle + 1, end));
+    }
+    axes
+}
+
+/// The bounding spheres of the world's photon targets, in the world's order.
+fn targets(world: &World) -> Vec<Target> {
+    world
+        .photon_targets()
+        .filter_map(|(bounds, material)| {
+            let target = world.materials.get(material as usize)?;
+            // Measured: a `no_image` target gets no photons (and casts no shadow).
+            if target.no_image {
+                return None;
+            }
+            let multiplier = target.photons.target()?;
+            let centre = (bounds.min + bounds.max) / 2.0;
+            let radius = (bounds.max - bounds.min).length() / 2.0;
+            (centre.is_finite() && radius.is_finite()).then_some(Target {
+                centre,
+                radius,
+                spacing_multiplier: multiplier,
+                material,
+            })
+        })
+        .collect()
+}
+
+/// The spacing that shoots about `count` photons at the targets from all lights.
+fn spacing_for_count(scene: &Scene, targets: &[Target], count: u32) -> f64 {
+    // Photons at spacing 1: the cone's solid angle over the square of the angular spacing.
+    let mut at_unit_spacing = 0.0;
+    for light in scene
+        .lights
+        .iter()
+        .filter(|l| l.photons.refraction || l.photons.reflection)
+    {
+        for target in targets {
+            let distance = target.centre.distance(light.position);
+            let solid_angle = if distance <= target.radius {
+                2.0 * TAU
+            } else {
+                TAU * (1.0 - (1.0 - (target.radius / distance).powi(2)).sqrt())
+            };
+            let per_radian = distance / target.spacing_multiplier;
+            at_unit_spacing += solid_angle * per_radian * per_radian;
+        }
+    }
+    let spacing = (at_unit_spacing / f64::from(count.max(1))).sqrt();
+    if spacing > 0.0 && spacing.is_finite() {
+        spacing
+    } else {
+        1.0
+    }
+}
+
+/// What photon shooting needs of the scene.
+struct Shooter<'a> {
+    world: &'a World,
+    max_level: u32,
+    bailout: f64,
+}
+
+impl Shooter<'_> {
+    /// Shoots the photons of `light` at `target` with this spacing at the target; stores
+    /// them in `photons` and returns how many were shot.
+    fn shoot_at(
+        &self,
+        light: &LightSource,
+        target: &Target,
+        spacing: f64,
+        settings: &PhotonSettings,
+        seed: u64,
+        photons: &mut Vec<Photon>,
+    ) -> u64 {
+        let to_target = target.centre - light.position;
+        let distance = to_target.length();
+        let Some(axis) = to_target.try_normalize() else {
+            return 0;
+        };
+        if !(spacing > 0.0 && distance > 0.0) {
+            return 0;
+        }
+        let step = spacing / distance;
+        let max_angle = if distance <= target.radius {
+            PI
+        } else {
+            (target.radius / distance).asin()
+        };
+        let (across, up) = axis.any_orthonormal_pair();
+        // The solid angle each photon stands for.
+        let solid_angle = step * step;
+        let mut shot = 0u64;
+        let mut any_hit = false;
+        let mut ring = 0u64;
+        loop {
+            let angle = ring as f64 * step;
+            if angle > max_angle + 0.5 * step || shot >= SHOT_LIMIT {
+                break;
+            }
+            let count = if ring == 0 {
+                1
+            } else {
+                ((TAU * angle.sin() / step).round() as u64).max(1)
+            };
+            let mut ring_hit = false;
+            for index in 0..count {
+                let key = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ (ring << 24 | index);
+                let (jitter_theta, jitter_phi) = jitter_pair(key);
+                let theta = (angle + settings.jitter * step * jitter_theta).clamp(0.0, PI);
+                let phi = (index as f64 + settings.jitter * jitter_phi) * TAU / count as f64;
+                let direction = (axis * theta.cos()
+                    + (across * phi.cos() + up * phi.sin()) * theta.sin())
+                .normalize_or(axis);
+                shot += 1;
+                if self.shoot(light, direction, solid_angle, target.material, photons) {
+                    ring_hit = true;
+                }
+            }
+            any_hit |= ring_hit;
+            if !ring_hit && any_hit && angle >= settings.autostop * max_angle {
+                break;
+            }
+            ring += 1;
+        }
+        shot
+    }
+
+    /// Follows one photon leaving `light` along `direction`; true when its first surface
+    /// is the target's.
+    fn shoot(
+        &self,
+        light: &LightSource,
+        direction: DVec3,
+        solid_angle: f64,
+        target_material: u32,
+        photons: &mut Vec<Photon>,
+    ) -> bool {
+        let ray = Ray {
+            origin: light.position,
+            direction,
+        };
+        let Some(hit) = self.next_hit(&ray, SURFACE_EPSILON) else {
+            return false;
+        };
+        let hit_target = hit.material == target_material;
+        let Some(arriving) = incoming(light, hit.point) else {
+            return hit_target;
+        };
+        let colour = arriving.colour * solid_angle;
+        let mut first = Bounce {
+            ray,
+            colour,
+            level: 1,
+            travelled: 0.0,
+            inside: None,
+        };
+        self.follow(light, &mut first, colour.max_element(), photons);
+        hit_target
+    }
+
+    /// The nearest surface along `ray` that does not let photons pass through unchanged.
+    fn next_hit(&self, ray: &Ray, min_distance: f64) -> Option<crate::geometry::SurfaceHit> {
+        let materials = &self.world.materials;
+        self.world
+            .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
+                materials
+                    .get(id as usize)
+                    .is_some_and(|m| m.photons.pass_through() && m.photons.target().is_none())
+            })
+    }
+
+    /// Follows a photon through its bounces (each bounce recursing once per branch),
+    /// storing it where it lands after at least one.
+    fn follow(
+        &self,
+        light: &LightSource,
+        photon: &mut Bounce,
+        start: f64,
+        photons: &mut Vec<Photon>,
+    ) {
+        let Some(hit) = self.next_hit(&photon.ray, SURFACE_EPSILON) else {
+            return;
+        };
+        let Some(material) = self.world.materials.get(hit.material as usize) else {
+            return;
+        };
+        let direction = photon.ray.direction;
+        let flags = material.photons;
+        photon.travelled += hit.distance;
+        // Light fades on its way through the object the photon is in.
+        if let Some(kept) = photon
+            .inside
+            .and_then(|id| self.world.materials.get(id as usize))
+            .and_then(|inside| interior_fade(&inside.interior, hit.distance))
+        {
+            photon.colour *= kept;
+        }
+        if photon.level > 1 && flags.collect() {
+            photons.push(Photon {
+                position: hit.point,
+                direction,
+                power: photon.colour * photon.travelled * photon.travelled,
+            });
+        }
+        if photon.level >= self.max_level {
+            return;
+        }
+        let reflects = flags.reflection() && light.photons.reflection;
+        let refracts = flags.refraction() && light.photons.refraction;
+        if !reflects && !refracts {
+            return;
+        }
+        let texture = material.texture_facing(direction, hit.normal);
+        let surface = hit_surface(hit.point, direction, hit.normal);
+        let pigment = surface_pigment(texture, &hit, &surface);
+        let normal = surface.normal;
+        let entering = direction.dot(hit.normal) <= 0.0;
+        let ior = sanitised_ior(material);
+        let ratio = if entering { 1.0 / ior } else { ior };
+        let cos_incidence = -direction.dot(normal);
+        let mut reflection = if reflects {
+            reflection_colour(&texture.finish, cos_incidence, ratio, pigment.rgb_vec())
+        } else {
+            DVec3::ZERO
+        };
+        if refracts {
+            let pass = super::lights::transmission(pigment);
+            if pass.max_element() > 0.0 {
+                match refract(direction, normal, ratio) {
+                    Some(bent) => self.branch(
+                        light,
+                        photon,
+                        Ray {
+                            origin: hit.point,
+                            direction: bent,
+                        },
+                        pass,
+                        entering.then_some(hit.material),
+                        start,
+                        photons,
+                    ),
+                    // Total internal reflection: all of it goes back.
+                    None => reflection = pass + reflection,
+                }
+            }
+        }
+        if reflection.max_element() > 0.0 {
+            if let Some(mirrored) = mirror(direction, normal).try_normalize() {
+                let ray = Ray {
+                    origin: hit.point,
+                    direction: mirrored,
+                };
+                self.branch(
+                    light,
+                    photon,
+                    ray,
+                    reflection,
+                    photon.inside,
+                    start,
+                    photons,
+                );
+            }
+        }
+    }
+
+    /// Sends the photon on along `ray` with its colour times `filter`, inside the object
+    /// of material `inside`, unless it is too weak.
+    #[allow(clippy::too_many_arguments)]
+    fn branch(
+        &self,
+        light: &LightSource,
+        photon: &Bounce,
+        ray: Ray,
+        filter: DVec3,
+        inside: Option<u32>,
+        start: f64,
+        photons: &mut Vec<Photon>,
+    ) {
+        let colour = photon.colour * filter;
+        let strength = colour.max_element();
+        if strength.is_nan() || strength <= 0.0 || strength < self.bailout * start {
+            return;
+        }
+        let mut next = Bounce {
+            ray,
+            colour,
+            level: photon.level + 1,
+            travelled: photon.travelled,
+            inside,
+        };
+        self.follow(light, &mut next, start, photons);
+    }
+}
+
+/// A photon on its way.
+struct Bounce {
+    ray: Ray,
+    colour: DVec3,
+    /// 1 for photons straight from the light, one more per bounce.
+    level: u32,
+    /// The length of the photon's path so far.
+    travelled: f64,
+    /// The material of the object the photon is in (its interior fades the photon).
+    inside: Option<u32>,
+}
+
+/// The material's index of refraction, 1 where it is unusable.
+fn sanitised_ior(material: &Material) -> f64 {
+    let ior = material.interior.ior;
+    if ior > 0.0 && ior.is_finite() {
+        ior
+    } else {
+        1.0
+    }
+}
+
+/// Two pseudo-random numbers in [-0.5, 0.5) from `key` (splitmix64).
+fn jitter_pair(key: u64) -> (f64, f64) {
+    let mut state = key ^ JITTER_SALT;
+    let mut next = || {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    (next(), next())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn photon_at(x: f64, y: f64, z: f64) -> Photon {
+        Photon {
+            position: DVec3::new(x, y, z),
+            direction: DVec3::NEG_Y,
+            power: DVec3::ONE,
+        }
+    }
+
+    #[test]
+    fn tree_finds_exactly_the_photons_in_range() {
+        let mut photons: Vec<Photon> = (0..500)
+            .map(|i| {
+                let (a, b) = jitter_pair(i);
+                photon_at(a * 10.0, 0.0, b * 10.0)
+            })
+            .collect();
+        let all = photons.clone();
+        let axes = build_tree(&mut photons);
+        let map = PhotonMap {
+            photons,
+            axes,
+            radius: 1.0,
+            gather_min: 1,
+            gather_max: 10_000,
+            expand_increase: 0.2,
+            expand_min: 40,
+            shot: 0,
+        };
+        let centre = DVec3::new(0.5, 0.0, -1.0);
+        let mut found = Vec::new();
+        let (count, reach) = map.nearest(centre, 1.5, &mut found);
+        let expected = all
+            .iter()
+            .filter(|p| p.position.distance(centre) <= 1.5)
+            .count();
+        assert_eq!(count, expected);
+        assert_eq!(reach, 1.5);
+    }
+
+    #[test]
+    fn uniform_photons_give_their_density() {
+        // One photon of power 0.01 per 0.1 × 0.1 square lit straight on: irradiance 1.
+        let mut photons = Vec::new();
+        for i in -100..=100 {
+            for j in -100..=100 {
+                let mut p = photon_at(f64::from(i) * 0.1, 0.0, f64::from(j) * 0.1);
+                p.power = DVec3::splat(0.01);
+                photons.push(p);
+            }
+        }
+        let axes = build_tree(&mut photons);
+        let map = PhotonMap {
+            photons,
+            axes,
+            radius: 0.5,
+            gather_min: 20,
+            gather_max: 100,
+            expand_increase: 0.2,
+            expand_min: 40,
+            shot: 0,
+        };
+        let finish = Finish::default();
+        let light = map.irradiance(DVec3::ZERO, DVec3::Y, &finish, DVec3::ONE);
+        assert!((light.x / finish.diffuse - 1.0).abs() < 0.1, "{light}");
+    }
+
+    #[test]
+    fn jitter_stays_in_range() {
+        for key in 0..1000 {
+            let (a, b) = jitter_pair(key);
+            assert!((-0.5..0.5).contains(&a) && (-0.5..0.5).contains(&b));
+        }
+    }
+}

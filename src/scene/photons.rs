@@ -1,0 +1,176 @@
+//! Photon mapping settings: the `photons { .. }` blocks of `global_settings`, objects and
+//! light sources.
+//!
+//! In: values parsed by `eval::photons`. Out: [`PhotonSettings`], [`ObjectPhotons`] and
+//! [`LightPhotons`], read by `geometry` (material flags) and `render::photons`. Holds: the
+//! defaults are POV-Ray 3.7's as it renders them (lights shoot reflected and refracted
+//! photons unless told otherwise, although the manual's table says off).
+
+/// How many photons are shot: by spacing or by a total count.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PhotonDensity {
+    /// `spacing S`: the average distance between photons arriving at a target.
+    Spacing(f64),
+    /// `count N`: about this many photons in all.
+    Count(u32),
+}
+
+/// The global `photons { }` block (POV-Ray 3.7 defaults).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PhotonSettings {
+    /// `spacing` or `count`.
+    pub density: PhotonDensity,
+    /// Fewest photons a gather should use (`gather MIN, MAX`, default 20).
+    pub gather_min: u32,
+    /// Most photons a gather uses (default 100).
+    pub gather_max: u32,
+    /// `media MAX_STEPS, FACTOR`: accepted; media photons are not deposited.
+    pub media_steps: u32,
+    /// Jitter of shooting directions, as a fraction of the angular spacing (default 0.4).
+    pub jitter: f64,
+    /// Bounces of a photon (`max_trace_level`; the scene's when `None`).
+    pub max_trace_level: Option<u32>,
+    /// Photons weaker than this are dropped (`adc_bailout`; the scene's when `None`).
+    pub adc_bailout: Option<f64>,
+    /// `autostop F`: a fraction of the target's cone after which a ring of photons that
+    /// all miss ends the shooting at that target (default 0: after the first hit).
+    pub autostop: f64,
+    /// `expand_thresholds INCREASE, MIN` (defaults 0.2 and 40).
+    pub expand_increase: f64,
+    /// See [`PhotonSettings::expand_increase`].
+    pub expand_min: u32,
+    /// `radius` gather radius for surface photons (0: estimated).
+    pub radius: f64,
+    /// `radius` second value: multiplies the gather radius (default 1).
+    pub radius_multiplier: f64,
+}
+
+impl Default for PhotonSettings {
+    fn default() -> Self {
+        PhotonSettings {
+            density: PhotonDensity::Count(20_000),
+            gather_min: 20,
+            gather_max: 100,
+            media_steps: 0,
+            jitter: 0.4,
+            max_trace_level: None,
+            adc_bailout: None,
+            autostop: 0.0,
+            expand_increase: 0.2,
+            expand_min: 40,
+            radius: 0.0,
+            radius_multiplier: 1.0,
+        }
+    }
+}
+
+/// An object's `photons { }` block, packed into eight bytes (scenes hold many objects).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ObjectPhotons {
+    /// `target [MULTIPLIER]`: the multiplier's bits (photons are shot at the object, spaced
+    /// by the global spacing times it); 0 when the object is no target.
+    target_bits: u32,
+    /// The on/off items, one bit each (see the `*_BIT` constants).
+    flags: u8,
+}
+
+impl ObjectPhotons {
+    const REFRACTION_BIT: u8 = 1;
+    const REFLECTION_BIT: u8 = 2;
+    const COLLECT_BIT: u8 = 4;
+    const PASS_THROUGH_BIT: u8 = 8;
+
+    /// The spacing multiplier when photons are shot at the object.
+    pub fn target(&self) -> Option<f64> {
+        (self.target_bits != 0).then(|| f64::from(f32::from_bits(self.target_bits)))
+    }
+
+    /// Makes the object a target with this spacing multiplier (`None`: no target).
+    /// Multipliers that are not positive and finite count as 1.
+    pub fn set_target(&mut self, multiplier: Option<f64>) {
+        self.target_bits = match multiplier {
+            None => 0,
+            Some(m) if m > 0.0 && m.is_finite() => (m as f32).max(f32::MIN_POSITIVE).to_bits(),
+            Some(_) => 1f32.to_bits(),
+        };
+    }
+
+    /// `refraction on`: photons pass into the object, bent.
+    pub fn refraction(&self) -> bool {
+        self.flags & Self::REFRACTION_BIT != 0
+    }
+
+    /// `reflection on`: photons bounce off the object.
+    pub fn reflection(&self) -> bool {
+        self.flags & Self::REFLECTION_BIT != 0
+    }
+
+    /// `collect` (default on): photons landing on the object are stored and shown.
+    pub fn collect(&self) -> bool {
+        self.flags & Self::COLLECT_BIT != 0
+    }
+
+    /// `pass_through`: photons cross the object unchanged on their way to a target (set
+    /// by `no_shadow` too).
+    pub fn pass_through(&self) -> bool {
+        self.flags & Self::PASS_THROUGH_BIT != 0
+    }
+
+    /// Sets `refraction`.
+    pub fn set_refraction(&mut self, on: bool) {
+        self.set(Self::REFRACTION_BIT, on);
+    }
+
+    /// Sets `reflection`.
+    pub fn set_reflection(&mut self, on: bool) {
+        self.set(Self::REFLECTION_BIT, on);
+    }
+
+    /// Sets `collect`.
+    pub fn set_collect(&mut self, on: bool) {
+        self.set(Self::COLLECT_BIT, on);
+    }
+
+    /// Sets `pass_through`.
+    pub fn set_pass_through(&mut self, on: bool) {
+        self.set(Self::PASS_THROUGH_BIT, on);
+    }
+
+    fn set(&mut self, bit: u8, on: bool) {
+        if on {
+            self.flags |= bit;
+        } else {
+            self.flags &= !bit;
+        }
+    }
+}
+
+impl Default for ObjectPhotons {
+    fn default() -> Self {
+        ObjectPhotons {
+            target_bits: 0,
+            flags: Self::COLLECT_BIT,
+        }
+    }
+}
+
+/// A light source's `photons { }` block.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LightPhotons {
+    /// The light's photons refract (default on).
+    pub refraction: bool,
+    /// The light's photons reflect (default on).
+    pub reflection: bool,
+    /// `area_light`: accepted; photons leave from the light's centre.
+    pub area_light: bool,
+}
+
+impl Default for LightPhotons {
+    fn default() -> Self {
+        LightPhotons {
+            refraction: true,
+            reflection: true,
+            area_light: false,
+        }
+    }
+}
