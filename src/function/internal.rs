@@ -420,6 +420,8 @@ impl Internal {
     /// The value for the arguments `x, y, z, P0, ..` (missing ones read as 0).
     pub fn eval(self, arguments: &[f64]) -> f64 {
         let argument = |index: usize| arguments.get(index).copied().unwrap_or(0.0);
+        // Five consecutive arguments from `first` on.
+        let run = |first: usize| -> [f64; 5] { std::array::from_fn(|i| argument(first + i)) };
         let (x, y, z) = (argument(0), argument(1), argument(2));
         let point = DVec3::new(x, y, z);
         let shape_parameters = arguments.get(4..).unwrap_or(&[]);
@@ -516,37 +518,9 @@ impl Internal {
                     * (z_frequency * z).cos()
                     * (-rate * (x * x + z * z)).exp()
             }
-            Internal::Mesh1 => mesh1(
-                (x, y, z),
-                [
-                    argument(3),
-                    argument(4),
-                    argument(5),
-                    argument(6),
-                    argument(7),
-                ],
-            ),
-            Internal::Polytubes => polytubes(
-                (x, y, z),
-                argument(3),
-                [
-                    argument(4),
-                    argument(5),
-                    argument(6),
-                    argument(7),
-                    argument(8),
-                ],
-            ),
-            Internal::Spikes => spikes(
-                (x, y, z),
-                [
-                    argument(3),
-                    argument(4),
-                    argument(5),
-                    argument(6),
-                    argument(7),
-                ],
-            ),
+            Internal::Mesh1 => mesh1((x, y, z), run(3)),
+            Internal::Polytubes => polytubes((x, y, z), argument(3), run(4)),
+            Internal::Spikes => spikes((x, y, z), run(3)),
             Internal::Spiral => spiral(
                 (x, y, z),
                 argument(3),
@@ -605,13 +579,7 @@ impl Internal {
                 ],
             ),
             Internal::Poly4 => {
-                let coefficients = [
-                    argument(3),
-                    argument(4),
-                    argument(5),
-                    argument(6),
-                    argument(7),
-                ];
+                let coefficients = run(3);
                 x.hypot(z) - quartic(y, coefficients)
             }
             Internal::Ellipsoid => {
