@@ -187,6 +187,12 @@ fn potential_levels(bytes: &[u8]) -> Result<Raster, String> {
     if (frame_width, frame_height) != (screen_width, screen_height) {
         return Err("the image does not cover the whole screen".to_string());
     }
+    // Two stored pixels make one height, so twice the usual limit.
+    if u64::from(frame_width) * u64::from(frame_height) > 2 * MAX_PIXELS {
+        return Err(format!(
+            "a {frame_width}x{frame_height} potential file is larger than durer reads"
+        ));
+    }
     let mut buffer = vec![0; decoder.buffer_size()];
     if buffer.len() != frame_width as usize * frame_height as usize {
         return Err("the image is not one palette index per pixel".to_string());
@@ -276,6 +282,19 @@ fn png_palette_indices(bytes: &[u8], width: u32, height: u32) -> Option<Vec<u8>>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_oversized_potential_file_is_refused_before_decoding() {
+        // A GIF header for a 65535x65535 image (2-colour palette) and its image descriptor,
+        // with no pixel data: refused from the sizes alone.
+        let mut bytes = b"GIF89a".to_vec();
+        bytes.extend_from_slice(&[0xff, 0xff, 0xff, 0xff, 0x80, 0, 0]);
+        bytes.extend_from_slice(&[0, 0, 0, 255, 255, 255]);
+        bytes.extend_from_slice(&[0x2c, 0, 0, 0, 0, 0xff, 0xff, 0xff, 0xff, 0]);
+        bytes.extend_from_slice(&[2, 0, 0x3b]);
+        let error = potential_levels(&bytes).err().unwrap();
+        assert!(error.contains("larger than durer reads"), "{error}");
+    }
 
     #[test]
     fn reads_a_png_and_reports_missing_files() {

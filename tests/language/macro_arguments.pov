@@ -23,3 +23,9 @@ Check((vlength(Vectors(<1, 2>, 2 - 2 <3, 4>) - <301, 402>) = 0), "a difference t
 // Inside functions `<` still compares.
 #declare Negative = function(x) { max(x < 0, 0.5) }
 Check((Negative(-3) = 1 & Negative(3) = 0.5), "`<` compares in a function's call")
+// Deeply nested calls parse in linear time (each argument is read once: a grammar that read
+// an argument twice took 2^depth steps, minutes at this depth).
+#declare Deep = max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(1, 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0);
+Check(Deep = 1, "26 nested calls")
+#if (2 < 3) #else #error "failed: `<` compares in an #if" #end
+Check(((1 < 2) + (2 <3)) = 2, "`<` before a number compares inside parentheses")
