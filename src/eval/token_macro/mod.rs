@@ -138,6 +138,8 @@ pub(crate) struct TextMacroCache {
     pieces: HashMap<(FileId, usize, Rule), Parsed>,
     /// The items parsed from each emitted text (with the map leading it back to its source).
     expansions: HashMap<(String, OffsetMap), Rc<[Item]>>,
+    /// Bytes of emitted text held in `expansions`.
+    expansion_bytes: usize,
     /// Files included by text macros (read, never parsed whole), by path.
     included: HashMap<PathBuf, (FileId, Arc<str>)>,
 }
@@ -146,8 +148,9 @@ pub(crate) struct TextMacroCache {
 /// expansions, meshes written out by loops, rarely repeat).
 const CACHED_EXPANSION_MAX_LENGTH: usize = 64 * 1024;
 
-/// How many expansions are kept at most; later ones are parsed every time.
-const CACHED_EXPANSIONS_MAX: usize = 4096;
+/// How much emitted text (in bytes) the kept expansions may hold in all; later ones are
+/// parsed every time.
+const CACHED_EXPANSIONS_MAX_BYTES: usize = 8 << 20;
 
 /// A piece parsed from a body and its length, or why it does not parse.
 type Parsed = Result<(Rc<Prefix>, usize), Box<Diagnostic>>;
@@ -271,9 +274,13 @@ impl Evaluator {
             d.message = format!("in the text this macro produced: {}", d.message);
             d
         })?;
-        let expansions = &mut self.text_macro_cache.expansions;
-        if key.0.len() <= CACHED_EXPANSION_MAX_LENGTH && expansions.len() < CACHED_EXPANSIONS_MAX {
-            expansions.insert(key, items.clone());
+        let cache = &mut self.text_macro_cache;
+        let length = key.0.len();
+        if length <= CACHED_EXPANSION_MAX_LENGTH
+            && cache.expansion_bytes + length <= CACHED_EXPANSIONS_MAX_BYTES
+        {
+            cache.expansion_bytes += length;
+            cache.expansions.insert(key, items.clone());
         }
         Ok(items)
     }
