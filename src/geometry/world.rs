@@ -175,6 +175,28 @@ impl World {
             })
     }
 
+    /// The materials of the objects `point` is inside (the camera's containers, whose
+    /// interiors and media its rays start in): one per object, unbounded objects first. A
+    /// CSG object contributes the material of its first leaf holding the point, as a ray
+    /// leaving the object through that leaf's surface would carry it.
+    pub fn materials_around(&self, point: DVec3) -> Vec<u32> {
+        self.unbounded
+            .iter()
+            .chain(&self.primitives)
+            .filter_map(|primitive| match primitive {
+                Primitive::Leaf(leaf) => leaf.inside(point).then(|| leaf.material()),
+                Primitive::Mesh(instance) => instance.inside(point).then(|| instance.material()),
+                Primitive::Csg(tree) => tree.inside(point).then(|| {
+                    tree.leaves
+                        .iter()
+                        .find(|leaf| leaf.inside(point))
+                        .or(tree.leaves.first())
+                        .map_or(0, |leaf| leaf.material())
+                }),
+            })
+            .collect()
+    }
+
     /// Nearest hit with `min_distance < distance < max_distance`.
     pub fn first_hit(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<SurfaceHit> {
         self.search(ray, min_distance, max_distance, false, &|_| false)

@@ -36,7 +36,7 @@ use super::antialias::mix64;
 use super::lights::{incoming, light_filter, SceneLight};
 use super::pattern::pigment_colour;
 use crate::geometry::World;
-use crate::scene::{Media, ScatteringKind};
+use crate::scene::{LightGroup, Media, ScatteringKind};
 use glam::DVec3;
 
 /// How far a ray that hits nothing runs through atmospheric media (measured).
@@ -45,13 +45,18 @@ pub const UNBOUNDED_MEDIA_LENGTH: f64 = 2e10;
 /// At most this many media blocks act together along one stretch of a ray.
 pub const MAX_ACTIVE_MEDIA: usize = 16;
 
+/// Distinct (phase function, light group) pairs lit separately at one media sample.
+const SCATTERING_CLASSES: usize = 8;
+
 /// Samples taken along a shadow ray to dim a light through media.
 const ATTENUATION_SAMPLES: u32 = 8;
 
-/// The media acting along one stretch of a ray (no allocation: a fixed array).
+/// The media acting along one stretch of a ray, each with the light group of the object
+/// holding it (which lights light it; `None` for atmospheric media and objects outside
+/// every group). No allocation: a fixed array.
 #[derive(Clone, Copy)]
 pub struct ActiveMedia<'a> {
-    items: [Option<&'a Media>; MAX_ACTIVE_MEDIA],
+    items: [Option<(&'a Media, Option<LightGroup>)>; MAX_ACTIVE_MEDIA],
     len: usize,
 }
 
@@ -62,11 +67,12 @@ impl<'a> ActiveMedia<'a> {
         len: 0,
     };
 
-    /// Adds `media` (beyond [`MAX_ACTIVE_MEDIA`] the rest are left out).
-    pub fn extend(&mut self, media: &'a [Media]) {
+    /// Adds `media`, lit by the lights of `group` (beyond [`MAX_ACTIVE_MEDIA`] the rest
+    /// are left out).
+    pub fn extend(&mut self, media: &'a [Media], group: Option<LightGroup>) {
         for item in media {
             if self.len < MAX_ACTIVE_MEDIA {
-                self.items[self.len] = Some(item);
+                self.items[self.len] = Some((item, group));
                 self.len += 1;
             }
         }
@@ -77,7 +83,13 @@ impl<'a> ActiveMedia<'a> {
         self.len == 0
     }
 
+    /// The media without their light groups.
     fn iter(&self) -> impl Iterator<Item = &'a Media> + '_ {
+        self.grouped().map(|(media, _)| media)
+    }
+
+    /// The media with their light groups.
+    fn grouped(&self) -> impl Iterator<Item = (&'a Media, Option<LightGroup>)> + '_ {
         self.items[..self.len].iter().flatten().copied()
     }
 }
@@ -334,10 +346,13 @@ impl<'a> MediaShader<'a> {
     fn sample(&self, active: &ActiveMedia, stretch: Stretch, t: f64) -> Sample {
         let point = stretch.origin + stretch.direction * t;
         let mut total = Sample::default();
-        let mut scattering_total = [DVec3::ZERO; 5];
-        let mut scattering_kinds: [Option<ScatteringKind>; 5] = [None; 5];
-        let mut kinds = 0;
-        for media in active.iter() {
+        // Scattering summed per phase function and light group: media sharing both share
+        // one pass over the lights.
+        let mut scattering_total = [DVec3::ZERO; SCATTERING_CLASSES];
+        let mut scattering_classes: [Option<(ScatteringKind, Option<LightGroup>)>;
+            SCATTERING_CLASSES] = [None; SCATTERING_CLASSES];
+        let mut classes = 0;
+        for (media, group) in active.grouped() {
             let density = density_at(media, point);
             if density == DVec3::ZERO {
                 continue;
@@ -347,35 +362,44 @@ impl<'a> MediaShader<'a> {
             if let Some(scattering) = &media.scattering {
                 let amount = scattering.colour * density;
                 total.extinction += amount * scattering.extinction;
-                // Media with the same phase function share one pass over the lights.
-                match scattering_kinds[..kinds]
+                let class = Some((scattering.kind, group));
+                match scattering_classes[..classes]
                     .iter()
-                    .position(|k| *k == Some(scattering.kind))
+                    .position(|known| *known == class)
                 {
                     Some(at) => scattering_total[at] += amount,
-                    None if kinds < scattering_kinds.len() => {
-                        scattering_kinds[kinds] = Some(scattering.kind);
-                        scattering_total[kinds] = amount;
-                        kinds += 1;
+                    None if classes < SCATTERING_CLASSES => {
+                        scattering_classes[classes] = class;
+                        scattering_total[classes] = amount;
+                        classes += 1;
                     }
                     None => {}
                 }
             }
         }
-        for (kind, amount) in scattering_kinds[..kinds].iter().zip(&scattering_total) {
-            if let Some(kind) = kind {
-                total.light += *amount * self.scattered(*kind, point, stretch.direction);
+        for (class, amount) in scattering_classes[..classes].iter().zip(&scattering_total) {
+            if let Some((kind, group)) = class {
+                total.light += *amount * self.scattered(*kind, *group, point, stretch.direction);
             }
         }
         total
     }
 
-    /// Light from every interacting light source scattered at `point` towards the viewer
-    /// looking along `direction`, per unit of scattering.
-    fn scattered(&self, kind: ScatteringKind, point: DVec3, direction: DVec3) -> DVec3 {
+    /// Light from every interacting light source of media in light group `group` scattered
+    /// at `point` towards the viewer looking along `direction`, per unit of scattering.
+    /// Light groups rule media as they rule surfaces (measured: a group's light lights the
+    /// media inside the group's objects only, the scene's lights reach them only with
+    /// `global_lights on`).
+    fn scattered(
+        &self,
+        kind: ScatteringKind,
+        group: Option<LightGroup>,
+        point: DVec3,
+        direction: DVec3,
+    ) -> DVec3 {
         let mut total = DVec3::ZERO;
         for light in self.lights {
-            if !light.source.media_interaction {
+            if !light.source.media_interaction || !LightGroup::lights(light.source.group, group) {
                 continue;
             }
             let Some(arriving) = incoming(&light.source, point) else {
@@ -523,7 +547,7 @@ mod tests {
         let world = World::build_from_objects(Vec::new());
         let shader = MediaShader::new(&world, &[]);
         let mut active = ActiveMedia::NONE;
-        active.extend(media);
+        active.extend(media, None);
         shader.along(
             &active,
             Stretch {

@@ -137,6 +137,25 @@ impl Media {
     }
 }
 
+/// The media of a ray starting at `point`: inside every object around it, outermost first
+/// (measured: a camera inside a hollow sphere of media sees the media from its first step).
+fn media_around(world: &World, point: DVec3) -> Media {
+    let start = Media {
+        in_solid: world.inside_solid(point),
+        ..Media::OUTSIDE
+    };
+    world
+        .materials_around(point)
+        .into_iter()
+        .fold(start, |media, id| {
+            let ior = world
+                .materials
+                .get(id as usize)
+                .map_or(1.0, |material| sanitise_ior(material.interior.ior));
+            media.entered(id, ior)
+        })
+}
+
 /// Traces rays through one scene; shared read-only by all threads.
 pub struct Tracer<'a> {
     scene: &'a Scene,
@@ -154,8 +173,10 @@ pub struct Tracer<'a> {
     camera_reach: f64,
     /// The scene has media (atmospheric or in some interior).
     any_media: bool,
-    /// The camera is inside a non-hollow object (so camera rays see no fog or media).
-    camera_in_solid: bool,
+    /// What camera rays start in: the objects around the camera (their media fill the
+    /// rays from the start, their index of refraction bends them), flagged when one of
+    /// them is not hollow (camera rays then see no fog or media).
+    camera_media: Media,
     /// Radiosity's `media on`: gathering rays see media.
     gathering_sees_media: bool,
     /// Some object is `no_radiosity` (radiosity's gathering rays must skip it).
@@ -208,7 +229,7 @@ impl<'a> Tracer<'a> {
                 .map_or(f64::INFINITY, |m| m.reach()),
             any_media: !scene.atmosphere.media.is_empty()
                 || world.materials.iter().any(|m| !m.interior.media.is_empty()),
-            camera_in_solid: world.inside_solid(scene.camera.location),
+            camera_media: media_around(world, scene.camera.location),
             gathering_sees_media: settings.radiosity.as_ref().is_some_and(|r| r.use_media),
             any_no_radiosity: world.materials.iter().any(|m| m.no_radiosity),
             radiosity: settings
@@ -256,11 +277,13 @@ impl<'a> Tracer<'a> {
 
     /// The colour seen along a camera ray.
     pub fn trace_camera_ray(&self, ray: &Ray) -> DVec3 {
-        let start = Media {
-            in_solid: self.camera_in_solid,
-            ..Media::OUTSIDE
-        };
-        let colour = self.trace(*ray, 1, RayWeight::CAMERA, &start, RayKind::Camera);
+        let colour = self.trace(
+            *ray,
+            1,
+            RayWeight::CAMERA,
+            &self.camera_media,
+            RayKind::Camera,
+        );
         if colour.is_finite() {
             colour
         } else {
@@ -384,10 +407,10 @@ impl<'a> Tracer<'a> {
         let mut active = ActiveMedia::NONE;
         for id in inside.materials_innermost_first() {
             if let Some(material) = self.world.materials.get(id as usize) {
-                active.extend(&material.interior.media);
+                active.extend(&material.interior.media, material.light_group);
             }
         }
-        active.extend(&self.scene.atmosphere.media);
+        active.extend(&self.scene.atmosphere.media, None);
         let shader = MediaShader::new(self.world, &self.lights);
         let stretch = Stretch {
             origin: ray.origin,
