@@ -11,10 +11,11 @@
 //! a per-thread buffer).
 //!
 //! Method (Ward's irradiance cache, as POV-Ray 3.7's manual describes it):
-//! - a sample gathers `count` rays over the hemisphere around the normal, drawn from a
-//!   fixed cosine-weighted spherical Fibonacci set of `direction_pool` directions (round
-//!   robin when the pool is larger), and stores the mean of the light they see, with the
-//!   harmonic mean distance of what they hit;
+//! - a sample gathers `count` rays over the hemisphere around the normal (halved for each
+//!   deeper bounce, as POV-Ray's statistics show), drawn from a fixed cosine-weighted
+//!   spherical Fibonacci set of as many directions (or round robin from the larger
+//!   `direction_pool`), and stores the mean of the light they see, with the harmonic mean
+//!   distance of what they hit;
 //! - its reuse radius is `error_bound` times that distance, clamped between
 //!   `minimum_reuse` and `maximum_reuse` times the distance from the eye;
 //! - a point reuses the samples whose error `distance / radius + sqrt(1 − N·Nᵢ)` is below 1
@@ -107,8 +108,9 @@ pub struct Gathered {
 /// The radiosity state of one render: settings, direction set and caches.
 pub struct Radiosity {
     settings: RadiositySettings,
-    /// Cosine-weighted unit directions around +z.
-    directions: Vec<DVec3>,
+    /// Cosine-weighted unit directions around +z, one set per bounce (deeper bounces
+    /// shoot fewer rays).
+    directions: Vec<Vec<DVec3>>,
     /// One cache per bounce.
     caches: Vec<RwLock<Cache>>,
     /// The pretrace is running: new samples are stored.
@@ -121,30 +123,10 @@ pub struct Radiosity {
 impl Radiosity {
     /// The radiosity state for these settings, seen from `eye`.
     pub fn new(settings: &RadiositySettings, eye: DVec3) -> Radiosity {
-        let pool = settings.direction_pool.max(settings.count).max(1);
-        let directions = (0..pool)
-            .map(|index| {
-                // A pool larger than `count` is used a window at a time, so it follows the
-                // Halton sequence, every window of which is spread over the hemisphere; a
-                // pool used whole is the more even spherical Fibonacci set.
-                let (height, turn) = if pool > settings.count {
-                    (radical_inverse(index + 1, 2), radical_inverse(index + 1, 3))
-                } else {
-                    (
-                        (f64::from(index) + 0.5) / f64::from(pool),
-                        (f64::from(index) * GOLDEN_FRACTION).fract(),
-                    )
-                };
-                let radius = height.sqrt();
-                let azimuth = std::f64::consts::TAU * turn;
-                DVec3::new(
-                    radius * azimuth.cos(),
-                    radius * azimuth.sin(),
-                    (1.0 - height).max(0.0).sqrt(),
-                )
-            })
-            .collect();
         let levels = settings.recursion_limit.clamp(1, 20) as usize;
+        let directions = (0..levels)
+            .map(|depth| direction_set(settings, rays_at_depth(settings.count, depth)))
+            .collect();
         Radiosity {
             settings: settings.clone(),
             directions,
@@ -227,13 +209,15 @@ impl Radiosity {
         let irradiance = if reuse {
             sum / weight
         } else {
+            let directions = &self.directions[depth as usize];
+            let rays = rays_at_depth(self.settings.count, depth as usize);
             let start = if filling {
-                self.next_direction
-                    .fetch_add(self.settings.count, Ordering::Relaxed)
+                self.next_direction.fetch_add(rays, Ordering::Relaxed)
             } else {
                 0
             };
-            let (irradiance, harmonic_distance) = self.gather(normal, start, gather);
+            let (irradiance, harmonic_distance) =
+                gather_over(directions, rays, normal, start, gather);
             let eye_distance = (point - self.eye).length();
             let radius = (self.settings.error_bound * harmonic_distance).clamp(
                 self.settings.minimum_reuse * eye_distance,
@@ -266,39 +250,6 @@ impl Radiosity {
         self.adjusted(irradiance)
     }
 
-    /// Mean light over `count` directions of the hemisphere around `normal`, starting at
-    /// `start` in the pool, and the harmonic mean distance of the surfaces hit.
-    fn gather(
-        &self,
-        normal: DVec3,
-        start: u32,
-        gather: &dyn Fn(DVec3) -> Gathered,
-    ) -> (DVec3, f64) {
-        let (tangent, bitangent) = normal.any_orthonormal_pair();
-        let pool = self.directions.len();
-        let count = self.settings.count.max(1);
-        let mut total = DVec3::ZERO;
-        let mut inverse_distances = 0.0;
-        for offset in 0..count {
-            let local = self.directions[(start as usize + offset as usize) % pool];
-            let direction = tangent * local.x + bitangent * local.y + normal * local.z;
-            let seen = gather(direction);
-            if seen.colour.is_finite() {
-                total += seen.colour;
-            }
-            if seen.distance > 0.0 {
-                inverse_distances += 1.0 / seen.distance;
-            }
-        }
-        let count = f64::from(count);
-        let harmonic = if inverse_distances > 0.0 {
-            count / inverse_distances
-        } else {
-            f64::INFINITY
-        };
-        (total / count, harmonic)
-    }
-
     /// `brightness`, `gray_threshold` and `max_sample` applied to gathered light.
     fn adjusted(&self, irradiance: DVec3) -> DVec3 {
         let mut light = irradiance;
@@ -314,6 +265,85 @@ impl Radiosity {
         }
         light * self.settings.brightness
     }
+}
+
+/// Rays gathering one sample at bounce `depth`: POV-Ray halves `count` for each bounce
+/// (measured from its statistics: `count 200` shoots 200, 100 and 50 rays at depths 0-2,
+/// `count 35` 35, 17 and 8), at least one.
+fn rays_at_depth(count: u32, depth: usize) -> u32 {
+    count
+        .max(1)
+        .checked_shr(u32::try_from(depth).unwrap_or(u32::MAX))
+        .unwrap_or(0)
+        .max(1)
+}
+
+/// The cosine-weighted unit directions around +z that samples gathering `rays` rays draw
+/// from: a pool larger than `count` (`count N, POOL`) is used a window of `rays` at a time,
+/// so it follows the Halton sequence, every window of which is spread over the hemisphere;
+/// otherwise the set is used whole and is the more even spherical Fibonacci set of `rays`.
+fn direction_set(settings: &RadiositySettings, rays: u32) -> Vec<DVec3> {
+    let windowed = settings.direction_pool > settings.count;
+    let pool = if windowed {
+        settings.direction_pool
+    } else {
+        rays.max(1)
+    };
+    (0..pool)
+        .map(|index| {
+            let (height, turn) = if windowed {
+                (radical_inverse(index + 1, 2), radical_inverse(index + 1, 3))
+            } else {
+                (
+                    (f64::from(index) + 0.5) / f64::from(pool),
+                    (f64::from(index) * GOLDEN_FRACTION).fract(),
+                )
+            };
+            let radius = height.sqrt();
+            let azimuth = std::f64::consts::TAU * turn;
+            DVec3::new(
+                radius * azimuth.cos(),
+                radius * azimuth.sin(),
+                (1.0 - height).max(0.0).sqrt(),
+            )
+        })
+        .collect()
+}
+
+/// Mean light over `rays` of `directions` (cosine-weighted, around +z) turned to the
+/// hemisphere around `normal`, starting at `start` in the set and wrapping around, and the
+/// harmonic mean distance of the surfaces hit.
+fn gather_over(
+    directions: &[DVec3],
+    rays: u32,
+    normal: DVec3,
+    start: u32,
+    gather: &dyn Fn(DVec3) -> Gathered,
+) -> (DVec3, f64) {
+    let (tangent, bitangent) = normal.any_orthonormal_pair();
+    let pool = directions.len().max(1);
+    let mut total = DVec3::ZERO;
+    let mut inverse_distances = 0.0;
+    for offset in 0..rays {
+        let Some(local) = directions.get((start as usize + offset as usize) % pool) else {
+            continue;
+        };
+        let direction = tangent * local.x + bitangent * local.y + normal * local.z;
+        let seen = gather(direction);
+        if seen.colour.is_finite() {
+            total += seen.colour;
+        }
+        if seen.distance > 0.0 {
+            inverse_distances += 1.0 / seen.distance;
+        }
+    }
+    let rays = f64::from(rays.max(1));
+    let harmonic = if inverse_distances > 0.0 {
+        rays / inverse_distances
+    } else {
+        f64::INFINITY
+    };
+    (total / rays, harmonic)
 }
 
 /// `colour(column, row)` for every pixel of a `width` × `height` image, storing the samples
@@ -486,12 +516,12 @@ mod tests {
     #[test]
     fn directions_are_unit_and_in_the_upper_hemisphere() {
         let radiosity = Radiosity::new(&RadiositySettings::default(), DVec3::ZERO);
-        for direction in &radiosity.directions {
+        for direction in &radiosity.directions[0] {
             assert!((direction.length() - 1.0).abs() < 1e-12);
             assert!(direction.z > 0.0);
         }
         // Cosine weighting: the mean height of the directions is 2/3.
-        let mean = radiosity.directions.iter().map(|d| d.z).sum::<f64>() / 35.0;
+        let mean = radiosity.directions[0].iter().map(|d| d.z).sum::<f64>() / 35.0;
         assert!((mean - 2.0 / 3.0).abs() < 0.01, "{mean}");
     }
 
@@ -528,6 +558,37 @@ mod tests {
         let unused = |_: DVec3| -> Gathered { panic!("the stored sample should be reused") };
         let light = radiosity.irradiance(DVec3::new(0.02, 0.0, 0.0), DVec3::Y, 0, &unused);
         assert!((light - DVec3::ONE).length() < 1e-12);
+    }
+
+    #[test]
+    fn deeper_bounces_gather_half_as_many_rays_each() {
+        let settings = RadiositySettings {
+            count: 35,
+            direction_pool: 35,
+            recursion_limit: 3,
+            ..RadiositySettings::default()
+        };
+        let radiosity = Radiosity::new(&settings, DVec3::new(0.0, 0.0, -10.0));
+        radiosity.set_filling(true);
+        for (depth, expected) in [(0, 35), (1, 17), (2, 8)] {
+            let rays = AtomicU32::new(0);
+            let counting_sky = |direction: DVec3| {
+                rays.fetch_add(1, Ordering::Relaxed);
+                sky(direction)
+            };
+            // Far apart, so that no sample is reused.
+            let point = DVec3::new(1000.0 * f64::from(depth), 0.0, 0.0);
+            let light = radiosity.irradiance(point, DVec3::Y, depth, &counting_sky);
+            assert!((light - DVec3::ONE).length() < 1e-12);
+            assert_eq!(rays.load(Ordering::Relaxed), expected, "depth {depth}");
+        }
+        // Each bounce's set is cosine-weighted on its own: mean height near 2/3.
+        for set in &radiosity.directions {
+            let mean = set.iter().map(|d| d.z).sum::<f64>() / set.len() as f64;
+            assert!((mean - 2.0 / 3.0).abs() < 0.02, "{mean}");
+        }
+        assert_eq!(rays_at_depth(1, 5), 1);
+        assert_eq!(rays_at_depth(200, 40), 1);
     }
 
     #[test]
