@@ -760,9 +760,12 @@ pub(super) fn grey_ramp() -> Vec<(f64, Colour)> {
     vec![(0.0, Colour::BLACK), (1.0, Colour::WHITE)]
 }
 
-/// Applies a texture's `uv_mapping` to the pigments of the texture and of the textures it is
-/// made of (normals keep following the 3D point).
+/// Applies a texture's `uv_mapping` to the pigments and normals of the texture and of the
+/// textures it is made of.
 fn map_texture_by_uv(texture: &mut Texture) {
+    if let Some(normal) = &mut texture.normal {
+        normal.uv_mapped = true;
+    }
     if !matches!(texture.pigment, Pigment::Solid(_) | Pigment::UvMapped(_)) {
         let pigment = std::mem::replace(&mut texture.pigment, Pigment::Solid(Colour::BLACK));
         texture.pigment = Pigment::UvMapped(Box::new(pigment));
