@@ -118,7 +118,7 @@ impl Evaluator {
                         "tiles" => {
                             let blocks = self.eval_tiles(&mut body, block.head_span)?;
                             pattern = Some((
-                                Pattern::new(crate::pattern::PatternKind::Checker),
+                                self.new_pattern(crate::pattern::PatternKind::Checker),
                                 Some(BlendMap::Blocks(blocks)),
                                 block.head_span,
                             ));
@@ -467,9 +467,9 @@ impl Evaluator {
                     Value::Function(literal) => {
                         let function = self.compile_function(&literal)?;
                         pigment = Pigment::Pattern {
-                            pattern: Box::new(Pattern::new(crate::pattern::PatternKind::Function(
-                                function,
-                            ))),
+                            pattern: Box::new(
+                                self.new_pattern(crate::pattern::PatternKind::Function(function)),
+                            ),
                             map: PigmentMap::Colours(grey_ramp()),
                             transform: Transform::IDENTITY,
                         };
