@@ -1,7 +1,8 @@
 //! Normal perturbation: the shading normal tilted by a `normal { }` block.
 //!
-//! In: a [`Normal`] whose transforms map world space to pattern space, a world point and the
-//! unit surface normal already turned towards the viewer. Out: the unit perturbed normal.
+//! In: a [`Normal`] whose transforms map world space to pattern space, a world point (with
+//! the surface's uv coordinates, if any) and the unit surface normal already turned towards
+//! the viewer. Out: the unit perturbed normal.
 //! Holds: no allocation, no panic; a non-finite result falls back to the unperturbed normal.
 //!
 //! Rules measured against POV-Ray 3.7 renders of `normal { gradient .. }` on a plane (16-bit
@@ -31,6 +32,11 @@
 //!   below a plane lit from the viewer's side).
 //! - `normal_map`, block normals and `average`: the weighted sum of the entries' perturbed
 //!   normals, normalised.
+//! - `uv_mapping`: the pattern (and the normals it is made of) is sampled around the hit's
+//!   `<u, v, 0>` instead of the point (the point on shapes without uv coordinates), and the
+//!   slope found in that space is added to the world normal as it stands, bump scaling as
+//!   above (measured: `uv_mapping gradient x 1` tilts a box face or a sphere towards world
+//!   -x exactly like `gradient x 1`, however the object is turned).
 
 use super::image_map::bump_map_tilt;
 use super::pattern::{blend_position, block_index};
