@@ -6,6 +6,7 @@ use super::texture_maps::{change_top_layer, layered, top_layer, AppearanceMap};
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
+use crate::noise::SceneNoiseGenerator;
 use crate::scene::{
     BlendMap, Colour, CompoundTexture, Pattern, Pigment, PigmentMap, Texture, Transform,
 };
@@ -118,7 +119,7 @@ impl Evaluator {
                         "tiles" => {
                             let blocks = self.eval_tiles(&mut body, block.head_span)?;
                             pattern = Some((
-                                Pattern::new(crate::pattern::PatternKind::Checker),
+                                self.new_pattern(crate::pattern::PatternKind::Checker),
                                 Some(BlendMap::Blocks(blocks)),
                                 block.head_span,
                             ));
@@ -373,14 +374,18 @@ impl Evaluator {
                     set_pattern(&mut pigment, spec, map);
                     continue;
                 }
-                if let Some(pattern) = modified_pattern(&mut pigment) {
+                if let Some(pattern) =
+                    modified_pattern(&mut pigment, &self.settings.scene_noise_generator)
+                {
                     if self.pattern_modifier(word, *span, stream, pattern)? {
                         continue;
                     }
                 }
             }
             if let Item::Block(block) = &item {
-                if let Some(pattern) = modified_pattern(&mut pigment) {
+                if let Some(pattern) =
+                    modified_pattern(&mut pigment, &self.settings.scene_noise_generator)
+                {
                     if self.pattern_block(block, pattern)? {
                         continue;
                     }
@@ -474,9 +479,9 @@ impl Evaluator {
                     Value::Function(literal) => {
                         let function = self.compile_function(&literal)?;
                         pigment = Pigment::Pattern {
-                            pattern: Box::new(Pattern::new(crate::pattern::PatternKind::Function(
-                                function,
-                            ))),
+                            pattern: Box::new(
+                                self.new_pattern(crate::pattern::PatternKind::Function(function)),
+                            ),
                             map: PigmentMap::Colours(grey_ramp()),
                             transform: Transform::IDENTITY,
                         };
@@ -729,21 +734,27 @@ fn set_pattern(pigment: &mut Pigment, spec: Pattern, map: PigmentMap) {
 }
 
 /// The pattern that the pattern modifiers written in `pigment` change: the pattern of a
-/// patterned pigment, or the image pattern that carries an image map's turbulence and warps
-/// (made on first use). `None` for other pigments.
-pub(super) fn modified_pattern(pigment: &mut Pigment) -> Option<&mut Pattern> {
+/// patterned pigment, or the pattern that carries an image map's or average's turbulence and
+/// warps (made on first use, following the scene's noise generator `scene_noise`). `None`
+/// for other pigments.
+pub(super) fn modified_pattern<'a>(
+    pigment: &'a mut Pigment,
+    scene_noise: &SceneNoiseGenerator,
+) -> Option<&'a mut Pattern> {
+    let carrier = |kind| {
+        let mut pattern = Pattern::new(kind);
+        pattern.use_scene_noise_generator(scene_noise);
+        Box::new(pattern)
+    };
     match pigment {
         Pigment::Pattern { pattern, .. } => Some(pattern),
         Pigment::Image { image, warps, .. } => Some(warps.get_or_insert_with(|| {
-            Box::new(Pattern::new(crate::pattern::PatternKind::ImagePattern(
-                image.clone(),
-            )))
+            carrier(crate::pattern::PatternKind::ImagePattern(image.clone()))
         })),
         // The pattern only carries the warps; its kind (any would do) is never evaluated.
-        Pigment::Average { warps, .. } => Some(
-            warps
-                .get_or_insert_with(|| Box::new(Pattern::new(crate::pattern::PatternKind::Planar))),
-        ),
+        Pigment::Average { warps, .. } => {
+            Some(warps.get_or_insert_with(|| carrier(crate::pattern::PatternKind::Planar)))
+        }
         _ => None,
     }
 }
@@ -765,9 +776,12 @@ pub(super) fn grey_ramp() -> Vec<(f64, Colour)> {
     vec![(0.0, Colour::BLACK), (1.0, Colour::WHITE)]
 }
 
-/// Applies a texture's `uv_mapping` to the pigments of the texture and of the textures it is
-/// made of (normals keep following the 3D point).
+/// Applies a texture's `uv_mapping` to the pigments and normals of the texture and of the
+/// textures it is made of.
 fn map_texture_by_uv(texture: &mut Texture) {
+    if let Some(normal) = &mut texture.normal {
+        normal.uv_mapped = true;
+    }
     if !matches!(texture.pigment, Pigment::Solid(_) | Pigment::UvMapped(_)) {
         let pigment = std::mem::replace(&mut texture.pigment, Pigment::Solid(Colour::BLACK));
         texture.pigment = Pigment::UvMapped(Box::new(pigment));

@@ -172,8 +172,8 @@ impl Evaluator {
             amount: 0.0,
             thickness: 0.0,
             turbulence: 0.0,
-            wavelengths: self.settings.irid_wavelength,
-            noise_generator: self.settings.noise_generator,
+            wavelengths: self.settings.scene_irid_wavelengths.clone(),
+            noise_generator: self.settings.scene_noise_generator.clone(),
         });
         while let Some(item) = self.next_item(stream)? {
             match &item {

@@ -41,9 +41,9 @@ impl Evaluator {
         let mut body = Stream::new(block.body.clone());
         let (image, _) =
             self.read_image(&mut body, block.head_span, ImageUse::StoredValues, None)?;
-        Ok(Some(Pattern::new(PatternKind::ImagePattern(Arc::new(
-            image,
-        )))))
+        Ok(Some(
+            self.new_pattern(PatternKind::ImagePattern(Arc::new(image))),
+        ))
     }
 
     /// Reads an `image_map` or `bump_map` body (`head_span` is the block's keyword), with

@@ -180,7 +180,9 @@ impl Evaluator {
                     };
                     continue;
                 }
-                if let Some(pattern) = modified_pattern(&mut density) {
+                if let Some(pattern) =
+                    modified_pattern(&mut density, &self.settings.scene_noise_generator)
+                {
                     if self.pattern_modifier(word, *span, stream, pattern)? {
                         continue;
                     }
@@ -200,7 +202,9 @@ impl Evaluator {
             }
             match &item {
                 Item::Block(block) => {
-                    if let Some(pattern) = modified_pattern(&mut density) {
+                    if let Some(pattern) =
+                        modified_pattern(&mut density, &self.settings.scene_noise_generator)
+                    {
                         if self.pattern_block(block, pattern)? {
                             continue;
                         }

@@ -594,6 +594,8 @@ impl Evaluator {
     fn finish_scene(&mut self) -> Scene {
         let waves = crate::pattern::WaveSources::new(self.settings.number_of_waves);
         self.settings.wave_sources.fix(waves);
+        let wavelengths = self.settings.irid_wavelength;
+        self.settings.scene_irid_wavelengths.fix(wavelengths);
         let mut settings = self.settings.clone();
         settings.language_version = self.version;
         settings.version_declared = self.version_declared;

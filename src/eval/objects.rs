@@ -391,7 +391,7 @@ impl Evaluator {
             Value::Normal(normal) => {
                 let mut texture = self.object_texture(object);
                 let mut normal = Rc::unwrap_or_clone(normal);
-                normal.transform(&object.transform().inverse());
+                normal.transform_with_object(&object.transform().inverse());
                 change_top_layer(&mut texture, |top| top.normal = Some(Box::new(normal)));
                 object.texture = Some(Arc::new(texture));
             }

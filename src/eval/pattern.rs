@@ -5,7 +5,7 @@
 //! [`PatternSpec`] or a modification of one. Holds: the owner (appearance.rs) parses maps,
 //! block lists and transforms; everything specific to one pattern is parsed here. A
 //! pattern without its own noise generator gets the global one in force when it is parsed
-//! (`PatternSpec::use_global_noise_generator` can apply a later one); `ripples` and `waves`
+//! (patterns without their own follow the scene's last one, read when evaluated); `ripples` and `waves`
 //! share the scene's wave sources, fixed from the last `number_of_waves` when parsing ends.
 
 use glam::{DVec2, DVec3};
@@ -19,8 +19,8 @@ use crate::geometry::World;
 use crate::noise::NoiseGenerator;
 use crate::pattern::{
     default_colour_map, Altitude, BlackHole, Colouring, Crackle, DensityFile, Fractal, FractalKind,
-    MagnetType, Mapping, MappingKind, PatternKind, PatternSpec, Pavement, PavementPolygon, Repeat,
-    Slope, Warp, WaveShape,
+    MagnetType, Mapping, MappingKind, NoiseChoice, PatternKind, PatternSpec, Pavement,
+    PavementPolygon, Repeat, Slope, Warp, WaveShape,
 };
 use crate::syntax::ast::{Block, BlockHead, Expr, Item};
 
@@ -105,8 +105,7 @@ impl Evaluator {
             "wrinkles" => PatternKind::Wrinkles,
             _ => return Ok(None),
         };
-        let mut pattern = PatternSpec::new(kind);
-        pattern.use_global_noise_generator(self.settings.noise_generator);
+        let mut pattern = self.new_pattern(kind);
         pattern.default_colour_map = default_colour_map(word);
         Ok(Some(pattern))
     }
@@ -165,7 +164,7 @@ impl Evaluator {
         if let Item::Expr(Expr::Function(literal)) = item {
             let function = self.compile_function(literal)?;
             return Ok(Some((
-                PatternSpec::new(PatternKind::Function(function)),
+                self.new_pattern(PatternKind::Function(function)),
                 None,
             )));
         }
@@ -198,15 +197,12 @@ impl Evaluator {
                     }
                 };
                 let world = World::build_from_objects(vec![Arc::unwrap_or_clone(object)]);
-                let mut pattern = PatternSpec::new(PatternKind::Object(Arc::new(world)));
-                pattern.use_global_noise_generator(self.settings.noise_generator);
+                let pattern = self.new_pattern(PatternKind::Object(Arc::new(world)));
                 return Ok(Some((pattern, Some(body))));
             }
             _ => return Ok(None),
         };
-        let mut pattern = PatternSpec::new(kind);
-        pattern.use_global_noise_generator(self.settings.noise_generator);
-        Ok(Some((pattern, None)))
+        Ok(Some((self.new_pattern(kind), None)))
     }
 
     /// The body of `slope { .. }`: `DIRECTION [, LO, HI] [altitude DIRECTION [, LO, HI]]`
@@ -307,13 +303,9 @@ impl Evaluator {
                 pattern.wave.shape = WaveShape::Poly(exponent);
             }
             "noise_generator" => match self.expect_noise_generator(stream)? {
-                Some(generator) => {
-                    pattern.noise_generator = generator;
-                    pattern.own_noise_generator = true;
-                }
+                Some(generator) => pattern.noise = NoiseChoice::Own(generator),
                 None => {
-                    pattern.own_noise_generator = false;
-                    pattern.use_global_noise_generator(self.settings.noise_generator);
+                    pattern.noise = NoiseChoice::Scene(self.settings.scene_noise_generator.clone())
                 }
             },
             _ => return self.pattern_setting(word, span, stream, pattern),
@@ -766,6 +758,13 @@ impl Evaluator {
         } else {
             octaves.clamp(1.0, 10.0) as u32
         })
+    }
+
+    /// A new pattern of `kind` following the scene's global noise generator.
+    pub(crate) fn new_pattern(&self, kind: PatternKind) -> PatternSpec {
+        let mut pattern = PatternSpec::new(kind);
+        pattern.use_scene_noise_generator(&self.settings.scene_noise_generator);
+        pattern
     }
 
     /// `noise_generator N` with N 0, 1, 2 or 3; `None` for 0, which means "the default"

@@ -301,6 +301,7 @@ impl Evaluator {
         let mut preset_amount = normal.as_ref().map(|normal| normal.amount);
         let mut average = false;
         let mut pattern_started = false;
+        let mut uv_mapping = false;
         while let Some(item) = self.next_item(stream)? {
             if let Some((spec, list)) = self.block_pattern(&item)? {
                 let mut fresh = Normal::new(NormalSource::Pattern {
@@ -415,9 +416,7 @@ impl Evaluator {
                             normal.no_bump_scale = on;
                         }
                     }
-                    "uv_mapping" => {
-                        self.warn(*span, "`uv_mapping` is not supported yet; it is ignored");
-                    }
+                    "uv_mapping" => uv_mapping = true,
                     _ => return Err(self.unexpected_in(&item, "normal")),
                 },
                 Item::Block(block) => {
@@ -499,16 +498,18 @@ impl Evaluator {
                 _ => return Err(self.unexpected_in(&item, "normal")),
             }
         }
-        match normal {
-            Some(normal) => Ok(normal),
+        let mut normal = match normal {
+            Some(normal) => normal,
             None => {
                 // No pattern: a normal that perturbs nothing, keeping its bump size for the
                 // patterns of the normals that start from it.
                 let mut flat = Normal::new(NormalSource::Average(Vec::new()));
                 flat.amount = preset_amount.unwrap_or(flat.amount);
-                Ok(flat)
+                flat
             }
-        }
+        };
+        normal.uv_mapped |= uv_mapping;
+        Ok(normal)
     }
 
     /// The normal a `normal_map` turns `current` into: the map over its pattern, or an

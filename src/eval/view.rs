@@ -505,8 +505,9 @@ impl Evaluator {
                         self.settings.ambient_light = self.to_colour(value, span)?.rgb_vec();
                     }
                     "noise_generator" => {
-                        self.settings.noise_generator =
-                            self.expect_noise_generator(stream)?.unwrap_or_default()
+                        let generator = self.expect_noise_generator(stream)?.unwrap_or_default();
+                        self.settings.noise_generator = generator;
+                        self.settings.scene_noise_generator.set(generator);
                     }
                     "number_of_waves" => self.number_of_waves(stream)?,
                     "irid_wavelength" => {

@@ -9,7 +9,7 @@
 
 use super::leaf::LocalShape;
 use crate::accel::Aabb;
-use crate::scene::{BlendMap, CompoundTexture, Pigment, PigmentMap, Texture};
+use crate::scene::{BlendMap, CompoundTexture, Normal, NormalSource, Pigment, PigmentMap, Texture};
 use glam::{DVec2, DVec3};
 use std::f64::consts::{PI, TAU};
 
@@ -64,9 +64,9 @@ pub fn sphere_uv(offset: DVec3) -> DVec2 {
 }
 
 /// True when `texture` or a texture it is made of has a uv-mapped pigment (possibly nested
-/// in pigment maps), so its hits need uv coordinates.
+/// in pigment maps) or normal, so its hits need uv coordinates.
 pub fn texture_uses_uv(texture: &Texture) -> bool {
-    if pigment_uses_uv(&texture.pigment) {
+    if pigment_uses_uv(&texture.pigment) || texture.normal.as_deref().is_some_and(normal_uses_uv) {
         return true;
     }
     let Some(compound) = &texture.compound else {
@@ -81,6 +81,19 @@ pub fn texture_uses_uv(texture: &Texture) -> bool {
         CompoundTexture::Average(entries) => entries.iter().any(|(_, t)| texture_uses_uv(t)),
         CompoundTexture::MaterialMap { textures, .. } => textures.iter().any(texture_uses_uv),
     }
+}
+
+/// True when `normal` is uv-mapped or holds a uv-mapped normal.
+fn normal_uses_uv(normal: &Normal) -> bool {
+    normal.uv_mapped
+        || match &normal.source {
+            NormalSource::Pattern { .. } | NormalSource::BumpMap(_) => false,
+            NormalSource::Map { map, .. } => match map {
+                BlendMap::Entries(entries) => entries.iter().any(|(_, n)| normal_uses_uv(n)),
+                BlendMap::Blocks(blocks) => blocks.iter().any(normal_uses_uv),
+            },
+            NormalSource::Average(entries) => entries.iter().any(|(_, n)| normal_uses_uv(n)),
+        }
 }
 
 /// True when `pigment` is uv-mapped or holds a uv-mapped pigment.

@@ -5,14 +5,18 @@
 //! povray with `scripts/probe-noise.py`; the known-answer tests hold those measurements).
 //! Holds: pure functions of their arguments over constant tables (no global state, no
 //! allocation), safe to call from any thread. Also the per-cube random numbers of the `cells`
-//! and `crackle` patterns (`cells.rs`).
+//! and `crackle` patterns (`cells.rs`), and the handle through which patterns follow the
+//! scene's global `noise_generator` (`scene.rs`, the one shared state, written only while
+//! parsing).
 
 mod cells;
 mod lattice;
 mod perlin;
 mod perlin_tables;
+mod scene;
 
 pub use cells::{cells_value, crackle_feature_point, cube_random_value, cube_random_vector};
+pub use scene::SceneNoiseGenerator;
 
 use glam::DVec3;
 

@@ -31,7 +31,7 @@ mod waves;
 
 use glam::DVec3;
 
-use crate::noise::{vector_turbulence, NoiseGenerator, TurbulenceShape};
+use crate::noise::{vector_turbulence, NoiseGenerator, SceneNoiseGenerator, TurbulenceShape};
 use crate::scene::Transform;
 
 pub use default_maps::{default_colour_map, DefaultColourMap};
@@ -57,15 +57,22 @@ pub struct PatternSpec {
     pub turbulence: ClassicTurbulence,
     /// Warps in the order written, each with the transformations written before it.
     pub warps: Vec<PlacedWarp>,
-    /// The noise generator: the pattern's own, or else the global one (see
-    /// [`Self::use_global_noise_generator`]).
-    pub noise_generator: NoiseGenerator,
-    /// Whether the pattern names its own `noise_generator`.
-    pub own_noise_generator: bool,
+    /// The noise generator: the pattern's own, or the scene's global one.
+    pub noise: NoiseChoice,
     /// The colour map a pigment uses when it gives none (empty: black to white).
     pub default_colour_map: DefaultColourMap,
     /// Every transformation noted so far, composed (outer from inner).
     noted: Transform,
+}
+
+/// Which noise generator a pattern uses.
+#[derive(Clone, Debug)]
+pub enum NoiseChoice {
+    /// The pattern's own `noise_generator`.
+    Own(NoiseGenerator),
+    /// The scene's `global_settings { noise_generator }`, read when the pattern is
+    /// evaluated (so a `global_settings` written after the pattern applies too).
+    Scene(SceneNoiseGenerator),
 }
 
 /// A warp together with the frame it was written in.
@@ -209,8 +216,7 @@ impl PatternSpec {
                 shape: TurbulenceShape::default(),
             },
             warps: Vec::new(),
-            noise_generator: NoiseGenerator::default(),
-            own_noise_generator: false,
+            noise: NoiseChoice::Scene(SceneNoiseGenerator::default()),
             default_colour_map: &[],
             noted: Transform::IDENTITY,
         }
@@ -223,13 +229,19 @@ impl PatternSpec {
         self.noted = self.noted.then(transform);
     }
 
-    /// Sets the `global_settings` noise generator, unless the pattern names its own. POV-Ray
-    /// applies the scene's final global setting to every pattern, even one written before
-    /// `global_settings`; the parser calls this with the setting in force, and a pass over
-    /// the finished scene can call it again with the final one.
-    pub fn use_global_noise_generator(&mut self, global: NoiseGenerator) {
-        if !self.own_noise_generator {
-            self.noise_generator = global;
+    /// Makes the pattern follow the scene's global noise generator `scene`, unless it
+    /// names its own.
+    pub fn use_scene_noise_generator(&mut self, scene: &SceneNoiseGenerator) {
+        if let NoiseChoice::Scene(_) = self.noise {
+            self.noise = NoiseChoice::Scene(scene.clone());
+        }
+    }
+
+    /// The noise generator the pattern uses now.
+    pub fn noise_generator(&self) -> NoiseGenerator {
+        match &self.noise {
+            NoiseChoice::Own(generator) => *generator,
+            NoiseChoice::Scene(scene) => scene.get(),
         }
     }
 
@@ -347,7 +359,7 @@ impl PatternSpec {
             return None;
         }
         let p = self.moved_point(point);
-        let generator = self.noise_generator;
+        let generator = self.noise_generator();
         let perturbation = match self.kind {
             PatternKind::Bumps => normals::bumps(p, generator),
             PatternKind::Dents => normals::dents(p, generator),
@@ -398,12 +410,12 @@ impl PatternSpec {
         let mut p = point;
         for placed in self.warps.iter().rev() {
             let in_frame = placed.frame.point_to_outer(p);
-            let warped = placed.warp.apply(in_frame, self.noise_generator);
+            let warped = placed.warp.apply(in_frame, self.noise_generator());
             p = placed.frame.point_to_inner(warped);
         }
         if self.turbulence.amount != DVec3::ZERO && !self.handles_own_turbulence() {
             p += self.turbulence.amount
-                * vector_turbulence(p, &self.turbulence.shape, self.noise_generator);
+                * vector_turbulence(p, &self.turbulence.shape, self.noise_generator());
         }
         p
     }
@@ -415,12 +427,12 @@ impl PatternSpec {
         if turbulence.amount == DVec3::ZERO {
             return 0.0;
         }
-        turbulence.amount.x * crate::noise::turbulence(p, &turbulence.shape, self.noise_generator)
+        turbulence.amount.x * crate::noise::turbulence(p, &turbulence.shape, self.noise_generator())
     }
 
     /// The pattern's value before frequency, phase and wave shape.
     fn raw_value(&self, p: DVec3, surface: &SurfaceContext) -> f64 {
-        let generator = self.noise_generator;
+        let generator = self.noise_generator();
         let turbulence = &self.turbulence;
         match &self.kind {
             PatternKind::Agate { agate_turb } => {

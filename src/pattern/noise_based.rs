@@ -348,7 +348,7 @@ mod tests {
             "crackle_solid_generator1" => {
                 let mut spec =
                     PatternSpec::new(crackle(DVec3::new(-1.0, 1.0, 0.0), 2.0, 0.0, true));
-                spec.noise_generator = NoiseGenerator::Original;
+                spec.noise = crate::pattern::NoiseChoice::Own(NoiseGenerator::Original);
                 spec
             }
             "ripples_frequency_phase" => {

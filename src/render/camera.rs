@@ -141,7 +141,7 @@ impl CameraRays {
         let mut direction = direction.try_normalize()?;
         if let Some(normal) = &self.normal {
             direction = perturbed_direction(direction, DVec2::new(u, v), |point, unbent| {
-                perturbed_normal(normal, point, unbent)
+                perturbed_normal(normal, point, None, unbent)
             });
         }
         (origin.is_finite() && direction.is_finite()).then_some(Ray { origin, direction })

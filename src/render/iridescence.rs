@@ -28,7 +28,7 @@ pub fn irid_thickness(irid: &Irid, point: DVec3) -> f64 {
             octaves: 5,
             ..TurbulenceShape::default()
         };
-        let stir = turbulence(point, &shape, irid.noise_generator);
+        let stir = turbulence(point, &shape, irid.noise_generator.get());
         irid.thickness * (1.0 + irid.turbulence * (2.0 * stir - 1.0))
     } else {
         irid.thickness
@@ -40,7 +40,7 @@ pub fn irid_thickness(irid: &Irid, point: DVec3) -> f64 {
 /// the directions to the light and to the viewer.
 pub fn iridescence(irid: &Irid, thickness: f64, cos_light: f64, cos_view: f64) -> DVec3 {
     let path = TAU * thickness * (cos_light + cos_view);
-    let phase = DVec3::splat(path) / irid.wavelengths;
+    let phase = DVec3::splat(path) / irid.wavelengths.get();
     let factor = DVec3::ONE + irid.amount * DVec3::new(phase.x.cos(), phase.y.cos(), phase.z.cos());
     if factor.is_finite() {
         factor
@@ -58,8 +58,8 @@ mod tests {
             amount,
             thickness,
             turbulence: 0.0,
-            wavelengths: crate::scene::DEFAULT_IRID_WAVELENGTHS,
-            noise_generator: crate::noise::NoiseGenerator::default(),
+            wavelengths: Default::default(),
+            noise_generator: Default::default(),
         }
     }
 

@@ -395,7 +395,7 @@ fn fake_caustics(material: &Material, hit: &SurfaceHit, direction: DVec3) -> f64
         } else {
             -normal
         };
-        normal = perturbed_normal(perturbation, hit.point, facing);
+        normal = perturbed_normal(perturbation, hit.point, hit.uv, facing);
     }
     let cosine = direction.dot(normal).abs().min(1.0);
     1.0 + cosine.powf(CAUSTICS_EXPONENT * material.interior.caustics)

@@ -1,7 +1,8 @@
 //! Normal perturbation: the shading normal tilted by a `normal { }` block.
 //!
-//! In: a [`Normal`] whose transforms map world space to pattern space, a world point and the
-//! unit surface normal already turned towards the viewer. Out: the unit perturbed normal.
+//! In: a [`Normal`] whose transforms map world space to pattern space, a world point (with
+//! the surface's uv coordinates, if any) and the unit surface normal already turned towards
+//! the viewer. Out: the unit perturbed normal.
 //! Holds: no allocation, no panic; a non-finite result falls back to the unperturbed normal.
 //!
 //! Rules measured against POV-Ray 3.7 renders of `normal { gradient .. }` on a plane (16-bit
@@ -31,12 +32,17 @@
 //!   below a plane lit from the viewer's side).
 //! - `normal_map`, block normals and `average`: the weighted sum of the entries' perturbed
 //!   normals, normalised.
+//! - `uv_mapping`: the pattern (and the normals it is made of) is sampled around the hit's
+//!   `<u, v, 0>` instead of the point (the point on shapes without uv coordinates), and the
+//!   slope found in that space is added to the world normal as it stands, bump scaling as
+//!   above (measured: `uv_mapping gradient x 1` tilts a box face or a sphere towards world
+//!   -x exactly like `gradient x 1`, however the object is turned).
 
 use super::image_map::bump_map_tilt;
 use super::pattern::{blend_position, block_index};
 use crate::pattern::SurfaceContext;
 use crate::scene::{BlendMap, Normal, NormalSource, SlopeEntry};
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 /// Factor between the pattern's slope and the tilt of the normal (measured).
 const TILT_PER_SLOPE: f64 = 2.0 / 15.0;
@@ -54,20 +60,31 @@ const TETRAHEDRON: [DVec3; 4] = [
     DVec3::new(0.0, 1.0, 0.0),
 ];
 
-/// The unit normal at `world_point` after `normal` tilts the facing unit normal `facing`.
-pub fn perturbed_normal(normal: &Normal, world_point: DVec3, facing: DVec3) -> DVec3 {
+/// The unit normal at `world_point` (with surface coordinates `uv`, if the surface has
+/// them) after `normal` tilts the facing unit normal `facing`.
+pub fn perturbed_normal(
+    normal: &Normal,
+    world_point: DVec3,
+    uv: Option<DVec2>,
+    facing: DVec3,
+) -> DVec3 {
     let surface = SurfaceContext {
         point: world_point,
         normal: facing,
         ray_direction: DVec3::ZERO,
     };
-    perturbed_normal_at(normal, world_point, &surface)
+    perturbed_normal_at(normal, world_point, uv, &surface)
 }
 
 /// [`perturbed_normal`] knowing the ray too: `surface.normal` is the facing unit normal,
 /// and the surface-dependent patterns (`slope`, `aoi`) see it and the ray direction.
-pub fn perturbed_normal_at(normal: &Normal, world_point: DVec3, surface: &SurfaceContext) -> DVec3 {
-    let tilted = tilt(normal, world_point, surface, 0);
+pub fn perturbed_normal_at(
+    normal: &Normal,
+    world_point: DVec3,
+    uv: Option<DVec2>,
+    surface: &SurfaceContext,
+) -> DVec3 {
+    let tilted = tilt(normal, world_point, uv, surface, 0);
     match tilted.try_normalize() {
         Some(unit) => unit,
         None => surface.normal,
@@ -75,13 +92,26 @@ pub fn perturbed_normal_at(normal: &Normal, world_point: DVec3, surface: &Surfac
 }
 
 /// The (unnormalised) tilted normal, following nested normals at most
-/// [`MAX_NORMAL_NESTING`] deep.
-fn tilt(normal: &Normal, world_point: DVec3, surface: &SurfaceContext, depth: u32) -> DVec3 {
+/// [`MAX_NORMAL_NESTING`] deep. `outer_point` is the point in the normal's outer space:
+/// the world point, or inside a uv-mapped normal `<u, v, 0>`.
+fn tilt(
+    normal: &Normal,
+    outer_point: DVec3,
+    uv: Option<DVec2>,
+    surface: &SurfaceContext,
+    depth: u32,
+) -> DVec3 {
     let facing = surface.normal;
     if depth >= MAX_NORMAL_NESTING {
         return facing;
     }
-    let point = normal.transform.point_to_inner(world_point);
+    // A uv-mapped normal sees `<u, v, 0>` (the point on shapes without uv coordinates, as
+    // pigments do), and so do the normals it is made of.
+    let outer_point = match (normal.uv_mapped, uv) {
+        (true, Some(uv)) => uv.extend(0.0),
+        _ => outer_point,
+    };
+    let point = normal.transform.point_to_inner(outer_point);
     if !point.is_finite() {
         return facing;
     }
@@ -114,7 +144,7 @@ fn tilt(normal: &Normal, world_point: DVec3, surface: &SurfaceContext, depth: u3
             BlendMap::Blocks(blocks) => {
                 let index = block_index(pattern, point, blocks.len(), surface);
                 match blocks.get(index).or(blocks.last()) {
-                    Some(block) => unit(tilt(block, world_point, surface, depth + 1), facing),
+                    Some(block) => unit(tilt(block, outer_point, uv, surface, depth + 1), facing),
                     None => facing,
                 }
             }
@@ -124,14 +154,14 @@ fn tilt(normal: &Normal, world_point: DVec3, surface: &SurfaceContext, depth: u3
                     return facing;
                 };
                 let below = unit(
-                    tilt(&entries[low].1, world_point, surface, depth + 1),
+                    tilt(&entries[low].1, outer_point, uv, surface, depth + 1),
                     facing,
                 );
                 if fraction == 0.0 {
                     return below;
                 }
                 let above = unit(
-                    tilt(&entries[high].1, world_point, surface, depth + 1),
+                    tilt(&entries[high].1, outer_point, uv, surface, depth + 1),
                     facing,
                 );
                 below * (1.0 - fraction) + above * fraction
@@ -140,7 +170,7 @@ fn tilt(normal: &Normal, world_point: DVec3, surface: &SurfaceContext, depth: u3
         NormalSource::Average(entries) => {
             let mut sum = DVec3::ZERO;
             for (weight, entry) in entries {
-                sum += *weight * unit(tilt(entry, world_point, surface, depth + 1), facing);
+                sum += *weight * unit(tilt(entry, outer_point, uv, surface, depth + 1), facing);
             }
             sum
         }
@@ -225,19 +255,44 @@ mod tests {
     fn gradient_tilt_matches_povray() {
         // POV-Ray: plane y, `normal { gradient x 1 }`, light overhead: N·L = 0.99123.
         let normal = gradient_normal(DVec3::X, 1.0);
-        let tilted = perturbed_normal(&normal, DVec3::new(0.4, 0.0, 0.0), DVec3::Y);
+        let tilted = perturbed_normal(&normal, DVec3::new(0.4, 0.0, 0.0), None, DVec3::Y);
         assert!((tilted.y - 0.99123).abs() < 2e-5, "{tilted}");
         assert!(tilted.x < 0.0);
         // `scale <1,2,1>`: twice as steep (0.96623); uniform scale: unchanged.
         let mut steep = gradient_normal(DVec3::X, 1.0);
         steep.transform(&Transform::scaling(DVec3::new(1.0, 2.0, 1.0)).unwrap());
-        let tilted = perturbed_normal(&steep, DVec3::new(0.4, 0.0, 0.0), DVec3::Y);
+        let tilted = perturbed_normal(&steep, DVec3::new(0.4, 0.0, 0.0), None, DVec3::Y);
         assert!((tilted.y - 0.96623).abs() < 2e-5, "{tilted}");
         let mut flat = gradient_normal(DVec3::X, 1.0);
         flat.transform(&Transform::scaling(DVec3::splat(2.0)).unwrap());
         flat.no_bump_scale = true;
-        let tilted = perturbed_normal(&flat, DVec3::new(0.4, 0.0, 0.0), DVec3::Y);
+        let tilted = perturbed_normal(&flat, DVec3::new(0.4, 0.0, 0.0), None, DVec3::Y);
         assert!((tilted.y - 0.99779).abs() < 2e-5, "{tilted}");
+    }
+
+    #[test]
+    fn uv_mapped_normal_tilts_the_world_normal_by_the_uv_slope() {
+        // POV-Ray: a box face facing -z with `normal { uv_mapping gradient x 1 }` tilts
+        // like `gradient x 1` in world space (N = <-0.13217, 0, -0.99123>), wherever the
+        // face is and however the object is turned.
+        let mut normal = gradient_normal(DVec3::X, 1.0);
+        normal.uv_mapped = true;
+        let uv = Some(DVec2::new(0.3, 0.5));
+        let tilted = perturbed_normal(&normal, DVec3::new(5.0, -2.0, 7.0), uv, -DVec3::Z);
+        assert!(
+            (tilted - DVec3::new(-0.13217, 0.0, -0.99123)).length() < 2e-5,
+            "{tilted}"
+        );
+        // Object transformations leave it be; its own apply.
+        normal.transform_with_object(&Transform::rotation_degrees(DVec3::new(0.0, 0.0, 90.0)));
+        let turned = perturbed_normal(&normal, DVec3::ZERO, uv, -DVec3::Z);
+        assert!((turned - tilted).length() < 1e-12, "{turned}");
+        normal.transform(&Transform::rotation_degrees(DVec3::new(0.0, 0.0, 90.0)));
+        let turned = perturbed_normal(&normal, DVec3::ZERO, uv, -DVec3::Z);
+        assert!(
+            (turned - DVec3::new(0.0, -0.13217, -0.99123)).length() < 2e-5,
+            "{turned}"
+        );
     }
 
     #[test]

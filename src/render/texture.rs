@@ -63,7 +63,7 @@ impl Place<'_> {
     fn surface_for(&self, pattern: &crate::scene::Pattern) -> SurfaceContext {
         match self.last_normal.get() {
             Some(normal) if pattern.depends_on_surface() => SurfaceContext {
-                normal: perturbed_normal_at(normal, self.hit.point, self.surface),
+                normal: perturbed_normal_at(normal, self.hit.point, self.hit.uv, self.surface),
                 ..*self.surface
             },
             _ => *self.surface,

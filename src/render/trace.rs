@@ -542,7 +542,7 @@ impl<'a> Tracer<'a> {
         let pigment = pigment_at_hit(&texture.pigment, hit, &surface);
         let entering = ray.direction.dot(hit.normal) <= 0.0;
         let normal = match &texture.normal {
-            Some(perturbation) => perturbed_normal_at(perturbation, hit.point, &surface),
+            Some(perturbation) => perturbed_normal_at(perturbation, hit.point, hit.uv, &surface),
             None => surface.normal,
         };
         let sample = SurfaceSample {

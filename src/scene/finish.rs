@@ -4,6 +4,7 @@
 //! POV-Ray 3.7's; `albedo` forms are already converted to the peak values used in shading.
 
 use glam::DVec3;
+use std::sync::{Arc, OnceLock};
 
 /// POV-Ray's `finish` with its defaults.
 #[derive(Clone, Debug)]
@@ -80,7 +81,7 @@ impl Default for Finish {
 }
 
 /// `irid { amount thickness T turbulence U }`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Irid {
     /// Contribution of the effect to the surface colour.
     pub amount: f64,
@@ -88,12 +89,40 @@ pub struct Irid {
     pub thickness: f64,
     /// Variation of the thickness (default 0).
     pub turbulence: f64,
-    /// The wavelengths of red, green and blue light: `global_settings { irid_wavelength }`
-    /// in force when the finish was parsed.
-    pub wavelengths: DVec3,
-    /// The noise generator of the thickness turbulence: the `global_settings` one in force
-    /// when the finish was parsed (measured: POV-Ray's irid follows `noise_generator`).
-    pub noise_generator: crate::noise::NoiseGenerator,
+    /// The wavelengths of red, green and blue light: the scene's last
+    /// `global_settings { irid_wavelength }`, wherever it is written (measured).
+    pub wavelengths: SceneIridWavelengths,
+    /// The noise generator of the thickness turbulence: the scene's global one (measured:
+    /// POV-Ray's irid follows the last `global_settings { noise_generator }`).
+    pub noise_generator: crate::noise::SceneNoiseGenerator,
+}
+
+/// A scene's `irid_wavelength` as irid reads it when shading: a handle shared by every
+/// `irid` of the scene, fixed from the last `global_settings { irid_wavelength }` when
+/// parsing ends; until then, and without a scene, [`DEFAULT_IRID_WAVELENGTHS`].
+#[derive(Clone, Debug, Default)]
+pub struct SceneIridWavelengths(Option<Arc<OnceLock<DVec3>>>);
+
+impl SceneIridWavelengths {
+    /// A fresh handle for a scene being parsed.
+    pub fn for_scene() -> SceneIridWavelengths {
+        SceneIridWavelengths(Some(Arc::new(OnceLock::new())))
+    }
+
+    /// Fixes the scene's wavelengths; later calls change nothing.
+    pub fn fix(&self, wavelengths: DVec3) {
+        if let Some(shared) = &self.0 {
+            let _ = shared.set(wavelengths);
+        }
+    }
+
+    /// The wavelengths of red, green and blue light.
+    pub fn get(&self) -> DVec3 {
+        self.0
+            .as_ref()
+            .and_then(|shared| shared.get().copied())
+            .unwrap_or(DEFAULT_IRID_WAVELENGTHS)
+    }
 }
 
 /// The irid wavelengths without `irid_wavelength` (measured from the interference phases;

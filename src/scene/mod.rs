@@ -27,7 +27,7 @@ pub use camera::{
     DEFAULT_ANGLE,
 };
 pub use colour::Colour;
-pub use finish::{Finish, Interior, Irid, DEFAULT_IRID_WAVELENGTHS};
+pub use finish::{Finish, Interior, Irid, SceneIridWavelengths, DEFAULT_IRID_WAVELENGTHS};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
 pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, LightSource, Spotlight};
@@ -82,8 +82,15 @@ pub struct GlobalSettings {
     pub ambient_light: DVec3,
     /// The noise generator patterns use unless they name their own (default 2).
     pub noise_generator: crate::noise::NoiseGenerator,
+    /// The same setting as the patterns (and irid) read it when evaluated: the handle every
+    /// pattern without its own generator shares, so that the scene's last setting applies
+    /// wherever it is written.
+    pub scene_noise_generator: crate::noise::SceneNoiseGenerator,
     /// `irid_wavelength`: the wavelengths of red, green and blue light for `irid`.
     pub irid_wavelength: DVec3,
+    /// The handle every `irid` of the scene reads its wavelengths from (fixed from
+    /// `irid_wavelength` when parsing ends).
+    pub scene_irid_wavelengths: SceneIridWavelengths,
     /// `number_of_waves` (default 10): how many wave sources `ripples` and `waves` use.
     pub number_of_waves: usize,
     /// The wave sources every `ripples` and `waves` pattern of the scene shares (fixed
@@ -106,7 +113,9 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
             noise_generator: crate::noise::NoiseGenerator::default(),
+            scene_noise_generator: crate::noise::SceneNoiseGenerator::for_scene(),
             irid_wavelength: finish::DEFAULT_IRID_WAVELENGTHS,
+            scene_irid_wavelengths: SceneIridWavelengths::for_scene(),
             number_of_waves: 10,
             wave_sources: crate::pattern::SceneWaveSources::default(),
             radiosity: None,

@@ -140,6 +140,10 @@ pub struct Normal {
     pub no_bump_scale: bool,
     /// Outer space to pattern space (for the samples of the numeric slope).
     pub transform: Transform,
+    /// `uv_mapping` (in the normal or its texture): the pattern is evaluated around the
+    /// hit's `<u, v, 0>` and its slope there tilts the world normal as it stands (measured);
+    /// the object's transformations do not apply.
+    pub uv_mapped: bool,
 }
 
 /// Where a normal's perturbation comes from.
@@ -237,8 +241,8 @@ impl Texture {
     }
 
     /// Composes an object's transformation `t` into the texture: like
-    /// [`Texture::transform`], except that uv-mapped pigments keep their transforms (they
-    /// follow the surface's uv coordinates, not its space).
+    /// [`Texture::transform`], except that uv-mapped pigments and normals keep their
+    /// transforms (they follow the surface's uv coordinates, not its space).
     pub fn transform_with_object(&mut self, t: &Transform) {
         self.transform_in(t, true);
     }
@@ -247,7 +251,7 @@ impl Texture {
     fn transform_in(&mut self, t: &Transform, object_level: bool) {
         self.pigment.transform_in(t, object_level);
         if let Some(normal) = &mut self.normal {
-            normal.transform(t);
+            normal.transform_in(t, object_level);
         }
         if let Some(compound) = &mut self.compound {
             Arc::make_mut(compound).transform_in(t, object_level);
@@ -369,18 +373,36 @@ impl Normal {
             accuracy: 0.02,
             no_bump_scale: false,
             transform: Transform::IDENTITY,
+            uv_mapped: false,
         }
+    }
+
+    /// Composes an object's transformation `t` into the normal: like [`Normal::transform`],
+    /// except that uv-mapped normals are left as they are (they follow the surface's uv
+    /// coordinates; measured: rotating a uv-mapped box does not turn its bumps).
+    pub fn transform_with_object(&mut self, t: &Transform) {
+        self.transform_in(t, true);
     }
 
     /// Composes `t` into the normal's transform and those of every nested normal.
     pub fn transform(&mut self, t: &Transform) {
+        self.transform_in(t, false);
+    }
+
+    /// [`Normal::transform`]; `object_level` spares uv-mapped normals.
+    fn transform_in(&mut self, t: &Transform, object_level: bool) {
+        if object_level && self.uv_mapped {
+            return;
+        }
         self.transform = self.transform.then(t);
         match &mut self.source {
             NormalSource::Pattern { .. } | NormalSource::BumpMap(_) => {}
-            NormalSource::Map { map, .. } => map.for_each_mut(|normal| normal.transform(t)),
+            NormalSource::Map { map, .. } => {
+                map.for_each_mut(|normal| normal.transform_in(t, object_level))
+            }
             NormalSource::Average(entries) => entries
                 .iter_mut()
-                .for_each(|(_, normal)| normal.transform(t)),
+                .for_each(|(_, normal)| normal.transform_in(t, object_level)),
         }
     }
 }
