@@ -324,7 +324,16 @@ impl Evaluator {
             }
             if let Item::Keyword(word, _) = &item {
                 if &**word == "average" {
+                    // The average is the pigment's pattern from here on: turbulence, warps and
+                    // transformations written before its map apply to it (measured).
                     average = true;
+                    if !matches!(pigment, Pigment::Average { .. }) {
+                        pigment = Pigment::Average {
+                            entries: Vec::new(),
+                            transform: Transform::IDENTITY,
+                            warps: None,
+                        };
+                    }
                     continue;
                 }
             }
@@ -516,11 +525,27 @@ impl Evaluator {
         span: Span,
     ) -> EvalResult<()> {
         if average {
-            *pigment = Pigment::Average {
-                entries,
-                transform: Transform::IDENTITY,
-                warps: None,
-            };
+            // The transformations written since `average` move the map's pigments too.
+            let mut entries = entries;
+            match pigment {
+                Pigment::Average {
+                    entries: old,
+                    transform,
+                    ..
+                } => {
+                    for (_, entry) in &mut entries {
+                        entry.transform(transform);
+                    }
+                    *old = entries;
+                }
+                _ => {
+                    *pigment = Pigment::Average {
+                        entries,
+                        transform: Transform::IDENTITY,
+                        warps: None,
+                    }
+                }
+            }
             return Ok(());
         }
         match pigment {
