@@ -289,7 +289,7 @@ impl Internal {
             | Internal::AlgebraicCylinder4 => {
                 let (strength, limit) = (argument(3), argument(4));
                 let (u, v) = curve_plane(x, y, z, argument(5), argument(6), argument(7));
-                let value = strength * algebraic(self.number(), (u, v, 0.0), &[]);
+                let value = strength * algebraic(self, (u, v, 0.0), &[]);
                 value.max(-limit).min(limit)
             }
             Internal::DevilsCurve2d
@@ -298,17 +298,11 @@ impl Internal {
             | Internal::LemniscateOfGerono2d
             | Internal::WitchOfAgnesi2d => {
                 let (u, v) = curve_plane(x, y, z, argument(6), argument(7), argument(8));
-                with_strength(
-                    argument(3),
-                    algebraic(self.number(), (u, v, 0.0), shape_parameters),
-                )
+                with_strength(argument(3), algebraic(self, (u, v, 0.0), shape_parameters))
             }
             Internal::Piriform2d | Internal::Strophoid2d => {
                 let (u, v) = curve_plane(x, y, z, argument(7), argument(8), argument(9));
-                with_strength(
-                    argument(3),
-                    algebraic(self.number(), (u, v, 0.0), shape_parameters),
-                )
+                with_strength(argument(3), algebraic(self, (u, v, 0.0), shape_parameters))
             }
             Internal::Bicorn
             | Internal::Bifolia
@@ -341,10 +335,9 @@ impl Internal {
             | Internal::Strophoid
             | Internal::TorusGumdrop
             | Internal::Umbrella
-            | Internal::WitchOfAgnesi => with_strength(
-                argument(3),
-                algebraic(self.number(), (x, y, z), shape_parameters),
-            ),
+            | Internal::WitchOfAgnesi => {
+                with_strength(argument(3), algebraic(self, (x, y, z), shape_parameters))
+            }
             Internal::Blob => blob(
                 (x, y, z),
                 argument(3),
