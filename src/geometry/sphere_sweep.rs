@@ -47,10 +47,6 @@ struct Frustum {
     /// Bounding sphere for a quick rejection.
     centre: DVec3,
     reach: f64,
-    /// The two balls the frustum joins: radii and the distance between their centres.
-    start_radius: f64,
-    end_radius: f64,
-    length: f64,
 }
 
 /// One piece of the chain: a ball or the frustum joining two neighbours.
@@ -99,10 +95,16 @@ impl Piece {
         match self {
             Piece::Ball(ball) => ball_box(ball.centre, ball.radius),
             Piece::Frustum(frustum) => {
-                ball_box(frustum.start, frustum.start_radius).union(&ball_box(
-                    frustum.start + frustum.axis * frustum.length,
-                    frustum.end_radius,
-                ))
+                // The solid is the hull of its two end discs; a disc across unit axis `a`
+                // reaches `radius * sqrt(1 - a_i²)` along each coordinate axis.
+                let spread = (DVec3::ONE - frustum.axis * frustum.axis).max(DVec3::ZERO);
+                let spread = DVec3::new(spread.x.sqrt(), spread.y.sqrt(), spread.z.sqrt());
+                let disc = |along: f64| {
+                    let centre = frustum.start + frustum.axis * along;
+                    let half = spread * frustum.radius_at(along);
+                    Aabb::from_points([centre - half, centre + half])
+                };
+                disc(frustum.near).union(&disc(frustum.far))
             }
         }
     }
@@ -281,9 +283,6 @@ impl Frustum {
             sin,
             centre: first.centre + offset * 0.5,
             reach,
-            start_radius: first.radius,
-            end_radius: second.radius,
-            length: distance,
         })
     }
 
