@@ -16,7 +16,8 @@ use super::internal_shapes::{
 use crate::noise::{noise, NoiseGenerator};
 use glam::DVec3;
 
-/// One implemented internal function, named after its functions.inc declaration.
+/// One implemented internal function, named after its functions.inc declaration, in the
+/// order of POV-Ray's numbers (the order of [`FUNCTIONS`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Internal {
     /// 0, `f_algbr_cyl1(x,y,z, strength, limit, sor switch, sor offset, sor angle)`.
@@ -31,15 +32,15 @@ pub enum Internal {
     Bicorn,
     /// 5, `f_bifolia(x,y,z, strength, scale)`.
     Bifolia,
-    /// 7, `f_blob2(x,y,z, separation, inverse size, strength, threshold)`.
     /// 6, `f_blob(x,y,z, separation, strength1, inverse radius1, strength2, inverse radius2)`.
     Blob,
+    /// 7, `f_blob2(x,y,z, separation, inverse size, strength, threshold)`.
     Blob2,
-    /// 11, `f_crossed_trough(x,y,z, strength)`.
     /// 8, `f_boy_surface(x,y,z, strength, scale)`.
     BoySurface,
     /// 10, `f_cross_ellipsoids(x,y,z, eccentricity, inverse size, diameter, threshold)`.
     CrossEllipsoids,
+    /// 11, `f_crossed_trough(x,y,z, strength)`.
     CrossedTrough,
     /// 12, `f_cubic_saddle(x,y,z, strength)`.
     CubicSaddle,
@@ -51,9 +52,9 @@ pub enum Internal {
     DevilsCurve2d,
     /// 17, `f_ellipsoid(x,y,z, sx, sy, sz): |(sx x, sy y, sz z)|`.
     Ellipsoid,
-    /// 20, `f_folium_surface(x,y,z, strength, neck, divergence)`.
     /// 19, `f_flange_cover(x,y,z, spikiness, inverse size, flange, threshold)`.
     FlangeCover,
+    /// 20, `f_folium_surface(x,y,z, strength, neck, divergence)`.
     FoliumSurface,
     /// 21, `f_folium_surface_2d(x,y,z, strength, neck, divergence, sor switch, sor offset, sor angle)`.
     FoliumSurface2d,
@@ -65,19 +66,19 @@ pub enum Internal {
     Helix1,
     /// 26, `f_helix2(x,y,z, unused, period, minor, major, unused, section, unused angle)`.
     Helix2,
+    /// 27, `f_hex_x(x,y,z, unused)`.
+    HexagonalPrisms,
     /// 28, `f_hex_y(x,y,z, unused)`.
     HexagonalLines,
     /// 29, `f_hetero_mf(x,y,z, H, lacunarity, octaves, offset, T, generator)`.
-    /// 27, `f_hex_x(x,y,z, unused)`.
-    HexagonalPrisms,
     HeteroMultifractal,
     /// 30, `f_hunt_surface(x,y,z, strength)`.
     HuntSurface,
     /// 31, `f_hyperbolic_torus(x,y,z, strength, major, minor)`.
     HyperbolicTorus,
-    /// 33, `f_kampyle_of_eudoxus(x,y,z, strength, dimple, closeness)`.
     /// 32, `f_isect_ellipsoids(x,y,z, eccentricity, inverse size, diameter, threshold)`.
     IsectEllipsoids,
+    /// 33, `f_kampyle_of_eudoxus(x,y,z, strength, dimple, closeness)`.
     KampyleOfEudoxus,
     /// 34, `f_kampyle_of_eudoxus_2d(x,y,z, strength, dimple, closeness, sor switch, sor offset, sor angle)`.
     KampyleOfEudoxus2d,
@@ -111,15 +112,15 @@ pub enum Internal {
     Pillow,
     /// 49, `f_piriform(x,y,z, strength)`.
     Piriform,
-    /// 51, `f_poly4(x,y,z, c0, c1, c2, c3, c4): the quartic in y revolved around the y axis`.
     /// 50, `f_piriform_2d(x,y,z, strength, size1, size2, fatness, sor switch, sor offset, sor angle)`.
     Piriform2d,
+    /// 51, `f_poly4(x,y,z, c0, c1, c2, c3, c4): the quartic in y revolved around the y axis`.
     Poly4,
-    /// 54, `f_quartic_paraboloid(x,y,z, strength)`.
-    /// 53, `f_quantum(x,y,z, unused)`.
-    Quantum,
     /// 52, `f_polytubes(x,y,z, count, c0, c1, c2, c3, c4)`.
     Polytubes,
+    /// 53, `f_quantum(x,y,z, unused)`.
+    Quantum,
+    /// 54, `f_quartic_paraboloid(x,y,z, strength)`.
     QuarticParaboloid,
     /// 55, `f_quartic_saddle(x,y,z, strength)`.
     QuarticSaddle,
@@ -135,13 +136,13 @@ pub enum Internal {
     RoundedBox,
     /// 61, `f_sphere(x,y,z, radius)`.
     Sphere,
-    /// 65, `f_steiners_roman(x,y,z, strength)`.
-    /// 63, `f_spikes_2d(x,y,z, height, x frequency, z frequency, rate)`.
     /// 62, `f_spikes(x,y,z, spikiness, hollowness, size, roundness, fatness)`.
     Spikes,
+    /// 63, `f_spikes_2d(x,y,z, height, x frequency, z frequency, rate)`.
     Spikes2d,
     /// 64, `f_spiral(x,y,z, spacing, thickness, outer radius, -, -, section)`.
     Spiral,
+    /// 65, `f_steiners_roman(x,y,z, strength)`.
     SteinersRoman,
     /// 66, `f_strophoid(x,y,z, strength, bulb, sharpness, fatness)`.
     Strophoid,
@@ -169,6 +170,85 @@ pub enum Internal {
     NoiseGenerator,
 }
 
+/// Each implemented function with POV-Ray's number and its number of arguments (`x, y, z`
+/// included), in the order of [`Internal`]'s variants.
+const FUNCTIONS: [(Internal, u8, usize); 74] = [
+    (Internal::AlgebraicCylinder1, 0, 8),
+    (Internal::AlgebraicCylinder2, 1, 8),
+    (Internal::AlgebraicCylinder3, 2, 8),
+    (Internal::AlgebraicCylinder4, 3, 8),
+    (Internal::Bicorn, 4, 5),
+    (Internal::Bifolia, 5, 5),
+    (Internal::Blob, 6, 8),
+    (Internal::Blob2, 7, 7),
+    (Internal::BoySurface, 8, 5),
+    (Internal::CrossEllipsoids, 10, 7),
+    (Internal::CrossedTrough, 11, 4),
+    (Internal::CubicSaddle, 12, 4),
+    (Internal::Cushion, 13, 4),
+    (Internal::DevilsCurve, 14, 4),
+    (Internal::DevilsCurve2d, 15, 9),
+    (Internal::Ellipsoid, 17, 6),
+    (Internal::FlangeCover, 19, 7),
+    (Internal::FoliumSurface, 20, 6),
+    (Internal::FoliumSurface2d, 21, 9),
+    (Internal::Glob, 22, 4),
+    (Internal::Heart, 23, 4),
+    (Internal::Helix1, 25, 10),
+    (Internal::Helix2, 26, 10),
+    (Internal::HexagonalPrisms, 27, 4),
+    (Internal::HexagonalLines, 28, 4),
+    (Internal::HeteroMultifractal, 29, 9),
+    (Internal::HuntSurface, 30, 4),
+    (Internal::HyperbolicTorus, 31, 6),
+    (Internal::IsectEllipsoids, 32, 7),
+    (Internal::KampyleOfEudoxus, 33, 6),
+    (Internal::KampyleOfEudoxus2d, 34, 9),
+    (Internal::KleinBottle, 35, 4),
+    (Internal::KummerSurface1, 36, 4),
+    (Internal::KummerSurface2, 37, 7),
+    (Internal::LemniscateOfGerono, 38, 4),
+    (Internal::LemniscateOfGerono2d, 39, 9),
+    (Internal::Mesh1, 40, 8),
+    (Internal::Mitre, 41, 4),
+    (Internal::NodalCubic, 42, 4),
+    (Internal::Odd, 43, 4),
+    (Internal::OvalsOfCassini, 44, 7),
+    (Internal::Paraboloid, 45, 4),
+    (Internal::ParabolicTorus, 46, 6),
+    (Internal::Phi, 47, 3),
+    (Internal::Pillow, 48, 4),
+    (Internal::Piriform, 49, 4),
+    (Internal::Piriform2d, 50, 10),
+    (Internal::Poly4, 51, 8),
+    (Internal::Polytubes, 52, 9),
+    (Internal::Quantum, 53, 4),
+    (Internal::QuarticParaboloid, 54, 4),
+    (Internal::QuarticSaddle, 55, 4),
+    (Internal::QuarticCylinder, 56, 6),
+    (Internal::Radius, 57, 3),
+    (Internal::Ridge, 58, 9),
+    (Internal::RidgedMultifractal, 59, 9),
+    (Internal::RoundedBox, 60, 7),
+    (Internal::Sphere, 61, 4),
+    (Internal::Spikes, 62, 8),
+    (Internal::Spikes2d, 63, 7),
+    (Internal::Spiral, 64, 9),
+    (Internal::SteinersRoman, 65, 4),
+    (Internal::Strophoid, 66, 7),
+    (Internal::Strophoid2d, 67, 10),
+    (Internal::Superellipsoid, 68, 5),
+    (Internal::Theta, 69, 3),
+    (Internal::Torus, 70, 5),
+    (Internal::Torus2, 71, 6),
+    (Internal::TorusGumdrop, 72, 4),
+    (Internal::Umbrella, 73, 4),
+    (Internal::WitchOfAgnesi, 74, 5),
+    (Internal::WitchOfAgnesi2d, 75, 9),
+    (Internal::Noise3d, 76, 3),
+    (Internal::NoiseGenerator, 78, 4),
+];
+
 /// The offset POV-Ray subtracts from `f_rounded_box`'s distance (measured).
 const ROUNDED_BOX_OFFSET: f64 = 1e-6;
 
@@ -178,243 +258,20 @@ impl Internal {
         if number.fract() != 0.0 || !(0.0..=255.0).contains(&number) {
             return None;
         }
-        Some(match number as u8 {
-            0 => Internal::AlgebraicCylinder1,
-            1 => Internal::AlgebraicCylinder2,
-            2 => Internal::AlgebraicCylinder3,
-            3 => Internal::AlgebraicCylinder4,
-            4 => Internal::Bicorn,
-            5 => Internal::Bifolia,
-            7 => Internal::Blob2,
-            11 => Internal::CrossedTrough,
-            12 => Internal::CubicSaddle,
-            13 => Internal::Cushion,
-            14 => Internal::DevilsCurve,
-            15 => Internal::DevilsCurve2d,
-            17 => Internal::Ellipsoid,
-            20 => Internal::FoliumSurface,
-            21 => Internal::FoliumSurface2d,
-            22 => Internal::Glob,
-            23 => Internal::Heart,
-            25 => Internal::Helix1,
-            26 => Internal::Helix2,
-            29 => Internal::HeteroMultifractal,
-            31 => Internal::HyperbolicTorus,
-            33 => Internal::KampyleOfEudoxus,
-            34 => Internal::KampyleOfEudoxus2d,
-            35 => Internal::KleinBottle,
-            36 => Internal::KummerSurface1,
-            37 => Internal::KummerSurface2,
-            38 => Internal::LemniscateOfGerono,
-            39 => Internal::LemniscateOfGerono2d,
-            41 => Internal::Mitre,
-            42 => Internal::NodalCubic,
-            43 => Internal::Odd,
-            44 => Internal::OvalsOfCassini,
-            45 => Internal::Paraboloid,
-            46 => Internal::ParabolicTorus,
-            47 => Internal::Phi,
-            48 => Internal::Pillow,
-            49 => Internal::Piriform,
-            51 => Internal::Poly4,
-            54 => Internal::QuarticParaboloid,
-            55 => Internal::QuarticSaddle,
-            56 => Internal::QuarticCylinder,
-            57 => Internal::Radius,
-            58 => Internal::Ridge,
-            59 => Internal::RidgedMultifractal,
-            60 => Internal::RoundedBox,
-            61 => Internal::Sphere,
-            65 => Internal::SteinersRoman,
-            66 => Internal::Strophoid,
-            67 => Internal::Strophoid2d,
-            68 => Internal::Superellipsoid,
-            69 => Internal::Theta,
-            70 => Internal::Torus,
-            71 => Internal::Torus2,
-            72 => Internal::TorusGumdrop,
-            73 => Internal::Umbrella,
-            74 => Internal::WitchOfAgnesi,
-            75 => Internal::WitchOfAgnesi2d,
-            76 => Internal::Noise3d,
-            78 => Internal::NoiseGenerator,
-            6 => Internal::Blob,
-            10 => Internal::CrossEllipsoids,
-            19 => Internal::FlangeCover,
-            27 => Internal::HexagonalPrisms,
-            32 => Internal::IsectEllipsoids,
-            50 => Internal::Piriform2d,
-            53 => Internal::Quantum,
-            63 => Internal::Spikes2d,
-            52 => Internal::Polytubes,
-            62 => Internal::Spikes,
-            64 => Internal::Spiral,
-            28 => Internal::HexagonalLines,
-            8 => Internal::BoySurface,
-            30 => Internal::HuntSurface,
-            40 => Internal::Mesh1,
-            _ => return None,
-        })
+        FUNCTIONS
+            .iter()
+            .find(|(_, known, _)| f64::from(*known) == number)
+            .map(|(function, _, _)| *function)
     }
 
     /// POV-Ray's number for the function.
     pub fn number(self) -> u8 {
-        match self {
-            Internal::AlgebraicCylinder1 => 0,
-            Internal::AlgebraicCylinder2 => 1,
-            Internal::AlgebraicCylinder3 => 2,
-            Internal::AlgebraicCylinder4 => 3,
-            Internal::Bicorn => 4,
-            Internal::Bifolia => 5,
-            Internal::Blob => 6,
-            Internal::Blob2 => 7,
-            Internal::BoySurface => 8,
-            Internal::CrossEllipsoids => 10,
-            Internal::CrossedTrough => 11,
-            Internal::CubicSaddle => 12,
-            Internal::Cushion => 13,
-            Internal::DevilsCurve => 14,
-            Internal::DevilsCurve2d => 15,
-            Internal::Ellipsoid => 17,
-            Internal::FlangeCover => 19,
-            Internal::FoliumSurface => 20,
-            Internal::FoliumSurface2d => 21,
-            Internal::Glob => 22,
-            Internal::Heart => 23,
-            Internal::Helix1 => 25,
-            Internal::Helix2 => 26,
-            Internal::HexagonalPrisms => 27,
-            Internal::HexagonalLines => 28,
-            Internal::HeteroMultifractal => 29,
-            Internal::HuntSurface => 30,
-            Internal::HyperbolicTorus => 31,
-            Internal::IsectEllipsoids => 32,
-            Internal::KampyleOfEudoxus => 33,
-            Internal::KampyleOfEudoxus2d => 34,
-            Internal::KleinBottle => 35,
-            Internal::KummerSurface1 => 36,
-            Internal::KummerSurface2 => 37,
-            Internal::LemniscateOfGerono => 38,
-            Internal::LemniscateOfGerono2d => 39,
-            Internal::Mesh1 => 40,
-            Internal::Mitre => 41,
-            Internal::NodalCubic => 42,
-            Internal::Odd => 43,
-            Internal::OvalsOfCassini => 44,
-            Internal::Paraboloid => 45,
-            Internal::ParabolicTorus => 46,
-            Internal::Phi => 47,
-            Internal::Pillow => 48,
-            Internal::Piriform => 49,
-            Internal::Piriform2d => 50,
-            Internal::Poly4 => 51,
-            Internal::Quantum => 53,
-            Internal::Polytubes => 52,
-            Internal::QuarticParaboloid => 54,
-            Internal::QuarticSaddle => 55,
-            Internal::QuarticCylinder => 56,
-            Internal::Radius => 57,
-            Internal::Ridge => 58,
-            Internal::RidgedMultifractal => 59,
-            Internal::RoundedBox => 60,
-            Internal::Sphere => 61,
-            Internal::Spikes => 62,
-            Internal::Spikes2d => 63,
-            Internal::Spiral => 64,
-            Internal::SteinersRoman => 65,
-            Internal::Strophoid => 66,
-            Internal::Strophoid2d => 67,
-            Internal::Superellipsoid => 68,
-            Internal::Theta => 69,
-            Internal::Torus => 70,
-            Internal::Torus2 => 71,
-            Internal::TorusGumdrop => 72,
-            Internal::Umbrella => 73,
-            Internal::WitchOfAgnesi => 74,
-            Internal::WitchOfAgnesi2d => 75,
-            Internal::Noise3d => 76,
-            Internal::NoiseGenerator => 78,
-        }
+        FUNCTIONS[self as usize].1
     }
 
     /// Number of arguments, `x, y, z` included.
     pub fn arity(self) -> usize {
-        match self {
-            Internal::AlgebraicCylinder1 => 8,
-            Internal::AlgebraicCylinder2 => 8,
-            Internal::AlgebraicCylinder3 => 8,
-            Internal::AlgebraicCylinder4 => 8,
-            Internal::Bicorn => 5,
-            Internal::Bifolia => 5,
-            Internal::Blob => 8,
-            Internal::Blob2 => 7,
-            Internal::BoySurface => 5,
-            Internal::CrossEllipsoids => 7,
-            Internal::CrossedTrough => 4,
-            Internal::CubicSaddle => 4,
-            Internal::Cushion => 4,
-            Internal::DevilsCurve => 4,
-            Internal::DevilsCurve2d => 9,
-            Internal::Ellipsoid => 6,
-            Internal::FlangeCover => 7,
-            Internal::FoliumSurface => 6,
-            Internal::FoliumSurface2d => 9,
-            Internal::Glob => 4,
-            Internal::Heart => 4,
-            Internal::Helix1 => 10,
-            Internal::Helix2 => 10,
-            Internal::HexagonalPrisms => 4,
-            Internal::HexagonalLines => 4,
-            Internal::HeteroMultifractal => 9,
-            Internal::HuntSurface => 4,
-            Internal::HyperbolicTorus => 6,
-            Internal::IsectEllipsoids => 7,
-            Internal::KampyleOfEudoxus => 6,
-            Internal::KampyleOfEudoxus2d => 9,
-            Internal::KleinBottle => 4,
-            Internal::KummerSurface1 => 4,
-            Internal::KummerSurface2 => 7,
-            Internal::LemniscateOfGerono => 4,
-            Internal::LemniscateOfGerono2d => 9,
-            Internal::Mesh1 => 8,
-            Internal::Mitre => 4,
-            Internal::NodalCubic => 4,
-            Internal::Odd => 4,
-            Internal::OvalsOfCassini => 7,
-            Internal::Paraboloid => 4,
-            Internal::ParabolicTorus => 6,
-            Internal::Phi => 3,
-            Internal::Pillow => 4,
-            Internal::Piriform => 4,
-            Internal::Piriform2d => 10,
-            Internal::Poly4 => 8,
-            Internal::Quantum => 4,
-            Internal::Polytubes => 9,
-            Internal::QuarticParaboloid => 4,
-            Internal::QuarticSaddle => 4,
-            Internal::QuarticCylinder => 6,
-            Internal::Radius => 3,
-            Internal::Ridge => 9,
-            Internal::RidgedMultifractal => 9,
-            Internal::RoundedBox => 7,
-            Internal::Sphere => 4,
-            Internal::Spikes => 8,
-            Internal::Spikes2d => 7,
-            Internal::Spiral => 9,
-            Internal::SteinersRoman => 4,
-            Internal::Strophoid => 7,
-            Internal::Strophoid2d => 10,
-            Internal::Superellipsoid => 5,
-            Internal::Theta => 3,
-            Internal::Torus => 5,
-            Internal::Torus2 => 6,
-            Internal::TorusGumdrop => 4,
-            Internal::Umbrella => 4,
-            Internal::WitchOfAgnesi => 5,
-            Internal::WitchOfAgnesi2d => 9,
-            Internal::Noise3d => 3,
-            Internal::NoiseGenerator => 4,
-        }
+        FUNCTIONS[self as usize].2
     }
 
     /// The value for the arguments `x, y, z, P0, ..` (missing ones read as 0).
@@ -432,7 +289,7 @@ impl Internal {
             | Internal::AlgebraicCylinder4 => {
                 let (strength, limit) = (argument(3), argument(4));
                 let (u, v) = curve_plane(x, y, z, argument(5), argument(6), argument(7));
-                let value = strength * algebraic(self.number(), (u, v, 0.0), &[]);
+                let value = strength * algebraic(self, (u, v, 0.0), &[]);
                 value.max(-limit).min(limit)
             }
             Internal::DevilsCurve2d
@@ -441,17 +298,11 @@ impl Internal {
             | Internal::LemniscateOfGerono2d
             | Internal::WitchOfAgnesi2d => {
                 let (u, v) = curve_plane(x, y, z, argument(6), argument(7), argument(8));
-                with_strength(
-                    argument(3),
-                    algebraic(self.number(), (u, v, 0.0), shape_parameters),
-                )
+                with_strength(argument(3), algebraic(self, (u, v, 0.0), shape_parameters))
             }
             Internal::Piriform2d | Internal::Strophoid2d => {
                 let (u, v) = curve_plane(x, y, z, argument(7), argument(8), argument(9));
-                with_strength(
-                    argument(3),
-                    algebraic(self.number(), (u, v, 0.0), shape_parameters),
-                )
+                with_strength(argument(3), algebraic(self, (u, v, 0.0), shape_parameters))
             }
             Internal::Bicorn
             | Internal::Bifolia
@@ -484,10 +335,9 @@ impl Internal {
             | Internal::Strophoid
             | Internal::TorusGumdrop
             | Internal::Umbrella
-            | Internal::WitchOfAgnesi => with_strength(
-                argument(3),
-                algebraic(self.number(), (x, y, z), shape_parameters),
-            ),
+            | Internal::WitchOfAgnesi => {
+                with_strength(argument(3), algebraic(self, (x, y, z), shape_parameters))
+            }
             Internal::Blob => blob(
                 (x, y, z),
                 argument(3),
@@ -621,6 +471,19 @@ impl Internal {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The table is in the variants' order, and every number leads back to its function.
+    #[test]
+    fn the_table_follows_the_variants() {
+        for (index, (function, number, arity)) in FUNCTIONS.iter().enumerate() {
+            assert_eq!(*function as usize, index);
+            assert_eq!(Internal::from_number(f64::from(*number)), Some(*function));
+            assert_eq!(function.number(), *number);
+            assert!((3..=10).contains(arity));
+        }
+        assert_eq!(Internal::from_number(9.0), None);
+        assert_eq!(Internal::from_number(61.5), None);
+    }
 
     /// Values povray 3.7 prints for the same calls.
     #[test]

@@ -5,6 +5,7 @@
 //! recovered from values povray 3.7 prints with `#debug` (the manual names the parameters but
 //! gives no formulas). Holds: pure functions, no allocation.
 
+use super::internal::Internal;
 use std::f64::consts::PI;
 
 /// The largest magnitude the "field strength" functions return: povray clips their values to
@@ -262,94 +263,133 @@ fn apery_boy_surface(x: f64, y: f64, z: f64) -> f64 {
                 + 4.0 * zz * zz)
 }
 
-/// The algebraic surfaces and curves that take a field strength, by povray's number: the
+/// The algebraic surfaces and curves that take a field strength, by function: the
 /// polynomial (before strength) at `(x, y, z)` with the remaining parameters.
-pub fn algebraic(number: u8, (x, y, z): (f64, f64, f64), p: &[f64]) -> f64 {
+pub fn algebraic(function: Internal, (x, y, z): (f64, f64, f64), p: &[f64]) -> f64 {
     let parameter = |index: usize| p.get(index).copied().unwrap_or(0.0);
     let (a, b, c) = (parameter(0), parameter(1), parameter(2));
     let (xx, yy, zz) = (x * x, y * y, z * z);
     let rr = xx + yy + zz;
     let fourth_powers = xx * xx + yy * yy + zz * zz;
     let mixed_squares = xx * yy + yy * zz + zz * xx;
-    match number {
+    match function {
         // f_algbr_cyl1..4 (2d curves in x, y).
-        0 => yy - xx + x.abs().powi(3),
-        1 => -yy + 2.0 * y * yy - yy * yy + 3.0 * xx * y - 2.0 * xx * xx,
-        2 => -yy + x * yy + 2.0 * xx * y - xx * yy - xx * xx,
-        3 => y * yy - yy * yy - 3.0 * xx * y - 2.0 * xx * yy - xx * xx,
+        Internal::AlgebraicCylinder1 => yy - xx + x.abs().powi(3),
+        Internal::AlgebraicCylinder2 => -yy + 2.0 * y * yy - yy * yy + 3.0 * xx * y - 2.0 * xx * xx,
+        Internal::AlgebraicCylinder3 => -yy + x * yy + 2.0 * xx * y - xx * yy - xx * xx,
+        Internal::AlgebraicCylinder4 => y * yy - yy * yy - 3.0 * xx * y - 2.0 * xx * yy - xx * xx,
         // f_boy_surface: Apéry's sextic, scaled by a as well as the strength (measured).
-        8 => a * apery_boy_surface(x, y, z),
+        Internal::BoySurface => a * apery_boy_surface(x, y, z),
         // f_bicorn, scale a.
-        4 => {
+        Internal::Bicorn => {
             let around = xx + zz;
             yy * (a * a - around) - (around + 2.0 * a * y - a * a).powi(2)
         }
         // f_bifolia, scale a.
-        5 => a * y * (xx + zz) - rr * rr,
-        11 => xx * zz - y,
-        12 => z + y * yy - x * xx,
+        Internal::Bifolia => a * y * (xx + zz) - rr * rr,
+        Internal::CrossedTrough => xx * zz - y,
+        Internal::CubicSaddle => z + y * yy - x * xx,
         // f_cushion and f_odd (povray gives both the same values).
-        13 | 43 => {
+        Internal::Cushion | Internal::Odd => {
             xx + yy - 2.0 * zz + 2.0 * z * zz + 2.0 * yy * z - zz * zz - yy * zz - yy * yy + xx * zz
                 - 2.0 * xx * yy
                 - xx * xx
         }
-        14 => -yy / 4.0 + 9.0 * xx / 25.0 - zz * zz + yy * yy - 2.0 * xx * zz - xx * xx,
+        Internal::DevilsCurve => {
+            -yy / 4.0 + 9.0 * xx / 25.0 - zz * zz + yy * yy - 2.0 * xx * zz - xx * xx
+        }
         // f_devils_curve_2d, x factor a, y factor b.
-        15 => -b * b * yy + yy * yy + a * a * xx - xx * xx,
+        Internal::DevilsCurve2d => -b * b * yy + yy * yy + a * a * xx - xx * xx,
         // f_folium_surface, neck a, divergence b.
-        20 => yy + zz + xx * (1.0 + b) + x * (yy + zz) * (b - 4.0 * a),
-        21 => -(yy + xx * (1.0 + b) + x * yy * (b - 4.0 * a)),
-        22 => x * xx * xx / 2.0 + xx * xx / 2.0 - yy - zz,
-        23 => xx * z * zz / 10.0 + yy * z * zz - (2.0 * xx + yy + zz - 1.0).powi(3),
+        Internal::FoliumSurface => yy + zz + xx * (1.0 + b) + x * (yy + zz) * (b - 4.0 * a),
+        Internal::FoliumSurface2d => -(yy + xx * (1.0 + b) + x * yy * (b - 4.0 * a)),
+        Internal::Glob => x * xx * xx / 2.0 + xx * xx / 2.0 - yy - zz,
+        Internal::Heart => xx * z * zz / 10.0 + yy * z * zz - (2.0 * xx + yy + zz - 1.0).powi(3),
         // f_hyperbolic_torus, major a, minor b.
         // f_hunt_surface.
-        30 => -(4.0 * (rr - 13.0).powi(3) + 27.0 * (3.0 * xx + yy - 4.0 * zz - 12.0).powi(2)),
-        31 => -(xx + yy - zz + a * a - b * b).powi(2) + 4.0 * a * a * (xx - zz),
+        Internal::HuntSurface => {
+            -(4.0 * (rr - 13.0).powi(3) + 27.0 * (3.0 * xx + yy - 4.0 * zz - 12.0).powi(2))
+        }
+        Internal::HyperbolicTorus => {
+            -(xx + yy - zz + a * a - b * b).powi(2) + 4.0 * a * a * (xx - zz)
+        }
         // f_kampyle_of_eudoxus, dimple a, closeness b.
-        33 => b * b * xx * (xx - a * a) - yy - zz,
-        34 => -yy - a * b * b * b * xx + b * b * xx * xx,
-        35 => {
+        Internal::KampyleOfEudoxus => b * b * xx * (xx - a * a) - yy - zz,
+        Internal::KampyleOfEudoxus2d => -yy - a * b * b * b * xx + b * b * xx * xx,
+        Internal::KleinBottle => {
             let lower = rr - 2.0 * y - 1.0;
             -((rr + 2.0 * y - 1.0) * (lower * lower - 8.0 * zz) + 16.0 * x * z * lower)
         }
-        36 => -1.0 + rr - fourth_powers + mixed_squares,
+        Internal::KummerSurface1 => -1.0 + rr - fourth_powers + mixed_squares,
         // f_kummer_surface_v2, rod width a, divergence b, rod length c.
-        37 => 1.0 - a * rr - fourth_powers - b * mixed_squares - c * x * y * z,
-        38 => xx - xx * xx - yy - zz,
+        Internal::KummerSurface2 => {
+            1.0 - a * rr - fourth_powers - b * mixed_squares - c * x * y * z
+        }
+        Internal::LemniscateOfGerono => xx - xx * xx - yy - zz,
         // f_piriform_2d, size factors a and b, fatness c.
-        50 => -yy + c * c * xx * (a * x + b * xx),
+        Internal::Piriform2d => -yy + c * c * xx * (a * x + b * xx),
         // f_lemniscate_of_gerono_2d, size a, width b.
-        39 => -yy + a * a * b * b * xx - b * b * xx * xx,
-        41 => yy * (1.0 - yy - zz) - 4.0 * xx * rr,
-        42 => 6.0 * y * z - z * zz - y * yy,
+        Internal::LemniscateOfGerono2d => -yy + a * a * b * b * xx - b * b * xx * xx,
+        Internal::Mitre => yy * (1.0 - yy - zz) - 4.0 * xx * rr,
+        Internal::NodalCubic => 6.0 * y * z - z * zz - y * yy,
         // f_ovals_of_cassini, major a, filling b, thickness c.
-        44 => -(rr + a * a).powi(2) + a * a * c * (xx + zz) + b * b,
+        Internal::OvalsOfCassini => -(rr + a * a).powi(2) + a * a * c * (xx + zz) + b * b,
         // f_parabolic_torus, major a, minor b.
-        46 => {
+        Internal::ParabolicTorus => {
             let (major, minor) = (a * a, b * b);
             -(xx + yy - z).powi(2) - (major - minor).powi(2) - (major - minor) * yy
                 + (major + minor) * (xx - z)
         }
-        48 => fourth_powers - rr,
-        49 => xx * xx - x * xx + yy + zz,
-        54 => y - xx * xx - zz * zz,
-        55 => y + zz * zz - xx * xx,
+        Internal::Pillow => fourth_powers - rr,
+        Internal::Piriform => xx * xx - x * xx + yy + zz,
+        Internal::QuarticParaboloid => y - xx * xx - zz * zz,
+        Internal::QuarticSaddle => y + zz * zz - xx * xx,
         // f_quartic_cylinder, egg diameter a, width b.
-        56 => a * a * b * b - (xx + zz) * (yy + b * b),
-        65 => -x * y * z - mixed_squares,
+        Internal::QuarticCylinder => a * a * b * b - (xx + zz) * (yy + b * b),
+        Internal::SteinersRoman => -x * y * z - mixed_squares,
         // f_strophoid (and its 2d curve with z = 0), bulb a, sharpness b, fatness c.
-        66 | 67 => (x - b) * (yy + zz) + c * c * xx * (x + a),
-        72 => {
+        Internal::Strophoid | Internal::Strophoid2d => (x - b) * (yy + zz) + c * c * xx * (x + a),
+        Internal::TorusGumdrop => {
             let around = yy + zz;
             -17.0 + 20.0 * rr - 4.0 * around * around - 17.0 * xx * around - 4.0 * xx * xx
         }
-        73 => y * zz - xx,
+        Internal::Umbrella => y * zz - xx,
         // f_witch_of_agnesi, width a.
-        74 => a - y * (a + xx + zz),
+        Internal::WitchOfAgnesi => a - y * (a + xx + zz),
         // f_witch_of_agnesi_2d, size a, height b.
-        75 => b - y * (a * a + xx),
-        _ => 0.0,
+        Internal::WitchOfAgnesi2d => b - y * (a * a + xx),
+        // No polynomial: [`Internal::eval`] computes these otherwise and never asks.
+        Internal::Blob
+        | Internal::Blob2
+        | Internal::CrossEllipsoids
+        | Internal::Ellipsoid
+        | Internal::FlangeCover
+        | Internal::Helix1
+        | Internal::Helix2
+        | Internal::HexagonalPrisms
+        | Internal::HexagonalLines
+        | Internal::HeteroMultifractal
+        | Internal::IsectEllipsoids
+        | Internal::Mesh1
+        | Internal::Paraboloid
+        | Internal::Phi
+        | Internal::Poly4
+        | Internal::Polytubes
+        | Internal::Quantum
+        | Internal::Radius
+        | Internal::Ridge
+        | Internal::RidgedMultifractal
+        | Internal::RoundedBox
+        | Internal::Sphere
+        | Internal::Spikes
+        | Internal::Spikes2d
+        | Internal::Spiral
+        | Internal::Superellipsoid
+        | Internal::Theta
+        | Internal::Torus
+        | Internal::Torus2
+        | Internal::Noise3d
+        | Internal::NoiseGenerator => 0.0,
     }
 }
 

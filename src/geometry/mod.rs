@@ -46,6 +46,7 @@ mod test_support;
 mod tests;
 
 pub use roots::MAX_ROOTS as MAX_CROSSINGS;
+pub use spindle::lemon_smallest_inner_radius;
 pub use world::World;
 
 use crate::scene::{Interior, Texture};

@@ -10,7 +10,7 @@
 //! pieces whose boxes the line meets, nearest first. Down to [`TABLE_DEPTH`] the boxes are
 //! measured once from sampled points; in deeper pieces Newton's method looks for the exact
 //! crossing, and pieces where it fails are split a few more times (or until their box is
-//! smaller than `accuracy`). A
+//! smaller than `accuracy`; shallower pieces are always split). A
 //! too-low max_gradient loses pieces of the surface, as in POV-Ray. The normal is the cross
 //! product of the partial derivatives at the uv point nearest the hit. Nothing allocates; a
 //! search spends at most [`MAX_PIECES`] pieces.
@@ -287,7 +287,9 @@ impl ParametricSurface {
             }
             let half = (piece.high - piece.low) * 0.5;
             let size = 2.0 * self.max_gradient * (half.x + half.y);
-            if size < self.accuracy || piece.depth >= TABLE_DEPTH + SPLIT_DEPTH {
+            // `accuracy` only ends the splitting of pieces Newton's method has been tried on.
+            let accurate = size < self.accuracy && piece.depth >= TABLE_DEPTH;
+            if accurate || piece.depth >= TABLE_DEPTH + SPLIT_DEPTH {
                 continue;
             }
             let mut children = [Piece::default(); 4];
@@ -443,6 +445,11 @@ mod tests {
 
     /// The plane sheet (u, v, 0.5 u) over the uv square [-1, 1]².
     fn sheet() -> ParametricSurface {
+        sheet_over(DVec2::splat(-1.0), DVec2::splat(1.0), 0.001)
+    }
+
+    /// The plane sheet (u, v, 0.5 u) over the uv rectangle from `low` to `high`.
+    fn sheet_over(low: DVec2, high: DVec2, accuracy: f64) -> ParametricSurface {
         let function = |node: Node| Arc::new(Function::new(node, 3));
         let half_u = Node::Binary(
             Binary::Multiply,
@@ -454,14 +461,14 @@ mod tests {
                 function(Node::Parameter(1)),
                 function(half_u),
             ],
-            uv_corner1: DVec2::splat(-1.0),
-            uv_corner2: DVec2::splat(1.0),
+            uv_corner1: low,
+            uv_corner2: high,
             container: Container::Box {
                 corner1: DVec3::splat(-2.0),
                 corner2: DVec3::splat(2.0),
             },
             max_gradient: 1.1,
-            accuracy: 0.001,
+            accuracy,
         })
         .unwrap()
     }
@@ -495,6 +502,25 @@ mod tests {
             }
         }
         assert!(hits > 100);
+    }
+
+    #[test]
+    fn a_coarse_accuracy_still_finds_the_surface() {
+        // Pieces above the table depth are smaller than this accuracy already; the search
+        // must still reach the depth where Newton's method is tried.
+        let surface = sheet_over(DVec2::ZERO, DVec2::ONE, 0.05);
+        let mut random = crate::geometry::test_support::Random::new(3);
+        for _ in 0..50 {
+            let target = DVec3::new(random.range(0.05, 0.95), random.range(0.05, 0.95), 0.0);
+            let target = DVec3::new(target.x, target.y, 0.5 * target.x);
+            let origin = target - DVec3::new(0.1, 0.2, 1.0);
+            let mut roots = Roots::new();
+            surface.intersect(origin, target - origin, &mut roots);
+            let (distance, _) = roots
+                .nearest_within(0.0, f64::INFINITY)
+                .unwrap_or_else(|| panic!("missed the sheet at {target}"));
+            assert!((distance - 1.0).abs() < 1e-3, "{distance} for {target}");
+        }
     }
 
     #[test]

@@ -47,10 +47,6 @@ struct Frustum {
     /// Bounding sphere for a quick rejection.
     centre: DVec3,
     reach: f64,
-    /// The two balls the frustum joins: radii and the distance between their centres.
-    start_radius: f64,
-    end_radius: f64,
-    length: f64,
 }
 
 /// One piece of the chain: a ball or the frustum joining two neighbours.
@@ -99,10 +95,16 @@ impl Piece {
         match self {
             Piece::Ball(ball) => ball_box(ball.centre, ball.radius),
             Piece::Frustum(frustum) => {
-                ball_box(frustum.start, frustum.start_radius).union(&ball_box(
-                    frustum.start + frustum.axis * frustum.length,
-                    frustum.end_radius,
-                ))
+                // The solid is the hull of its two end discs; a disc across unit axis `a`
+                // reaches `radius * sqrt(1 - a_i²)` along each coordinate axis.
+                let spread = (DVec3::ONE - frustum.axis * frustum.axis).max(DVec3::ZERO);
+                let spread = DVec3::new(spread.x.sqrt(), spread.y.sqrt(), spread.z.sqrt());
+                let disc = |along: f64| {
+                    let centre = frustum.start + frustum.axis * along;
+                    let half = spread * frustum.radius_at(along);
+                    Aabb::from_points([centre - half, centre + half])
+                };
+                disc(frustum.near).union(&disc(frustum.far))
             }
         }
     }
@@ -224,18 +226,28 @@ impl SphereSweep {
     }
 
     /// Outward normal at a surface point: that of the piece whose surface is nearest (among
-    /// the pieces whose box holds the point; the piece the point lies on is one of them).
+    /// the pieces whose box holds the point; the piece the point lies on is one of them). A
+    /// point no box holds (rounding at a box's face) takes the nearest of all pieces.
     pub fn normal(&self, point: DVec3) -> DVec3 {
-        let mut best = (f64::INFINITY, DVec3::Y);
-        self.tree.any_containing(point, |position| {
-            if let Some((gap, normal)) = self.pieces[position].surface_gap(point) {
-                if gap < best.0 {
-                    best = (gap, normal);
+        // The (gap, normal) of the nearest surface so far.
+        let consider = |best: &mut Option<(f64, DVec3)>, piece: &Piece| {
+            if let Some((gap, normal)) = piece.surface_gap(point) {
+                if best.is_none_or(|(nearest, _)| gap < nearest) {
+                    *best = Some((gap, normal));
                 }
             }
+        };
+        let mut best = None;
+        self.tree.any_containing(point, |position| {
+            consider(&mut best, &self.pieces[position]);
             false
         });
-        best.1
+        if best.is_none() {
+            for piece in &self.pieces {
+                consider(&mut best, piece);
+            }
+        }
+        best.map_or(DVec3::Y, |(_, normal)| normal)
     }
 
     /// Bounds of all spheres of the chain.
@@ -271,9 +283,6 @@ impl Frustum {
             sin,
             centre: first.centre + offset * 0.5,
             reach,
-            start_radius: first.radius,
-            end_radius: second.radius,
-            length: distance,
         })
     }
 
@@ -428,4 +437,31 @@ fn catmull_rom_weights(t: f64) -> [f64; 4] {
         0.5 * (-3.0 * t3 + 4.0 * t2 + t),
         0.5 * (t3 - t2),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_point_outside_every_box_takes_the_nearest_pieces_normal() {
+        let sweep = SphereSweep::new(&SphereSweepSpec {
+            spline: SweepSpline::Linear,
+            spheres: vec![(DVec3::ZERO, 1.0), (DVec3::X * 4.0, 1.0)],
+            tolerance: 1e-6,
+        })
+        .unwrap();
+        // On the surface: the ball's own normal.
+        let on_surface = sweep.normal(DVec3::new(-1.0, 0.0, 0.0)).normalize();
+        assert!(on_surface.abs_diff_eq(-DVec3::X, 1e-9));
+        // Beyond every piece's box (as rounding may leave a hit point): still the nearest
+        // piece's normal, not a fixed direction.
+        let beyond = sweep.normal(DVec3::new(-1.5, 0.0, 0.0)).normalize();
+        assert!(beyond.abs_diff_eq(-DVec3::X, 1e-9), "{beyond}");
+        let above_the_cone = sweep.normal(DVec3::new(2.0, 0.0, -1.5)).normalize();
+        assert!(
+            above_the_cone.abs_diff_eq(-DVec3::Z, 1e-9),
+            "{above_the_cone}"
+        );
+    }
 }

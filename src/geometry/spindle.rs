@@ -345,8 +345,9 @@ pub struct Lemon {
 impl Lemon {
     /// The lemon whose side, a circle arc of radius `inner_radius` turned around the axis,
     /// runs from the rim of radius `base_radius` at `base` to the rim of radius
-    /// `cap_radius` at `cap`, bulging outwards. `None` when no such arc exists (the inner
-    /// radius is shorter than half the distance between the rims) or the axis has no length.
+    /// `cap_radius` at `cap`, bulging outwards. An inner radius below
+    /// [`lemon_smallest_inner_radius`] is raised to it. `None` when the axis has no length or
+    /// the input is not finite.
     pub fn new(
         base: DVec3,
         base_radius: f64,
@@ -362,8 +363,9 @@ impl Lemon {
         }
         let up = axis / length;
         let (side, across) = up.any_orthonormal_pair();
-        let (offset, height) = lemon_centre(base_radius, cap_radius, length, inner_radius)?;
-        let piece = LemonPiece::new(offset, inner_radius, height, 0.0, length)?;
+        let radius = inner_radius.max(lemon_smallest_inner_radius(base_radius, cap_radius, length));
+        let (offset, height) = lemon_centre(base_radius, cap_radius, length, radius)?;
+        let piece = LemonPiece::new(offset, radius, height, 0.0, length)?;
         Some(Lemon {
             piece,
             open,
@@ -448,15 +450,28 @@ impl Lemon {
     }
 }
 
+/// The smallest inner radius a lemon with rims of radii `base_radius` (at height 0) and
+/// `cap_radius` (at height `length`) may have: the radius of the circle through both rims
+/// whose centre lies on the axis. A smaller circle through the rims has its centre on the
+/// rims' side of the axis, and the solid it sweeps is dimpled at the ends, not a lemon.
+pub fn lemon_smallest_inner_radius(base_radius: f64, cap_radius: f64, length: f64) -> f64 {
+    // The centre (0, height) is as far from (base_radius, 0) as from (cap_radius, length).
+    let height =
+        (cap_radius * cap_radius + length * length - base_radius * base_radius) / (2.0 * length);
+    (base_radius * base_radius + height * height).sqrt()
+}
+
 /// The centre (-offset, height) of a circle of radius `radius` through (base_radius, 0) and
-/// (cap_radius, length), on the far side of the chord from the rims (so the arc between them
-/// bulges outwards); `None` when the radius is shorter than half the chord.
+/// (cap_radius, length), on the far side of the axis from the rims (so the arc between them
+/// bulges outwards); a radius below [`lemon_smallest_inner_radius`] is raised to it, so the
+/// offset is never negative. `None` for degenerate input.
 fn lemon_centre(base_radius: f64, cap_radius: f64, length: f64, radius: f64) -> Option<(f64, f64)> {
+    let radius = radius.max(lemon_smallest_inner_radius(base_radius, cap_radius, length));
     let low = glam::DVec2::new(base_radius, 0.0);
     let high = glam::DVec2::new(cap_radius, length);
     let chord = high - low;
     let half = chord.length() * 0.5;
-    if !(radius >= half && half > 0.0) {
+    if !(radius.is_finite() && half > 0.0) {
         return None;
     }
     let middle = (low + high) * 0.5;
@@ -465,8 +480,8 @@ fn lemon_centre(base_radius: f64, cap_radius: f64, length: f64, radius: f64) -> 
     if across.x > 0.0 {
         across = -across;
     }
-    let centre = middle + across * (radius * radius - half * half).sqrt();
-    Some((-centre.x, centre.y))
+    let centre = middle + across * (radius * radius - half * half).max(0.0).sqrt();
+    Some(((-centre.x).max(0.0), centre.y))
 }
 
 /// Pushes the ends of the union of the intervals, each with its part.
@@ -606,8 +621,31 @@ mod tests {
         let mut roots = Roots::new();
         open.intersect(DVec3::Y * 5.0, -DVec3::Y, &mut roots);
         assert_eq!(roots.iter().count(), 0);
-        assert!(Lemon::new(DVec3::ZERO, 0.5, DVec3::Y * 2.0, 0.3, 0.9, false).is_none());
         assert!(Lemon::new(DVec3::ZERO, 0.5, DVec3::ZERO, 0.3, 2.0, false).is_none());
+    }
+
+    #[test]
+    fn too_small_inner_radius_is_raised_to_put_the_centre_on_the_axis() {
+        // The case: radius 0.5 is above half the chord (0.3) but below the radius at
+        // which the centre reaches the axis.
+        let smallest = lemon_smallest_inner_radius(0.3, 0.3, 0.3);
+        assert!((smallest - (0.09f64 + 0.0225).sqrt()).abs() < 1e-12);
+        for (base, cap, length, radius) in [(0.3, 0.3, 0.3, 0.5), (0.5, 0.3, 2.0, 0.9)] {
+            let (offset, _) = lemon_centre(base, cap, length, radius).unwrap();
+            assert!(offset >= 0.0);
+            let lemon =
+                Lemon::new(DVec3::ZERO, base, DVec3::Y * length, cap, radius, false).unwrap();
+            // The axis points just inside the caps are inside (no dimples).
+            assert!(lemon.inside(DVec3::Y * 1e-6));
+            assert!(lemon.inside(DVec3::Y * (length - 1e-6)));
+            assert!(lemon.inside(DVec3::Y * length * 0.5));
+            // The rims stay on the surface.
+            assert!(lemon.inside(DVec3::new(base - 1e-3, 1e-6, 0.0)));
+            assert!(!lemon.inside(DVec3::new(base + 1e-3, 1e-6, 0.0)));
+        }
+        // At the smallest radius the centre sits on the axis.
+        let (offset, height) = lemon_centre(0.3, 0.3, 0.3, smallest).unwrap();
+        assert!(offset.abs() < 1e-9 && (height - 0.15).abs() < 1e-12);
     }
 
     #[test]

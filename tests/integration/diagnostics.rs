@@ -912,3 +912,40 @@ fn photon_target_multiplier_must_be_positive() {
         &["photon spacing multiplier 0 must be positive"],
     );
 }
+
+/// A lemon's inner radius too small for the arc's centre to reach the axis is a warning at the
+/// lemon (povray 3.7.1 warns and raises it likewise), not an error.
+#[test]
+fn lemon_inner_radius_too_small_warns_and_is_raised() {
+    let path = tests_folder()
+        .join("diagnostics")
+        .join("lemon_inner_radius_too_small.pov");
+    let evaluated = evaluate(&path);
+    assert!(
+        evaluated
+            .diagnostics
+            .iter()
+            .all(|d| d.severity != Severity::Error),
+        "{:?}",
+        evaluated.diagnostics
+    );
+    let warning = evaluated
+        .diagnostics
+        .iter()
+        .find(|d| d.severity == Severity::Warning && d.message.contains("lemon"))
+        .unwrap_or_else(|| panic!("expected a warning, got {:?}", evaluated.diagnostics));
+    assert!(
+        warning.message.contains("0.2 is too small"),
+        "{}",
+        warning.message
+    );
+    assert!(
+        warning.message.contains("using 0.335"),
+        "{}",
+        warning.message
+    );
+    let position = evaluated
+        .sources
+        .line_column(warning.span.file, warning.span.start);
+    assert_eq!(position, (2, 10));
+}

@@ -2,12 +2,14 @@
 //! `lemon { base, base_radius, cap, cap_radius, inner_radius [open] }`.
 //!
 //! In: the item stream after the brace. Out: [`Shape::Ovus`] or [`Shape::Lemon`]. Holds: a
-//! lemon whose arc cannot join its rims gets a spanned diagnostic; the stream is left at the
+//! lemon's inner radius too small to bulge outwards is raised, with a warning, to the radius
+//! whose arc centre lies on the axis; the stream is left at the
 //! object modifiers (`open` among them).
 
 use super::super::stream::Stream;
 use super::super::{EvalResult, Evaluator};
 use crate::diag::Span;
+use crate::geometry::lemon_smallest_inner_radius;
 use crate::scene::{Lemon, Shape};
 use std::sync::Arc;
 
@@ -39,19 +41,29 @@ impl Evaluator {
                 .error(span, "a lemon's base and cap radii must not be negative")
                 .into());
         }
-        let length = base.distance(cap);
-        let half_chord = 0.5 * (length * length + (base_radius - cap_radius).powi(2)).sqrt();
-        if inner_radius.is_nan() || inner_radius < half_chord {
+        if !inner_radius.is_finite() {
             return Err(self
                 .error(
                     span,
-                    format!(
-                        "a lemon's inner radius must be at least {half_chord}, found {inner_radius}"
-                    ),
+                    format!("a lemon's inner radius must be finite, found {inner_radius}"),
                 )
-                .with_label("half the distance between the base rim and the cap rim")
                 .into());
         }
+        let length = base.distance(cap);
+        let smallest = lemon_smallest_inner_radius(base_radius, cap_radius, length);
+        let inner_radius = if inner_radius < smallest {
+            // POV-Ray 3.7.1 warns and raises the radius likewise.
+            self.warn(
+                span,
+                format!(
+                    "a lemon's inner radius {inner_radius} is too small to bulge outwards; \
+                     using {smallest}, the radius whose centre lies on the axis"
+                ),
+            );
+            smallest
+        } else {
+            inner_radius
+        };
         Ok(Shape::Lemon(Arc::new(Lemon {
             base,
             base_radius,

@@ -1,0 +1,2 @@
+// A lemon whose inner radius is too small to bulge outwards: warned and raised.
+object { lemon { 0, 0.3, y*0.3, 0.3, 0.2 } }
