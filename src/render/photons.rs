@@ -44,14 +44,18 @@ use super::trace::{refract, SURFACE_EPSILON};
 use crate::geometry::{Material, Ray, World};
 use crate::scene::{Finish, LightSource, PhotonDensity, PhotonSettings, Scene};
 use glam::DVec3;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::f64::consts::{PI, TAU};
 
 /// POV-Ray's recommended ratio of gather radius to photon spacing.
 const RADIUS_PER_SPACING: f64 = 5.0;
 
-/// At most this many photons are shot in all, whatever the spacing asks for.
-const SHOT_LIMIT: u64 = 20_000_000;
+/// At most this many photon rays are traced in all (shots from lights and every bounce
+/// of every branch), whatever the spacing and trace level ask for.
+const TRACE_LIMIT: u64 = 20_000_000;
+
+/// At most this many photons are stored.
+const STORED_LIMIT: usize = 5_000_000;
 
 /// Salt of the jitter random numbers.
 const JITTER_SALT: u64 = 0x51a7_c0de_9e37_79b9;
@@ -117,6 +121,7 @@ impl PhotonMap {
             world,
             max_level,
             bailout: if bailout.is_nan() { 0.0 } else { bailout },
+            budget: Budget::new(TRACE_LIMIT, STORED_LIMIT),
         };
         let mut photons = Vec::new();
         let mut shot = 0u64;
@@ -135,6 +140,13 @@ impl PhotonMap {
                     &mut photons,
                 );
             }
+        }
+        if let Some(limit) = shooter.budget.limit_hit.get() {
+            eprintln!(
+                "durer: warning: photon shooting reached the limit of {limit} \
+                 ({TRACE_LIMIT} rays, {STORED_LIMIT} photons); the caustics are incomplete \
+                 (use a larger `spacing` or a smaller `count`)"
+            );
         }
         let radius = if settings.radius > 0.0 {
             settings.radius
@@ -354,6 +366,56 @@ struct Shooter<'a> {
     world: &'a World,
     max_level: u32,
     bailout: f64,
+    /// The rays and stored photons the whole build may still use.
+    budget: Budget,
+}
+
+/// The limits of one photon build, shared by every light and target.
+struct Budget {
+    /// Photon rays that may still be traced.
+    traces_left: Cell<u64>,
+    /// Most photons stored.
+    stored_limit: usize,
+    /// The limit that stopped shooting, described for the warning.
+    limit_hit: Cell<Option<&'static str>>,
+}
+
+impl Budget {
+    fn new(trace_limit: u64, stored_limit: usize) -> Budget {
+        Budget {
+            traces_left: Cell::new(trace_limit),
+            stored_limit,
+            limit_hit: Cell::new(None),
+        }
+    }
+
+    /// Takes one ray from the budget; false (noting it) when none is left.
+    fn take_trace(&self) -> bool {
+        match self.traces_left.get().checked_sub(1) {
+            Some(left) => {
+                self.traces_left.set(left);
+                true
+            }
+            None => {
+                self.limit_hit.set(Some("photon rays traced"));
+                false
+            }
+        }
+    }
+
+    /// True while rays are left to trace.
+    fn has_traces(&self) -> bool {
+        self.traces_left.get() > 0
+    }
+
+    /// Stores `photon` unless the map is full (noting it).
+    fn store(&self, photon: Photon, photons: &mut Vec<Photon>) {
+        if photons.len() < self.stored_limit {
+            photons.push(photon);
+        } else {
+            self.limit_hit.set(Some("photons stored"));
+        }
+    }
 }
 
 impl Shooter<'_> {
@@ -373,10 +435,12 @@ impl Shooter<'_> {
         let Some(axis) = to_target.try_normalize() else {
             return 0;
         };
-        if !(spacing > 0.0 && distance > 0.0) {
+        let step = spacing / distance;
+        // An angular spacing below f64's resolution of directions (or not a number) shoots
+        // nothing.
+        if !(step >= f64::EPSILON && step.is_finite()) {
             return 0;
         }
-        let step = spacing / distance;
         let max_angle = if distance <= target.radius {
             PI
         } else {
@@ -390,7 +454,7 @@ impl Shooter<'_> {
         let mut ring = 0u64;
         loop {
             let angle = ring as f64 * step;
-            if angle > max_angle + 0.5 * step || shot >= SHOT_LIMIT {
+            if angle > max_angle + 0.5 * step || !self.budget.has_traces() {
                 break;
             }
             let count = if ring == 0 {
@@ -407,6 +471,9 @@ impl Shooter<'_> {
                 let direction = (axis * theta.cos()
                     + (across * phi.cos() + up * phi.sin()) * theta.sin())
                 .normalize_or(axis);
+                if !self.budget.has_traces() {
+                    break;
+                }
                 shot += 1;
                 if self.shoot(light, direction, solid_angle, target.material, photons) {
                     ring_hit = true;
@@ -435,6 +502,9 @@ impl Shooter<'_> {
             origin: light.position,
             direction,
         };
+        if !self.budget.take_trace() {
+            return false;
+        }
         let Some(hit) = self.next_hit(&ray, SURFACE_EPSILON) else {
             return false;
         };
@@ -474,6 +544,9 @@ impl Shooter<'_> {
         start: f64,
         photons: &mut Vec<Photon>,
     ) {
+        if !self.budget.take_trace() {
+            return;
+        }
         let Some(hit) = self.next_hit(&photon.ray, SURFACE_EPSILON) else {
             return;
         };
@@ -492,11 +565,14 @@ impl Shooter<'_> {
             photon.colour *= kept;
         }
         if photon.level > 1 && flags.collect() {
-            photons.push(Photon {
-                position: hit.point,
-                direction,
-                power: photon.colour * photon.travelled * photon.travelled,
-            });
+            self.budget.store(
+                Photon {
+                    position: hit.point,
+                    direction,
+                    power: photon.colour * photon.travelled * photon.travelled,
+                },
+                photons,
+            );
         }
         if photon.level >= self.max_level {
             return;
@@ -515,12 +591,14 @@ impl Shooter<'_> {
         let ratio = if entering { 1.0 / ior } else { ior };
         let cos_incidence = -direction.dot(normal);
         let mut reflection = if reflects {
+            // A photon never gains light at a bounce.
             reflection_colour(&texture.finish, cos_incidence, ratio, pigment.rgb_vec())
+                .clamp(DVec3::ZERO, DVec3::ONE)
         } else {
             DVec3::ZERO
         };
         if refracts {
-            let pass = super::lights::transmission(pigment);
+            let pass = super::lights::transmission(pigment).clamp(DVec3::ZERO, DVec3::ONE);
             if pass.max_element() > 0.0 {
                 match refract(direction, normal, ratio) {
                     Some(bent) => self.branch(
@@ -692,6 +770,49 @@ mod tests {
         let finish = Finish::default();
         let light = map.irradiance(DVec3::ZERO, DVec3::Y, &finish, DVec3::ONE);
         assert!((light.x / finish.diffuse - 1.0).abs() < 0.1, "{light}");
+    }
+
+    #[test]
+    fn budget_stops_traces_and_storing_at_its_limits() {
+        let budget = Budget::new(3, 2);
+        assert!((0..3).all(|_| budget.take_trace()));
+        assert!(budget.limit_hit.get().is_none());
+        assert!(!budget.take_trace() && !budget.has_traces());
+        assert!(budget.limit_hit.get().is_some());
+        let budget = Budget::new(10, 2);
+        let mut photons = Vec::new();
+        for _ in 0..5 {
+            budget.store(photon_at(0.0, 0.0, 0.0), &mut photons);
+        }
+        assert_eq!(photons.len(), 2);
+        assert!(budget.limit_hit.get().is_some());
+    }
+
+    #[test]
+    fn vanishing_spacing_shoots_nothing() {
+        let world = World::build_from_objects(Vec::new());
+        let shooter = Shooter {
+            world: &world,
+            max_level: 5,
+            bailout: 0.0,
+            budget: Budget::new(TRACE_LIMIT, STORED_LIMIT),
+        };
+        let light = LightSource::point(DVec3::new(0.0, 5.0, 0.0), DVec3::ONE);
+        let target = Target {
+            centre: DVec3::ZERO,
+            radius: 1.0,
+            spacing_multiplier: 1.0,
+            material: 0,
+        };
+        let mut photons = Vec::new();
+        for spacing in [1e-320, 1e-17, 0.0, -1.0, f64::NAN, f64::INFINITY] {
+            let settings = PhotonSettings {
+                density: PhotonDensity::Spacing(spacing),
+                ..PhotonSettings::default()
+            };
+            let shot = shooter.shoot_at(&light, &target, spacing, &settings, 0, &mut photons);
+            assert_eq!(shot, 0, "spacing {spacing}");
+        }
     }
 
     #[test]
