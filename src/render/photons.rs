@@ -35,13 +35,14 @@
 //!   its minimum found. Each photon lights the point like a light from the direction it came
 //!   from (diffuse, brilliance); their sum is divided by the area of the disc searched.
 
+use super::antialias::unit_hash;
 use super::lights::incoming;
 use super::pattern::hit_surface;
 use super::reflection::{interior_fade, reflection_colour};
 use super::shading::mirror;
 use super::texture::surface_pigment;
-use super::trace::{refract, SURFACE_EPSILON};
-use crate::geometry::{Material, Ray, World};
+use super::trace::{refract, sanitise_ior, SURFACE_EPSILON};
+use crate::geometry::{Ray, World};
 use crate::scene::{Finish, LightSource, PhotonDensity, PhotonSettings, Scene};
 use glam::DVec3;
 use std::cell::{Cell, RefCell};
@@ -587,7 +588,7 @@ impl Shooter<'_> {
         let pigment = surface_pigment(texture, &hit, &surface);
         let normal = surface.normal;
         let entering = direction.dot(hit.normal) <= 0.0;
-        let ior = sanitised_ior(material);
+        let ior = sanitise_ior(material.interior.ior);
         let ratio = if entering { 1.0 / ior } else { ior };
         let cos_incidence = -direction.dot(normal);
         let mut reflection = if reflects {
@@ -678,28 +679,13 @@ struct Bounce {
     inside: Option<u32>,
 }
 
-/// The material's index of refraction, 1 where it is unusable.
-fn sanitised_ior(material: &Material) -> f64 {
-    let ior = material.interior.ior;
-    if ior > 0.0 && ior.is_finite() {
-        ior
-    } else {
-        1.0
-    }
-}
-
-/// Two pseudo-random numbers in [-0.5, 0.5) from `key` (splitmix64).
+/// Two pseudo-random numbers in [-0.5, 0.5) from `key` (two steps of SplitMix64).
 fn jitter_pair(key: u64) -> (f64, f64) {
-    let mut state = key ^ JITTER_SALT;
-    let mut next = || {
-        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
-    (next(), next())
+    let state = key ^ JITTER_SALT;
+    (
+        unit_hash(state) - 0.5,
+        unit_hash(state.wrapping_add(0x9e37_79b9_7f4a_7c15)) - 0.5,
+    )
 }
 
 #[cfg(test)]
