@@ -225,24 +225,24 @@ impl PhotonMap {
 
     /// Fills `found` with the nearest `gather_max` photons within `radius` of `point`;
     /// returns how many and the radius of the disc they stand for (the farthest one's
-    /// distance when the search was cut short, else `radius`).
+    /// distance when `gather_max` were found, else `radius`).
     fn nearest(&self, point: DVec3, radius: f64, found: &mut Vec<(u32, f64)>) -> (usize, f64) {
         found.clear();
-        self.collect(point, radius * radius, 0, self.photons.len(), found);
-        if found.len() > self.gather_max {
-            found.select_nth_unstable_by(self.gather_max - 1, |a, b| a.1.total_cmp(&b.1));
-            found.truncate(self.gather_max);
-            let farthest = found.iter().map(|f| f.1).fold(0.0, f64::max);
-            return (found.len(), farthest.sqrt().max(1e-12));
+        let mut radius2 = radius * radius;
+        self.collect(point, &mut radius2, 0, self.photons.len(), found);
+        if found.len() >= self.gather_max {
+            return (found.len(), radius2.sqrt().max(1e-12));
         }
         (found.len(), radius)
     }
 
-    /// Adds the photons of the range `start..end` within `sqrt(radius2)` of `point`.
+    /// Adds the photons of the range `start..end` within `sqrt(radius2)` of `point` to
+    /// `found`, which holds at most `gather_max`: once full it is a max-heap on distance
+    /// and `radius2` shrinks to its farthest photon.
     fn collect(
         &self,
         point: DVec3,
-        radius2: f64,
+        radius2: &mut f64,
         start: usize,
         end: usize,
         found: &mut Vec<(u32, f64)>,
@@ -253,8 +253,19 @@ impl PhotonMap {
         let middle = (start + end) / 2;
         let photon = &self.photons[middle];
         let distance2 = photon.position.distance_squared(point);
-        if distance2 <= radius2 {
-            found.push((middle as u32, distance2));
+        if distance2 <= *radius2 {
+            let candidate = (middle as u32, distance2);
+            if found.len() < self.gather_max {
+                found.push(candidate);
+                if found.len() == self.gather_max {
+                    make_max_heap(found);
+                    *radius2 = found[0].1;
+                }
+            } else if distance2 < found[0].1 {
+                found[0] = candidate;
+                sift_down(found, 0);
+                *radius2 = found[0].1;
+            }
         }
         let axis = usize::from(self.axes[middle]);
         let offset = point[axis] - photon.position[axis];
@@ -264,9 +275,35 @@ impl PhotonMap {
             ((middle + 1, end), (start, middle))
         };
         self.collect(point, radius2, near.0, near.1, found);
-        if offset * offset <= radius2 {
+        if offset * offset <= *radius2 {
             self.collect(point, radius2, far.0, far.1, found);
         }
+    }
+}
+
+/// Orders `found` as a max-heap on distance (the farthest first).
+fn make_max_heap(found: &mut [(u32, f64)]) {
+    for index in (0..found.len() / 2).rev() {
+        sift_down(found, index);
+    }
+}
+
+/// Moves the entry at `index` down the max-heap `found` to its place.
+fn sift_down(found: &mut [(u32, f64)], mut index: usize) {
+    loop {
+        let (left, right) = (2 * index + 1, 2 * index + 2);
+        let mut largest = index;
+        if left < found.len() && found[left].1 > found[largest].1 {
+            largest = left;
+        }
+        if right < found.len() && found[right].1 > found[largest].1 {
+            largest = right;
+        }
+        if largest == index {
+            return;
+        }
+        found.swap(index, largest);
+        index = largest;
     }
 }
 
@@ -729,6 +766,40 @@ mod tests {
             .count();
         assert_eq!(count, expected);
         assert_eq!(reach, 1.5);
+    }
+
+    #[test]
+    fn bounded_search_keeps_the_nearest() {
+        let mut photons: Vec<Photon> = (0..2000)
+            .map(|i| {
+                let (a, b) = jitter_pair(i);
+                photon_at(a * 10.0, b * 10.0, 0.0)
+            })
+            .collect();
+        let all = photons.clone();
+        let axes = build_tree(&mut photons);
+        let map = PhotonMap {
+            photons,
+            axes,
+            radius: 1.0,
+            gather_min: 1,
+            gather_max: 25,
+            expand_increase: 0.2,
+            expand_min: 40,
+            shot: 0,
+        };
+        let centre = DVec3::new(0.3, -0.7, 0.0);
+        let mut distances: Vec<f64> = all.iter().map(|p| p.position.distance(centre)).collect();
+        distances.sort_by(f64::total_cmp);
+        let mut found = Vec::new();
+        let (count, reach) = map.nearest(centre, 3.0, &mut found);
+        assert_eq!(count, 25);
+        assert_eq!(reach, distances[24]);
+        let mut got: Vec<f64> = found.iter().map(|f| f.1.sqrt()).collect();
+        got.sort_by(f64::total_cmp);
+        for (got, expected) in got.iter().zip(&distances) {
+            assert!((got - expected).abs() < 1e-12);
+        }
     }
 
     #[test]
