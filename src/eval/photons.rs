@@ -182,7 +182,7 @@ impl Evaluator {
         photons: &mut ObjectPhotons,
     ) -> EvalResult<()> {
         while let Some(item) = self.next_item(stream)? {
-            let Item::Keyword(word, _) = &item else {
+            let Item::Keyword(word, span) = &item else {
                 if matches!(item, Item::Comma(_)) {
                     continue;
                 }
@@ -223,7 +223,13 @@ impl Evaluator {
                 }
                 // Unions are always split into their parts.
                 "split_union" => {
-                    let _ = self.optional_bool(stream)?;
+                    if !self.optional_bool(stream)? {
+                        self.warn(
+                            *span,
+                            "`split_union off` is not supported yet; unions are split into \
+                             their parts",
+                        );
+                    }
                 }
                 _ => return Err(self.unexpected_in(&item, "photons")),
             }
@@ -238,7 +244,7 @@ impl Evaluator {
         photons: &mut LightPhotons,
     ) -> EvalResult<()> {
         while let Some(item) = self.next_item(stream)? {
-            let Item::Keyword(word, _) = &item else {
+            let Item::Keyword(word, span) = &item else {
                 if matches!(item, Item::Comma(_)) {
                     continue;
                 }
@@ -247,7 +253,15 @@ impl Evaluator {
             match &**word {
                 "refraction" => photons.refraction = self.optional_bool(stream)?,
                 "reflection" => photons.reflection = self.optional_bool(stream)?,
-                "area_light" => photons.area_light = self.optional_bool(stream)?,
+                "area_light" => {
+                    if self.optional_bool(stream)? {
+                        self.warn(
+                            *span,
+                            "area light photons are not supported yet; photons leave from \
+                             the light's centre",
+                        );
+                    }
+                }
                 _ => return Err(self.unexpected_in(&item, "photons")),
             }
         }

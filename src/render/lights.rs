@@ -11,10 +11,11 @@
 //!   cr = cos(radius), cf = cos(falloff) (cf raised to cr when falloff < radius): zero when
 //!   c < cf; `c^tightness` when c ≥ cr; between, `c^tightness · s²(3 − 2s)` with
 //!   s = (c − cf)/(cr − cf). A negative radius acts through its cosine.
-//! - shadows (see [`super::photons`] for photon targets): every surface between the point and the light that is not `no_shadow`
-//!   multiplies the light by `filter · pigment + transmit` of its pigment at the crossing
-//!   (no clamping; so a sphere of `rgbf <0.8,0.5,0.2,1>` passes 0.64, 0.25, 0.04); an
-//!   opaque surface gives zero. The number of surfaces is not limited by
+//! - shadows (see [`super::photons`] for photon targets): every surface between the point
+//!   and the light that is not `no_shadow` multiplies the light by
+//!   `filter · pigment + transmit` of its pigment at the crossing (no clamping; so a
+//!   sphere of `rgbf <0.8,0.5,0.2,1>` passes 0.64, 0.25, 0.04); an opaque surface gives
+//!   zero. The number of surfaces is not limited by
 //!   `max_trace_level`. `shadowless` lights are never blocked. Surfaces closer than 1e-3 to
 //!   the lit point are ignored. Interiors with `fade_distance` and a positive `fade_power`
 //!   (unlike camera rays, which fade with 0 too) fade the light over the length the shadow

@@ -35,23 +35,28 @@
 //!   its minimum found. Each photon lights the point like a light from the direction it came
 //!   from (diffuse, brilliance); their sum is divided by the area of the disc searched.
 
+use super::antialias::unit_hash;
 use super::lights::incoming;
 use super::pattern::hit_surface;
 use super::reflection::{interior_fade, reflection_colour};
 use super::shading::mirror;
 use super::texture::surface_pigment;
-use super::trace::{refract, SURFACE_EPSILON};
-use crate::geometry::{Material, Ray, World};
+use super::trace::{refract, sanitise_ior, SURFACE_EPSILON};
+use crate::geometry::{Ray, World};
 use crate::scene::{Finish, LightSource, PhotonDensity, PhotonSettings, Scene};
 use glam::DVec3;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::f64::consts::{PI, TAU};
 
 /// POV-Ray's recommended ratio of gather radius to photon spacing.
 const RADIUS_PER_SPACING: f64 = 5.0;
 
-/// At most this many photons are shot in all, whatever the spacing asks for.
-const SHOT_LIMIT: u64 = 20_000_000;
+/// At most this many photon rays are traced in all (shots from lights and every bounce
+/// of every branch), whatever the spacing and trace level ask for.
+const TRACE_LIMIT: u64 = 20_000_000;
+
+/// At most this many photons are stored.
+const STORED_LIMIT: usize = 5_000_000;
 
 /// Salt of the jitter random numbers.
 const JITTER_SALT: u64 = 0x51a7_c0de_9e37_79b9;
@@ -117,6 +122,7 @@ impl PhotonMap {
             world,
             max_level,
             bailout: if bailout.is_nan() { 0.0 } else { bailout },
+            budget: Budget::new(TRACE_LIMIT, STORED_LIMIT),
         };
         let mut photons = Vec::new();
         let mut shot = 0u64;
@@ -135,6 +141,13 @@ impl PhotonMap {
                     &mut photons,
                 );
             }
+        }
+        if let Some(limit) = shooter.budget.limit_hit.get() {
+            eprintln!(
+                "durer: warning: photon shooting reached the limit of {limit} \
+                 ({TRACE_LIMIT} rays, {STORED_LIMIT} photons); the caustics are incomplete \
+                 (use a larger `spacing` or a smaller `count`)"
+            );
         }
         let radius = if settings.radius > 0.0 {
             settings.radius
@@ -212,24 +225,24 @@ impl PhotonMap {
 
     /// Fills `found` with the nearest `gather_max` photons within `radius` of `point`;
     /// returns how many and the radius of the disc they stand for (the farthest one's
-    /// distance when the search was cut short, else `radius`).
+    /// distance when `gather_max` were found, else `radius`).
     fn nearest(&self, point: DVec3, radius: f64, found: &mut Vec<(u32, f64)>) -> (usize, f64) {
         found.clear();
-        self.collect(point, radius * radius, 0, self.photons.len(), found);
-        if found.len() > self.gather_max {
-            found.select_nth_unstable_by(self.gather_max - 1, |a, b| a.1.total_cmp(&b.1));
-            found.truncate(self.gather_max);
-            let farthest = found.iter().map(|f| f.1).fold(0.0, f64::max);
-            return (found.len(), farthest.sqrt().max(1e-12));
+        let mut radius2 = radius * radius;
+        self.collect(point, &mut radius2, 0, self.photons.len(), found);
+        if found.len() >= self.gather_max {
+            return (found.len(), radius2.sqrt().max(1e-12));
         }
         (found.len(), radius)
     }
 
-    /// Adds the photons of the range `start..end` within `sqrt(radius2)` of `point`.
+    /// Adds the photons of the range `start..end` within `sqrt(radius2)` of `point` to
+    /// `found`, which holds at most `gather_max`: once full it is a max-heap on distance
+    /// and `radius2` shrinks to its farthest photon.
     fn collect(
         &self,
         point: DVec3,
-        radius2: f64,
+        radius2: &mut f64,
         start: usize,
         end: usize,
         found: &mut Vec<(u32, f64)>,
@@ -240,8 +253,19 @@ impl PhotonMap {
         let middle = (start + end) / 2;
         let photon = &self.photons[middle];
         let distance2 = photon.position.distance_squared(point);
-        if distance2 <= radius2 {
-            found.push((middle as u32, distance2));
+        if distance2 <= *radius2 {
+            let candidate = (middle as u32, distance2);
+            if found.len() < self.gather_max {
+                found.push(candidate);
+                if found.len() == self.gather_max {
+                    make_max_heap(found);
+                    *radius2 = found[0].1;
+                }
+            } else if distance2 < found[0].1 {
+                found[0] = candidate;
+                sift_down(found, 0);
+                *radius2 = found[0].1;
+            }
         }
         let axis = usize::from(self.axes[middle]);
         let offset = point[axis] - photon.position[axis];
@@ -251,9 +275,35 @@ impl PhotonMap {
             ((middle + 1, end), (start, middle))
         };
         self.collect(point, radius2, near.0, near.1, found);
-        if offset * offset <= radius2 {
+        if offset * offset <= *radius2 {
             self.collect(point, radius2, far.0, far.1, found);
         }
+    }
+}
+
+/// Orders `found` as a max-heap on distance (the farthest first).
+fn make_max_heap(found: &mut [(u32, f64)]) {
+    for index in (0..found.len() / 2).rev() {
+        sift_down(found, index);
+    }
+}
+
+/// Moves the entry at `index` down the max-heap `found` to its place.
+fn sift_down(found: &mut [(u32, f64)], mut index: usize) {
+    loop {
+        let (left, right) = (2 * index + 1, 2 * index + 2);
+        let mut largest = index;
+        if left < found.len() && found[left].1 > found[largest].1 {
+            largest = left;
+        }
+        if right < found.len() && found[right].1 > found[largest].1 {
+            largest = right;
+        }
+        if largest == index {
+            return;
+        }
+        found.swap(index, largest);
+        index = largest;
     }
 }
 
@@ -354,6 +404,56 @@ struct Shooter<'a> {
     world: &'a World,
     max_level: u32,
     bailout: f64,
+    /// The rays and stored photons the whole build may still use.
+    budget: Budget,
+}
+
+/// The limits of one photon build, shared by every light and target.
+struct Budget {
+    /// Photon rays that may still be traced.
+    traces_left: Cell<u64>,
+    /// Most photons stored.
+    stored_limit: usize,
+    /// The limit that stopped shooting, described for the warning.
+    limit_hit: Cell<Option<&'static str>>,
+}
+
+impl Budget {
+    fn new(trace_limit: u64, stored_limit: usize) -> Budget {
+        Budget {
+            traces_left: Cell::new(trace_limit),
+            stored_limit,
+            limit_hit: Cell::new(None),
+        }
+    }
+
+    /// Takes one ray from the budget; false (noting it) when none is left.
+    fn take_trace(&self) -> bool {
+        match self.traces_left.get().checked_sub(1) {
+            Some(left) => {
+                self.traces_left.set(left);
+                true
+            }
+            None => {
+                self.limit_hit.set(Some("photon rays traced"));
+                false
+            }
+        }
+    }
+
+    /// True while rays are left to trace.
+    fn has_traces(&self) -> bool {
+        self.traces_left.get() > 0
+    }
+
+    /// Stores `photon` unless the map is full (noting it).
+    fn store(&self, photon: Photon, photons: &mut Vec<Photon>) {
+        if photons.len() < self.stored_limit {
+            photons.push(photon);
+        } else {
+            self.limit_hit.set(Some("photons stored"));
+        }
+    }
 }
 
 impl Shooter<'_> {
@@ -373,10 +473,12 @@ impl Shooter<'_> {
         let Some(axis) = to_target.try_normalize() else {
             return 0;
         };
-        if !(spacing > 0.0 && distance > 0.0) {
+        let step = spacing / distance;
+        // An angular spacing below f64's resolution of directions (or not a number) shoots
+        // nothing.
+        if !(step >= f64::EPSILON && step.is_finite()) {
             return 0;
         }
-        let step = spacing / distance;
         let max_angle = if distance <= target.radius {
             PI
         } else {
@@ -390,7 +492,7 @@ impl Shooter<'_> {
         let mut ring = 0u64;
         loop {
             let angle = ring as f64 * step;
-            if angle > max_angle + 0.5 * step || shot >= SHOT_LIMIT {
+            if angle > max_angle + 0.5 * step || !self.budget.has_traces() {
                 break;
             }
             let count = if ring == 0 {
@@ -407,6 +509,9 @@ impl Shooter<'_> {
                 let direction = (axis * theta.cos()
                     + (across * phi.cos() + up * phi.sin()) * theta.sin())
                 .normalize_or(axis);
+                if !self.budget.has_traces() {
+                    break;
+                }
                 shot += 1;
                 if self.shoot(light, direction, solid_angle, target.material, photons) {
                     ring_hit = true;
@@ -435,6 +540,9 @@ impl Shooter<'_> {
             origin: light.position,
             direction,
         };
+        if !self.budget.take_trace() {
+            return false;
+        }
         let Some(hit) = self.next_hit(&ray, SURFACE_EPSILON) else {
             return false;
         };
@@ -474,6 +582,9 @@ impl Shooter<'_> {
         start: f64,
         photons: &mut Vec<Photon>,
     ) {
+        if !self.budget.take_trace() {
+            return;
+        }
         let Some(hit) = self.next_hit(&photon.ray, SURFACE_EPSILON) else {
             return;
         };
@@ -492,11 +603,14 @@ impl Shooter<'_> {
             photon.colour *= kept;
         }
         if photon.level > 1 && flags.collect() {
-            photons.push(Photon {
-                position: hit.point,
-                direction,
-                power: photon.colour * photon.travelled * photon.travelled,
-            });
+            self.budget.store(
+                Photon {
+                    position: hit.point,
+                    direction,
+                    power: photon.colour * photon.travelled * photon.travelled,
+                },
+                photons,
+            );
         }
         if photon.level >= self.max_level {
             return;
@@ -511,16 +625,18 @@ impl Shooter<'_> {
         let pigment = surface_pigment(texture, &hit, &surface);
         let normal = surface.normal;
         let entering = direction.dot(hit.normal) <= 0.0;
-        let ior = sanitised_ior(material);
+        let ior = sanitise_ior(material.interior.ior);
         let ratio = if entering { 1.0 / ior } else { ior };
         let cos_incidence = -direction.dot(normal);
         let mut reflection = if reflects {
+            // A photon never gains light at a bounce.
             reflection_colour(&texture.finish, cos_incidence, ratio, pigment.rgb_vec())
+                .clamp(DVec3::ZERO, DVec3::ONE)
         } else {
             DVec3::ZERO
         };
         if refracts {
-            let pass = super::lights::transmission(pigment);
+            let pass = super::lights::transmission(pigment).clamp(DVec3::ZERO, DVec3::ONE);
             if pass.max_element() > 0.0 {
                 match refract(direction, normal, ratio) {
                     Some(bent) => self.branch(
@@ -600,28 +716,13 @@ struct Bounce {
     inside: Option<u32>,
 }
 
-/// The material's index of refraction, 1 where it is unusable.
-fn sanitised_ior(material: &Material) -> f64 {
-    let ior = material.interior.ior;
-    if ior > 0.0 && ior.is_finite() {
-        ior
-    } else {
-        1.0
-    }
-}
-
-/// Two pseudo-random numbers in [-0.5, 0.5) from `key` (splitmix64).
+/// Two pseudo-random numbers in [-0.5, 0.5) from `key` (two steps of SplitMix64).
 fn jitter_pair(key: u64) -> (f64, f64) {
-    let mut state = key ^ JITTER_SALT;
-    let mut next = || {
-        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
-    (next(), next())
+    let state = key ^ JITTER_SALT;
+    (
+        unit_hash(state) - 0.5,
+        unit_hash(state.wrapping_add(0x9e37_79b9_7f4a_7c15)) - 0.5,
+    )
 }
 
 #[cfg(test)]
@@ -668,6 +769,40 @@ mod tests {
     }
 
     #[test]
+    fn bounded_search_keeps_the_nearest() {
+        let mut photons: Vec<Photon> = (0..2000)
+            .map(|i| {
+                let (a, b) = jitter_pair(i);
+                photon_at(a * 10.0, b * 10.0, 0.0)
+            })
+            .collect();
+        let all = photons.clone();
+        let axes = build_tree(&mut photons);
+        let map = PhotonMap {
+            photons,
+            axes,
+            radius: 1.0,
+            gather_min: 1,
+            gather_max: 25,
+            expand_increase: 0.2,
+            expand_min: 40,
+            shot: 0,
+        };
+        let centre = DVec3::new(0.3, -0.7, 0.0);
+        let mut distances: Vec<f64> = all.iter().map(|p| p.position.distance(centre)).collect();
+        distances.sort_by(f64::total_cmp);
+        let mut found = Vec::new();
+        let (count, reach) = map.nearest(centre, 3.0, &mut found);
+        assert_eq!(count, 25);
+        assert_eq!(reach, distances[24]);
+        let mut got: Vec<f64> = found.iter().map(|f| f.1.sqrt()).collect();
+        got.sort_by(f64::total_cmp);
+        for (got, expected) in got.iter().zip(&distances) {
+            assert!((got - expected).abs() < 1e-12);
+        }
+    }
+
+    #[test]
     fn uniform_photons_give_their_density() {
         // One photon of power 0.01 per 0.1 × 0.1 square lit straight on: irradiance 1.
         let mut photons = Vec::new();
@@ -692,6 +827,49 @@ mod tests {
         let finish = Finish::default();
         let light = map.irradiance(DVec3::ZERO, DVec3::Y, &finish, DVec3::ONE);
         assert!((light.x / finish.diffuse - 1.0).abs() < 0.1, "{light}");
+    }
+
+    #[test]
+    fn budget_stops_traces_and_storing_at_its_limits() {
+        let budget = Budget::new(3, 2);
+        assert!((0..3).all(|_| budget.take_trace()));
+        assert!(budget.limit_hit.get().is_none());
+        assert!(!budget.take_trace() && !budget.has_traces());
+        assert!(budget.limit_hit.get().is_some());
+        let budget = Budget::new(10, 2);
+        let mut photons = Vec::new();
+        for _ in 0..5 {
+            budget.store(photon_at(0.0, 0.0, 0.0), &mut photons);
+        }
+        assert_eq!(photons.len(), 2);
+        assert!(budget.limit_hit.get().is_some());
+    }
+
+    #[test]
+    fn vanishing_spacing_shoots_nothing() {
+        let world = World::build_from_objects(Vec::new());
+        let shooter = Shooter {
+            world: &world,
+            max_level: 5,
+            bailout: 0.0,
+            budget: Budget::new(TRACE_LIMIT, STORED_LIMIT),
+        };
+        let light = LightSource::point(DVec3::new(0.0, 5.0, 0.0), DVec3::ONE);
+        let target = Target {
+            centre: DVec3::ZERO,
+            radius: 1.0,
+            spacing_multiplier: 1.0,
+            material: 0,
+        };
+        let mut photons = Vec::new();
+        for spacing in [1e-320, 1e-17, 0.0, -1.0, f64::NAN, f64::INFINITY] {
+            let settings = PhotonSettings {
+                density: PhotonDensity::Spacing(spacing),
+                ..PhotonSettings::default()
+            };
+            let shot = shooter.shoot_at(&light, &target, spacing, &settings, 0, &mut photons);
+            assert_eq!(shot, 0, "spacing {spacing}");
+        }
     }
 
     #[test]

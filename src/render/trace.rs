@@ -785,7 +785,7 @@ struct Continued {
 }
 
 /// An index of refraction usable in Snell's law (non-positive or NaN values become 1).
-fn sanitise_ior(ior: f64) -> f64 {
+pub(super) fn sanitise_ior(ior: f64) -> f64 {
     if ior > 0.0 && ior.is_finite() {
         ior
     } else {

@@ -161,8 +161,6 @@ pub struct LightPhotons {
     pub refraction: bool,
     /// The light's photons reflect (default on).
     pub reflection: bool,
-    /// `area_light`: accepted; photons leave from the light's centre.
-    pub area_light: bool,
 }
 
 impl Default for LightPhotons {
@@ -170,7 +168,6 @@ impl Default for LightPhotons {
         LightPhotons {
             refraction: true,
             reflection: true,
-            area_light: false,
         }
     }
 }

@@ -949,3 +949,26 @@ fn lemon_inner_radius_too_small_warns_and_is_raised() {
         .line_column(warning.span.file, warning.span.start);
     assert_eq!(position, (2, 10));
 }
+
+#[test]
+fn unsupported_photon_options_are_warned_at_their_keyword() {
+    let path = tests_folder()
+        .join("diagnostics")
+        .join("photons_unsupported_options.pov");
+    let evaluated = evaluate(&path);
+    assert!(evaluated.scene.is_some());
+    let warnings: Vec<(usize, usize, String)> = evaluated
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == Severity::Warning)
+        .map(|d| {
+            let (line, column) = evaluated.sources.line_column(d.span.file, d.span.start);
+            (line, column, d.message.clone())
+        })
+        .collect();
+    assert_eq!(warnings.len(), 2, "{warnings:?}");
+    assert_eq!((warnings[0].0, warnings[0].1), (2, 43));
+    assert!(warnings[0].2.contains("area light photons"));
+    assert_eq!((warnings[1].0, warnings[1].1), (3, 76));
+    assert!(warnings[1].2.contains("`split_union off`"));
+}
