@@ -737,26 +737,31 @@ mod tests {
         }
     }
 
+    /// A map over `photons` with radius 1 that gathers at most `gather_max` of them.
+    fn test_map(mut photons: Vec<Photon>, gather_max: usize) -> PhotonMap {
+        let axes = build_tree(&mut photons);
+        PhotonMap {
+            photons,
+            axes,
+            radius: 1.0,
+            gather_min: 1,
+            gather_max,
+            expand_increase: 0.2,
+            expand_min: 40,
+            shot: 0,
+        }
+    }
+
     #[test]
     fn tree_finds_exactly_the_photons_in_range() {
-        let mut photons: Vec<Photon> = (0..500)
+        let photons: Vec<Photon> = (0..500)
             .map(|i| {
                 let (a, b) = jitter_pair(i);
                 photon_at(a * 10.0, 0.0, b * 10.0)
             })
             .collect();
         let all = photons.clone();
-        let axes = build_tree(&mut photons);
-        let map = PhotonMap {
-            photons,
-            axes,
-            radius: 1.0,
-            gather_min: 1,
-            gather_max: 10_000,
-            expand_increase: 0.2,
-            expand_min: 40,
-            shot: 0,
-        };
+        let map = test_map(photons, 10_000);
         let centre = DVec3::new(0.5, 0.0, -1.0);
         let mut found = Vec::new();
         let (count, reach) = map.nearest(centre, 1.5, &mut found);
@@ -770,24 +775,14 @@ mod tests {
 
     #[test]
     fn bounded_search_keeps_the_nearest() {
-        let mut photons: Vec<Photon> = (0..2000)
+        let photons: Vec<Photon> = (0..2000)
             .map(|i| {
                 let (a, b) = jitter_pair(i);
                 photon_at(a * 10.0, b * 10.0, 0.0)
             })
             .collect();
         let all = photons.clone();
-        let axes = build_tree(&mut photons);
-        let map = PhotonMap {
-            photons,
-            axes,
-            radius: 1.0,
-            gather_min: 1,
-            gather_max: 25,
-            expand_increase: 0.2,
-            expand_min: 40,
-            shot: 0,
-        };
+        let map = test_map(photons, 25);
         let centre = DVec3::new(0.3, -0.7, 0.0);
         let mut distances: Vec<f64> = all.iter().map(|p| p.position.distance(centre)).collect();
         distances.sort_by(f64::total_cmp);
