@@ -17,7 +17,12 @@
 //!   spiral is beyond `autostop` of the way out (measured: a sphere of radius 1 at distance
 //!   5.745 and spacing 0.02 gets 8311 photons, the sphere's own cone plus one ring, not the
 //!   24,000 of its bounding box's sphere).
-//! - a photon carries the light's colour (faded and spotlit as the light arrives at its first
+//! - `parallel` and cylinder lights shoot parallel rays along their direction instead, from
+//!   the plane through the light perpendicular to it, on the same rings laid out across the
+//!   target's bounding disc `spacing` apart (measured: a sphere of radius 0.6 at spacing
+//!   0.02 gets 3118 photons, its disc plus one ring); each carries the light's colour times
+//!   spacing², the area it stands for.
+//! - a photon from a point carries the light's colour (faded and spotlit as the light arrives at its first
 //!   hit) times (spacing · multiplier)², the area it stands for where it meets the target.
 //! - at a surface whose object reflects photons it goes on mirrored, times the finish's
 //!   reflection; where the object refracts photons it goes on bent by Snell's law, times
@@ -373,7 +378,8 @@ fn targets(world: &World) -> Vec<Target> {
 
 /// The spacing that shoots about `count` photons at the targets from all lights.
 fn spacing_for_count(scene: &Scene, targets: &[Target], count: u32) -> f64 {
-    // Photons at spacing 1: the cone's solid angle over the square of the angular spacing.
+    // Photons at spacing 1: the cone's solid angle over the square of the angular spacing
+    // (for a parallel beam, the target's disc over the square of the spacing).
     let mut at_unit_spacing = 0.0;
     for light in scene
         .lights
@@ -381,6 +387,11 @@ fn spacing_for_count(scene: &Scene, targets: &[Target], count: u32) -> f64 {
         .filter(|l| l.photons.refraction || l.photons.reflection)
     {
         for target in targets {
+            if let Some(Beam::Parallel { .. }) = Beam::towards(light, target) {
+                // A parallel beam: the target's disc over the square of the spacing.
+                at_unit_spacing += PI * (target.radius / target.spacing_multiplier).powi(2);
+                continue;
+            }
             let distance = target.centre.distance(light.position);
             let solid_angle = if distance <= target.radius {
                 2.0 * TAU
@@ -468,57 +479,80 @@ impl Shooter<'_> {
         seed: u64,
         photons: &mut Vec<Photon>,
     ) -> u64 {
-        let to_target = target.centre - light.position;
-        let distance = to_target.length();
-        let Some(axis) = to_target.try_normalize() else {
+        let Some(beam) = Beam::towards(light, target) else {
             return 0;
         };
-        let step = spacing / distance;
-        // An angular spacing below f64's resolution of directions (or not a number) shoots
-        // nothing.
-        if !(step >= f64::EPSILON && step.is_finite()) {
+        // Rings are `step` apart (an angle for a cone, a length for a parallel beam) out to
+        // `max_extent`; each photon stands for `step²` (a solid angle or an area).
+        let (step, max_extent, relative_step) = match beam {
+            Beam::Cone { distance, .. } => {
+                let step = spacing / distance;
+                let max_angle = if distance <= target.radius {
+                    PI
+                } else {
+                    (target.radius / distance).asin()
+                };
+                (step, max_angle, step)
+            }
+            Beam::Parallel { .. } => (spacing, target.radius, spacing / target.radius),
+        };
+        // A spacing below f64's resolution of directions or positions (or not a number)
+        // shoots nothing.
+        if !(relative_step >= f64::EPSILON && relative_step.is_finite()) {
             return 0;
         }
-        let max_angle = if distance <= target.radius {
-            PI
-        } else {
-            (target.radius / distance).asin()
-        };
+        let axis = beam.axis();
         let (across, up) = axis.any_orthonormal_pair();
-        // The solid angle each photon stands for.
-        let solid_angle = step * step;
+        let energy = step * step;
         let mut shot = 0u64;
         let mut any_hit = false;
         let mut ring = 0u64;
         loop {
-            let angle = ring as f64 * step;
-            if angle > max_angle + 0.5 * step || !self.budget.has_traces() {
+            let extent = ring as f64 * step;
+            if extent > max_extent + 0.5 * step || !self.budget.has_traces() {
                 break;
             }
+            let circumference = match beam {
+                Beam::Cone { .. } => TAU * extent.sin(),
+                Beam::Parallel { .. } => TAU * extent,
+            };
             let count = if ring == 0 {
                 1
             } else {
-                ((TAU * angle.sin() / step).round() as u64).max(1)
+                ((circumference / step).round() as u64).max(1)
             };
             let mut ring_hit = false;
             for index in 0..count {
                 let key = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ (ring << 24 | index);
-                let (jitter_theta, jitter_phi) = jitter_pair(key);
-                let theta = (angle + settings.jitter * step * jitter_theta).clamp(0.0, PI);
+                let (jitter_radial, jitter_phi) = jitter_pair(key);
+                let radial = extent + settings.jitter * step * jitter_radial;
                 let phi = (index as f64 + settings.jitter * jitter_phi) * TAU / count as f64;
-                let direction = (axis * theta.cos()
-                    + (across * phi.cos() + up * phi.sin()) * theta.sin())
-                .normalize_or(axis);
+                let outwards = across * phi.cos() + up * phi.sin();
+                let ray = match beam {
+                    Beam::Cone { .. } => {
+                        let theta = radial.clamp(0.0, PI);
+                        Ray {
+                            origin: light.position,
+                            direction: (axis * theta.cos() + outwards * theta.sin())
+                                .normalize_or(axis),
+                        }
+                    }
+                    Beam::Parallel { start, .. } => Ray {
+                        origin: start + outwards * radial.max(0.0),
+                        direction: axis,
+                    },
+                };
                 if !self.budget.has_traces() {
                     break;
                 }
                 shot += 1;
-                if self.shoot(light, direction, solid_angle, target.material, photons) {
+                let spreads = matches!(beam, Beam::Cone { .. });
+                if self.shoot(light, ray, energy, spreads, target.material, photons) {
                     ring_hit = true;
                 }
             }
             any_hit |= ring_hit;
-            if !ring_hit && any_hit && angle >= settings.autostop * max_angle {
+            if !ring_hit && any_hit && extent >= settings.autostop * max_extent {
                 break;
             }
             ring += 1;
@@ -526,20 +560,18 @@ impl Shooter<'_> {
         shot
     }
 
-    /// Follows one photon leaving `light` along `direction`; true when its first surface
-    /// is the target's.
+    /// Follows one photon leaving `light` along `ray`, standing for `energy` (the solid
+    /// angle of a photon that `spreads` from a point, else the area of one in a parallel
+    /// beam); true when its first surface is the target's.
     fn shoot(
         &self,
         light: &LightSource,
-        direction: DVec3,
-        solid_angle: f64,
+        ray: Ray,
+        energy: f64,
+        spreads: bool,
         target_material: u32,
         photons: &mut Vec<Photon>,
     ) -> bool {
-        let ray = Ray {
-            origin: light.position,
-            direction,
-        };
         if !self.budget.take_trace() {
             return false;
         }
@@ -550,12 +582,13 @@ impl Shooter<'_> {
         let Some(arriving) = incoming(light, hit.point) else {
             return hit_target;
         };
-        let colour = arriving.colour * solid_angle;
+        let colour = arriving.colour * energy;
         let mut first = Bounce {
             ray,
             colour,
             level: 1,
             travelled: 0.0,
+            spreads,
             inside: None,
         };
         self.follow(light, &mut first, colour.max_element(), photons);
@@ -607,7 +640,12 @@ impl Shooter<'_> {
                 Photon {
                     position: hit.point,
                     direction,
-                    power: photon.colour * photon.travelled * photon.travelled,
+                    power: if photon.spreads {
+                        // Its solid angle times the square of its path: the area it covers.
+                        photon.colour * photon.travelled * photon.travelled
+                    } else {
+                        photon.colour
+                    },
                 },
                 photons,
             );
@@ -698,6 +736,7 @@ impl Shooter<'_> {
             colour,
             level: photon.level + 1,
             travelled: photon.travelled,
+            spreads: photon.spreads,
             inside,
         };
         self.follow(light, &mut next, start, photons);
@@ -712,8 +751,55 @@ struct Bounce {
     level: u32,
     /// The length of the photon's path so far.
     travelled: f64,
+    /// Whether the photon left a point (its colour is per solid angle and the area it
+    /// covers grows with the square of its path) rather than a parallel beam (its colour
+    /// is per area).
+    spreads: bool,
     /// The material of the object the photon is in (its interior fades the photon).
     inside: Option<u32>,
+}
+
+/// How a light's photons leave it towards one target.
+#[derive(Clone, Copy, Debug)]
+enum Beam {
+    /// From the light's position, on cones around the unit `axis` towards the target's
+    /// centre, `distance` away.
+    Cone { axis: DVec3, distance: f64 },
+    /// Parallel to the unit `axis` (a `parallel` or cylinder light), from the plane through
+    /// the light perpendicular to it, on circles around `start`, the point of that plane
+    /// in line with the target's centre.
+    Parallel { axis: DVec3, start: DVec3 },
+}
+
+impl Beam {
+    /// How `light` shoots at `target`; `None` when it has no direction to shoot in.
+    fn towards(light: &LightSource, target: &Target) -> Option<Beam> {
+        // Parallel and cylinder lights send their light along their axis (as in `incoming`).
+        let cylinder_aim = light
+            .spotlight
+            .filter(|spot| spot.cylinder)
+            .map(|spot| spot.point_at);
+        match light.parallel.or(cylinder_aim) {
+            Some(point_at) => {
+                let axis = (point_at - light.position).try_normalize()?;
+                let start = target.centre - axis * (target.centre - light.position).dot(axis);
+                start.is_finite().then_some(Beam::Parallel { axis, start })
+            }
+            None => {
+                let to_target = target.centre - light.position;
+                let distance = to_target.length();
+                let axis = to_target.try_normalize()?;
+                Some(Beam::Cone { axis, distance })
+            }
+        }
+    }
+
+    /// The direction photons leave in at the beam's centre.
+    fn axis(&self) -> DVec3 {
+        match *self {
+            Beam::Cone { axis, .. } | Beam::Parallel { axis, .. } => axis,
+        }
+    }
 }
 
 /// Two pseudo-random numbers in [-0.5, 0.5) from `key` (two steps of SplitMix64).
@@ -862,9 +948,35 @@ mod tests {
                 density: PhotonDensity::Spacing(spacing),
                 ..PhotonSettings::default()
             };
-            let shot = shooter.shoot_at(&light, &target, spacing, &settings, 0, &mut photons);
-            assert_eq!(shot, 0, "spacing {spacing}");
+            let mut parallel = light.clone();
+            parallel.parallel = Some(DVec3::ZERO);
+            for light in [&light, &parallel] {
+                let shot = shooter.shoot_at(light, &target, spacing, &settings, 0, &mut photons);
+                assert_eq!(shot, 0, "spacing {spacing}");
+            }
         }
+    }
+
+    #[test]
+    fn parallel_beam_starts_on_the_light_plane_in_line_with_the_target() {
+        let mut light = LightSource::point(DVec3::new(3.0, 10.0, 0.0), DVec3::ONE);
+        light.parallel = Some(DVec3::new(3.0, 0.0, 0.0));
+        let target = Target {
+            centre: DVec3::new(0.0, 1.0, 0.0),
+            radius: 1.0,
+            spacing_multiplier: 1.0,
+            material: 0,
+        };
+        let Some(Beam::Parallel { axis, start }) = Beam::towards(&light, &target) else {
+            panic!("a parallel light shoots a parallel beam");
+        };
+        assert_eq!(axis, DVec3::NEG_Y);
+        assert!(
+            start.distance(DVec3::new(0.0, 10.0, 0.0)) < 1e-12,
+            "{start}"
+        );
+        light.parallel = Some(light.position);
+        assert!(Beam::towards(&light, &target).is_none());
     }
 
     #[test]
