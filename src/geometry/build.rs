@@ -384,10 +384,10 @@ impl Builder {
         if let Some(hollow) = object.hollow {
             flags.hollow = hollow;
         }
-        // A `photons` block applies to everything inside the object that has none.
-        if object.photons != crate::scene::ObjectPhotons::default() {
-            flags.photons = object.photons;
-        }
+        // Photon items merge one by one: what an outer CSG set wins over the inner.
+        let mut photons = object.photons;
+        photons.inherit(&inherited.flags.photons);
+        flags.photons = photons;
         // Nested light groups (measured): the innermost group's lights light an object,
         // the outermost group's `global_lights` decides whether scene lights do.
         if let Some(group) = object.light_group {

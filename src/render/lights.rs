@@ -310,6 +310,7 @@ pub fn shadow_filter(
             && !material.no_image
             && material.photons.refraction()
             && material.photons.target().is_some()
+            && !material.photons.pass_through()
         {
             return DVec3::ZERO;
         }

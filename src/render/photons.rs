@@ -602,7 +602,7 @@ impl Shooter<'_> {
             .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
                 materials
                     .get(id as usize)
-                    .is_some_and(|m| m.photons.pass_through() && m.photons.target().is_none())
+                    .is_some_and(|m| m.photons.pass_through())
             })
     }
 

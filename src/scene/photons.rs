@@ -72,6 +72,9 @@ pub struct ObjectPhotons {
     target_bits: u32,
     /// The on/off items, one bit each (see the `*_BIT` constants).
     flags: u8,
+    /// Which items the scene set explicitly (the same bits, plus [`Self::TARGET_BIT`]),
+    /// so a CSG's block can be merged into its children's item by item.
+    explicit: u8,
 }
 
 impl ObjectPhotons {
@@ -79,6 +82,8 @@ impl ObjectPhotons {
     const REFLECTION_BIT: u8 = 2;
     const COLLECT_BIT: u8 = 4;
     const PASS_THROUGH_BIT: u8 = 8;
+    /// In `explicit` only: `target` was given.
+    const TARGET_BIT: u8 = 16;
 
     /// The spacing multiplier when photons are shot at the object.
     pub fn target(&self) -> Option<f64> {
@@ -88,6 +93,7 @@ impl ObjectPhotons {
     /// Makes the object a target with this spacing multiplier (`None`: no target).
     /// Multipliers that are not positive and finite count as 1.
     pub fn set_target(&mut self, multiplier: Option<f64>) {
+        self.explicit |= Self::TARGET_BIT;
         self.target_bits = match multiplier {
             None => 0,
             Some(m) if m > 0.0 && m.is_finite() => (m as f32).max(f32::MIN_POSITIVE).to_bits(),
@@ -110,8 +116,8 @@ impl ObjectPhotons {
         self.flags & Self::COLLECT_BIT != 0
     }
 
-    /// `pass_through`: photons cross the object unchanged on their way to a target (set
-    /// by `no_shadow` too).
+    /// `pass_through`: photons cross the object unchanged, even when it is a target (set
+    /// by `no_shadow` too; such a target casts an ordinary filtered shadow).
     pub fn pass_through(&self) -> bool {
         self.flags & Self::PASS_THROUGH_BIT != 0
     }
@@ -136,7 +142,21 @@ impl ObjectPhotons {
         self.set(Self::PASS_THROUGH_BIT, on);
     }
 
+    /// Applies a CSG's block to one of its children's (measured in POV-Ray 3.7): every
+    /// item the CSG set explicitly replaces the child's, even one the child set itself
+    /// (a union's `refraction on` beats a child's `refraction off` and the reverse); the
+    /// child keeps its own items where the CSG set nothing.
+    pub fn inherit(&mut self, parent: &ObjectPhotons) {
+        if parent.explicit & Self::TARGET_BIT != 0 {
+            self.target_bits = parent.target_bits;
+        }
+        let from_parent = parent.explicit & !Self::TARGET_BIT;
+        self.flags = (self.flags & !from_parent) | (parent.flags & from_parent);
+        self.explicit |= parent.explicit;
+    }
+
     fn set(&mut self, bit: u8, on: bool) {
+        self.explicit |= bit;
         if on {
             self.flags |= bit;
         } else {
@@ -150,6 +170,7 @@ impl Default for ObjectPhotons {
         ObjectPhotons {
             target_bits: 0,
             flags: Self::COLLECT_BIT,
+            explicit: 0,
         }
     }
 }
@@ -169,5 +190,54 @@ impl Default for LightPhotons {
             refraction: true,
             reflection: true,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn block(items: impl FnOnce(&mut ObjectPhotons)) -> ObjectPhotons {
+        let mut photons = ObjectPhotons::default();
+        items(&mut photons);
+        photons
+    }
+
+    #[test]
+    fn a_child_keeps_its_own_items_where_the_csg_set_none() {
+        let parent = block(|p| {
+            p.set_target(Some(2.0));
+            p.set_refraction(true);
+        });
+        let mut child = block(|c| c.set_collect(false));
+        child.inherit(&parent);
+        assert_eq!(child.target(), Some(2.0));
+        assert!(child.refraction());
+        assert!(!child.collect());
+        assert!(!child.reflection());
+    }
+
+    #[test]
+    fn the_csg_items_beat_the_child_items() {
+        let parent = block(|p| p.set_refraction(false));
+        let mut child = block(|c| {
+            c.set_refraction(true);
+            c.set_target(Some(1.0));
+        });
+        child.inherit(&parent);
+        assert!(!child.refraction());
+        assert_eq!(child.target(), Some(1.0));
+        let mut grandchild = ObjectPhotons::default();
+        grandchild.inherit(&child);
+        assert!(!grandchild.refraction());
+        assert_eq!(grandchild.target(), Some(1.0));
+    }
+
+    #[test]
+    fn an_empty_block_changes_nothing() {
+        let mut child = block(|c| c.set_pass_through(true));
+        child.inherit(&ObjectPhotons::default());
+        assert!(child.pass_through());
+        assert!(child.collect());
     }
 }
