@@ -339,24 +339,26 @@ fn busy_scene() -> Scene {
     busy
 }
 
+/// `scene` rendered at `width` x `height` without anti-aliasing on a pool of `threads`.
+fn render_on_threads(scene: &Scene, width: u32, height: u32, threads: usize) -> Image {
+    let world = World::build(scene);
+    let options = RenderOptions {
+        width,
+        height,
+        antialias: None,
+    };
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(|| render(scene, &world, &options, &|_| {}))
+}
+
 #[test]
 fn same_image_with_one_and_four_threads() {
     let busy = busy_scene();
-    let world = World::build(&busy);
-    let options = RenderOptions {
-        width: 48,
-        height: 36,
-        antialias: None,
-    };
-    let render_with = |threads: usize| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap()
-            .install(|| render(&busy, &world, &options, &|_| {}))
-    };
-    let single = render_with(1);
-    let four = render_with(4);
+    let single = render_on_threads(&busy, 48, 36, 1);
+    let four = render_on_threads(&busy, 48, 36, 4);
     assert_eq!(single, four);
     // The scene is not trivially black.
     assert!(
@@ -381,20 +383,10 @@ fn radiosity_final_pass_is_the_same_with_one_and_three_threads() {
         pretrace_end: 0.25,
         ..Default::default()
     });
-    let world = World::build(&busy);
-    let options = RenderOptions {
-        width: 40,
-        height: 30,
-        antialias: None,
-    };
-    let render_with = |threads: usize| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap()
-            .install(|| render(&busy, &world, &options, &|_| {}))
-    };
-    assert_eq!(render_with(1), render_with(3));
+    assert_eq!(
+        render_on_threads(&busy, 40, 30, 1),
+        render_on_threads(&busy, 40, 30, 3)
+    );
 }
 
 #[test]
