@@ -264,13 +264,13 @@ fn run_durer(
     Err(format!("durer {status}: {first}"))
 }
 
-/// Renders and compares one scene; `Ok(())` when it matches.
+/// Renders and compares one scene; its comparison when it matches.
 fn check_scene(
     scene: &Path,
     reference_png: &Path,
     scratch: &Path,
     failures_dir: &Path,
-) -> Result<(), Failure> {
+) -> Result<Comparison, Failure> {
     let name = scene
         .file_stem()
         .unwrap_or_default()
@@ -337,7 +337,7 @@ fn check_scene(
         return Err(fail(tolerance, None, note));
     };
     if comparison.matches(tolerance) {
-        return Ok(());
+        return Ok(comparison);
     }
     save_failure(Some(diff_image(&reference, &render)));
     let note = if comparison.is_close() { "close" } else { "" };
@@ -399,6 +399,60 @@ fn failure_table(failures: &[Failure], total: usize, failures_dir: &Path) -> Str
     table
 }
 
+/// The scene's opening comment (after its `Tests:` or `NAME:` label, without the
+/// `povray-options`, `tolerance` and `needs` lines) up to its first full stop, on one line.
+fn scene_purpose(source: &str) -> String {
+    let comment: Vec<&str> = source
+        .lines()
+        .map_while(|line| line.trim().strip_prefix("//"))
+        .map(str::trim)
+        .filter(|line| {
+            !["povray-options:", "tolerance:", "needs:"]
+                .iter()
+                .any(|setting| line.starts_with(setting))
+        })
+        .collect();
+    let text = comment.join(" ");
+    let text = match text.split_once(": ") {
+        Some((label, rest)) if !label.contains(' ') => rest,
+        _ => text.as_str(),
+    }
+    .trim();
+    let end = text.find(". ").map_or(text.len(), |stop| stop + 1);
+    text[..end].replace('|', "\\|")
+}
+
+/// A markdown table of every scene's measured difference from POV-Ray.
+fn results_table(outcomes: &[(&Path, Result<Comparison, Failure>)]) -> String {
+    let mut table = String::from(
+        "| scene | tests | pixels over 24/255 | block diff | max diff | result |\n\
+         |---|---|---|---|---|---|\n",
+    );
+    for (scene, outcome) in outcomes {
+        let name = scene.file_stem().unwrap_or_default().to_string_lossy();
+        let purpose = fs::read_to_string(scene)
+            .map(|source| scene_purpose(&source))
+            .unwrap_or_default();
+        let (comparison, result) = match outcome {
+            Ok(comparison) => (Some(*comparison), "match".to_string()),
+            Err(failure) => (failure.comparison, format!("FAIL {}", failure.note)),
+        };
+        let (over, block, max) = comparison.map_or(("-".into(), "-".into(), "-".into()), |c| {
+            (
+                format!("{:.2}%", 100.0 * c.fraction_over),
+                format!("{:.2}", c.block_diff),
+                c.max_diff.to_string(),
+            )
+        });
+        let _ = writeln!(
+            table,
+            "| `{name}` | {purpose} | {over} | {block} | {max} | {} |",
+            result.trim()
+        );
+    }
+    table
+}
+
 #[test]
 fn reference_images_match_povray() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -428,11 +482,21 @@ fn reference_images_match_povray() {
         std::env::temp_dir().join(format!("durer-reference-{}-{nanos}", std::process::id()));
     fs::create_dir_all(&scratch).expect("create a scratch directory");
 
-    let failures: Vec<Failure> = scenes
+    let outcomes: Vec<(&Path, Result<Comparison, Failure>)> = scenes
         .iter()
-        .filter_map(|(scene, png)| check_scene(scene, png, &scratch, &failures_dir).err())
+        .map(|(scene, png)| {
+            let outcome = check_scene(scene, png, &scratch, &failures_dir);
+            (scene.as_path(), outcome)
+        })
         .collect();
     let _ = fs::remove_dir_all(&scratch);
+    if let Some(report) = std::env::var_os("DURER_REFERENCE_REPORT") {
+        fs::write(&report, results_table(&outcomes)).expect("write the reference report");
+    }
+    let failures: Vec<Failure> = outcomes
+        .into_iter()
+        .filter_map(|(_, outcome)| outcome.err())
+        .collect();
 
     println!(
         "{} of {} reference scenes match",
@@ -567,4 +631,15 @@ fn povray_options_become_durer_options() {
     );
     assert!(durer_options("sphere { 0, 1 }\n").unwrap().is_empty());
     assert!(durer_options("// povray-options: +Q3\n").is_err());
+}
+
+#[test]
+fn scene_purpose_is_the_first_sentence_of_the_tests_comment() {
+    let scene = "// Tests: a sphere | a box. More words\n// and more.\n#version 3.7;\n";
+    assert_eq!(scene_purpose(scene), "a sphere \\| a box.");
+    let scene =
+        "// aa_method1: one line\n// povray-options: +A0.3\n// tolerance: 0.05\n#version 3.7;\n";
+    assert_eq!(scene_purpose(scene), "one line");
+    assert_eq!(scene_purpose("// Tests: a: b\n"), "a: b");
+    assert_eq!(scene_purpose("#version 3.7;\n"), "");
 }
