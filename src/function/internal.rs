@@ -164,7 +164,8 @@ pub enum Internal {
     WitchOfAgnesi,
     /// 75, `f_witch_of_agnesi_2d(x,y,z, strength, size, height, sor switch, sor offset, sor angle)`.
     WitchOfAgnesi2d,
-    /// 76, `f_noise3d(x,y,z): solid noise in [0, 1] with the default generator`.
+    /// 76, `f_noise3d(x,y,z)`: solid noise in [0, 1]; compiled as `Node::SceneNoise`, which
+    /// follows the scene's generator (evaluated here, it uses the default one).
     Noise3d,
     /// 78, `f_noise_generator(x,y,z, generator)`.
     NoiseGenerator,

@@ -20,6 +20,10 @@ pub use vector::{Body, Component, Output};
 
 use std::sync::Arc;
 
+use glam::DVec3;
+
+use crate::noise::{noise, SceneNoiseGenerator};
+
 /// Most parameters a compiled function may take.
 pub const MAX_PARAMETERS: usize = 32;
 
@@ -270,6 +274,9 @@ pub enum Node {
     Member(Arc<Function>, Component, Box<[Node]>),
     /// A call of one of POV-Ray's internal functions.
     Internal(Internal, Box<[Node]>),
+    /// `f_noise3d(x, y, z)`: noise with the scene's `noise_generator` as it stands when the
+    /// function is evaluated (measured: POV-Ray's follows the latest `global_settings`).
+    SceneNoise(SceneNoiseGenerator, Box<[Node]>),
 }
 
 impl Node {
@@ -285,7 +292,7 @@ impl Node {
             Node::Call(function, arguments) | Node::Member(function, _, arguments) => {
                 (function.call_depth() + 1).max(max_depth(arguments))
             }
-            Node::Internal(_, arguments) => max_depth(arguments),
+            Node::Internal(_, arguments) | Node::SceneNoise(_, arguments) => max_depth(arguments),
         }
     }
 
@@ -330,6 +337,10 @@ impl Node {
             Node::Internal(which, arguments) => {
                 let values = argument_values(arguments, parameters);
                 which.eval(&values)
+            }
+            Node::SceneNoise(generator, arguments) => {
+                let values = argument_values(arguments, parameters);
+                noise(DVec3::new(values[0], values[1], values[2]), generator.get())
             }
         }
     }

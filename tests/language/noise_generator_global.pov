@@ -25,3 +25,15 @@ global_settings { max_trace_level 3 }
 Check(Near(Bozo(P.x, P.y, P.z), 0.578735912427), "generator 3, kept by a later block without one")
 Check(Near(Stirred(P.x, P.y, P.z), 0.172238565535), "turbulence, generator 3")
 global_settings { noise_generator 2 }
+// functions.inc's f_noise3d (internal 76) and the functions built on it follow the scene's
+// generator too, also in a function declared before the setting.
+#include "functions.inc"
+#declare Noise = function { f_noise3d(x, y, z) }
+Check(Near(Noise(0.3, 1.7, 2.2), 0.351489497865), "f_noise3d, generator 2")
+global_settings { noise_generator 1 }
+Check(Near(Noise(0.3, 1.7, 2.2), 0.165116637341), "f_noise3d, a later generator 1")
+Check(Near(f_snoise3d(0.3, 1.7, 2.2), -0.669766725319), "f_snoise3d, generator 1")
+Check(Near(f_bozo(0.3, 1.7, 2.2), 0.165116637341), "f_bozo, generator 1")
+global_settings { noise_generator 3 }
+Check(Near(Noise(0.3, 1.7, 2.2), 0.356115400452), "f_noise3d, generator 3")
+global_settings { noise_generator 2 }

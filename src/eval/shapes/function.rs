@@ -95,10 +95,12 @@ impl Evaluator {
                 let internal = self.internal_function(call)?;
                 let arity = internal.arity();
                 let arguments = (0..arity).map(Node::Parameter).collect();
-                return Ok(Arc::new(Function::new(
-                    Node::Internal(internal, arguments),
-                    arity,
-                )));
+                let node = if internal == Internal::Noise3d {
+                    Node::SceneNoise(self.settings.scene_noise_generator.clone(), arguments)
+                } else {
+                    Node::Internal(internal, arguments)
+                };
+                return Ok(Arc::new(Function::new(node, arity)));
             }
         }
         let parameters: Vec<Symbol> = if function.parameters.is_empty() {
