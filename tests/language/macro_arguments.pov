@@ -20,12 +20,16 @@ Check((vlength(Three(sin(0) cos(0) 3) - <0, 1, 3>) = 0), "calls without commas")
 Check((vlength(Vectors(<1, 2> <3, 4> <5, 6>) - <531, 642>) = 0), "vectors without commas")
 Check((vlength(Vectors(<1, 2>, 0 <3, 4>) - <301, 402>) = 0), "a number then a vector")
 Check((vlength(Vectors(<1, 2>, 2 - 2 <3, 4>) - <301, 402>) = 0), "a difference then a vector")
+#macro Mixed(A, B, C) (A + B * 10 + C * 100) #end
+Check((vlength(Mixed(1 <3, 4> 5) - <531, 541>) = 0), "a vector between numbers, no commas")
+Check((vlength(Mixed(<1, 2> <3, 4> A) - <431, 442>) = 0), "a vector before a name")
+Check((vlength(Mixed(0 <3, 4> (5)) - <530, 540>) = 0), "a vector before a parenthesis")
 // Inside functions `<` still compares.
 #declare Negative = function(x) { max(x < 0, 0.5) }
 Check((Negative(-3) = 1 & Negative(3) = 0.5), "`<` compares in a function's call")
 // Deeply nested calls parse in linear time (each argument is read once: a grammar that read
 // an argument twice took 2^depth steps, minutes at this depth).
 #declare Deep = max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(max(1, 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0), 0);
-Check(Deep = 1, "26 nested calls")
+Check((Deep = 1), "26 nested calls")
 #if (2 < 3) #else #error "failed: `<` compares in an #if" #end
-Check(((1 < 2) + (2 <3)) = 2, "`<` before a number compares inside parentheses")
+Check((((1 < 2) + (2 <3)) = 2), "`<` before a number compares inside parentheses")
