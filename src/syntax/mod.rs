@@ -131,6 +131,11 @@ fn pest_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) ->
         if let Some(k) = did_you_mean(found, keywords::ALL.iter().copied()) {
             d = d.with_help(format!("did you mean `{k}`?"));
         }
+    } else if [">", "=", "&", "|", "?"].contains(&found) {
+        d = d.with_help(
+            "comparisons, `&`, `|` and `? :` are only allowed inside parentheses, as in \
+             POV-Ray: write `(A > B)`",
+        );
     }
     d
 }

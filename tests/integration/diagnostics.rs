@@ -972,3 +972,16 @@ fn unsupported_photon_options_are_warned_at_their_keyword() {
     assert_eq!((warnings[1].0, warnings[1].1), (3, 76));
     assert!(warnings[1].2.contains("`split_union off`"));
 }
+
+#[test]
+fn comparison_outside_parentheses_asks_for_parentheses() {
+    check(
+        "comparison_outside_parentheses",
+        2,
+        21,
+        &[
+            "found `>`",
+            "only allowed inside parentheses, as in POV-Ray: write `(A > B)`",
+        ],
+    );
+}

@@ -1,0 +1,2 @@
+#version 3.7;
+#declare Bigger = 3 > 2;
