@@ -1,5 +1,6 @@
 //! Built-in functions callable from expressions: math, vectors and strings.
 
+use super::c_format::general_format;
 use super::value::{Value, Vector};
 use super::{EvalResult, Evaluator};
 use crate::scene::Transform;
@@ -585,17 +586,39 @@ fn string_argument(ev: &mut Evaluator, call: &Call, index: usize) -> EvalResult<
     }
 }
 
-/// `str(value, width, precision)` as POV-Ray formats it.
+/// Longest text `str` and `vstr` produce; a longer one is `<invalid>` (measured: POV-Ray
+/// formats into a buffer of this size).
+const MAX_FORMATTED_LENGTH: usize = 254;
+/// Precisions above this give the same text: a double's exact decimal expansion has at most
+/// 767 significant digits, and a fixed text this long is over `MAX_FORMATTED_LENGTH` anyway.
+const MAX_PRECISION: f64 = 1100.0;
+
+/// `str(value, width, precision)` as POV-Ray formats it (measured): C's `%W.Pf` (a negative
+/// width pads with zeros, a negative precision means 6); a text over 254 characters is made
+/// again as `%W.Pg`, and when that is still too long the result is `<invalid>`.
 fn format_float(value: f64, width: f64, precision: f64) -> String {
     let precision = if precision < 0.0 {
         6
     } else {
-        precision as usize
+        precision.min(MAX_PRECISION) as usize
     };
-    let text = format!("{value:.precision$}");
-    // A negative width pads with zeros, a positive one with spaces.
     let zero_padded = width < 0.0;
-    let width = width.abs() as usize;
+    // Any width over the limit is invalid whatever the value; clamping keeps `format!` safe.
+    let width = width.abs().min((MAX_FORMATTED_LENGTH + 1) as f64) as usize;
+    let fixed = padded(format!("{value:.precision$}"), value, width, zero_padded);
+    if fixed.len() <= MAX_FORMATTED_LENGTH {
+        return fixed;
+    }
+    let general = padded(general_format(value, precision), value, width, zero_padded);
+    if general.len() <= MAX_FORMATTED_LENGTH {
+        general
+    } else {
+        "<invalid>".to_string()
+    }
+}
+
+/// `text` right-aligned in `width` characters, padded with spaces or, after the sign, zeros.
+fn padded(text: String, value: f64, width: usize, zero_padded: bool) -> String {
     match (width > text.len(), zero_padded) {
         (true, true) if value < 0.0 => format!("-{:0>w$}", &text[1..], w = width - 1),
         (true, true) => format!("{text:0>width$}"),
@@ -703,6 +726,36 @@ fn hexadecimal_float(s: &str) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn str_formats_long_texts_as_povray() {
+        use super::format_float;
+        // Values printed by POV-Ray 3.7.
+        assert_eq!(format_float(1.5, 0.0, 2.0), "1.50");
+        assert_eq!(format_float(1.5, 0.0, -3.0), "1.500000");
+        assert_eq!(format_float(-1.5, -10.0, 2.0), "-000001.50");
+        assert_eq!(format_float(1.5, 0.0, 252.0).len(), 254);
+        assert_eq!(format_float(1.5, 0.0, 253.0), "1.5");
+        assert_eq!(format_float(123.5, 0.0, 252.0), "123.5");
+        assert_eq!(format_float(1.5, 5.0, 253.0), "  1.5");
+        assert_eq!(format_float(1.5, 254.0, 2.0).len(), 254);
+        assert_eq!(format_float(1.5, 255.0, 2.0), "<invalid>");
+        assert_eq!(format_float(1.5, 1e12, 2.0), "<invalid>");
+        assert_eq!(format_float(1.5, 20.0, 1000.0), "                 1.5");
+        assert_eq!(format_float(-1.5, -20.0, 1e9), "-00000000000000001.5");
+        assert_eq!(
+            format_float(1.0 / 3.0, 0.0, 1000.0),
+            "0.333333333333333314829616256247390992939472198486328125"
+        );
+        assert_eq!(
+            format_float(1e20 / 3.0, 0.0, 1000.0),
+            "33333333333333331968"
+        );
+        assert_eq!(format_float(1e300, 0.0, 2.0), "1e+300");
+        assert_eq!(format_float(1e300, 0.0, 300.0), "<invalid>");
+        assert_eq!(format_float(1e-300, 0.0, 400.0), "<invalid>");
+        assert_eq!(format_float(1e200, 250.0, 2.0).len(), 250);
+    }
+
     use super::leading_float;
 
     #[test]

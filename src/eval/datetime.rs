@@ -216,7 +216,14 @@ fn conversion_sequence(time: &Civil, sequence: &str) -> Result<(String, usize), 
     while bytes.get(at).is_some_and(u8::is_ascii_digit) {
         at += 1;
     }
-    let width: usize = sequence[width_start..at].parse().unwrap_or(0);
+    // A width past the result limit fails that limit anyway; capping it keeps `format!` safe.
+    let width = match &sequence[width_start..at] {
+        "" => 0,
+        digits => digits
+            .parse::<usize>()
+            .unwrap_or(usize::MAX)
+            .min(RESULT_LIMIT + 1),
+    };
     if matches!(bytes.get(at), Some(b'E' | b'O')) {
         at += 1;
     }
@@ -393,6 +400,9 @@ mod tests {
     fn iso_weeks_cross_year_ends() {
         // 2000-01-01 (a Saturday) belongs to week 52 of 1999; 2004-12-31 to week 53 of 2004.
         assert_eq!(format_days(0.0, "%G-%V").unwrap(), "1999-52");
+        // Widths far past the limit fail it, never panic.
+        assert!(format_days(0.0, "%70000d").is_err());
+        assert!(format_days(0.0, "%99999999999999999999999d").is_err());
         let last_of_2004 = (days_from_civil(2004, 12, 31) - DAYS_1970_TO_2000) as f64;
         assert_eq!(format_days(last_of_2004, "%G-%V").unwrap(), "2004-53");
         let last_of_2001 = (days_from_civil(2001, 12, 31) - DAYS_1970_TO_2000) as f64;

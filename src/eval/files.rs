@@ -4,6 +4,7 @@
 //! other path is refused with a diagnostic. At the end of a file being read, its handle
 //! identifier is undefined, so `#while (defined(Handle))` loops end, as in POV-Ray.
 
+use super::c_format::general_format;
 use super::value::{Value, Vector};
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
@@ -318,35 +319,7 @@ fn next_datum(text: &str, position: &mut usize) -> Result<Option<Value>, String>
 /// Floats as POV-Ray writes them: C's `%g`, six significant digits without trailing zeros,
 /// switching to an exponent below 1e-4 and from 1e6 on (`1e-05`, `1.23457e+06`).
 fn format_number(value: f64) -> String {
-    const DIGITS: i32 = 6;
-    if !value.is_finite() {
-        return match (value.is_nan(), value < 0.0) {
-            (true, _) => "nan".into(),
-            (false, true) => "-inf".into(),
-            (false, false) => "inf".into(),
-        };
-    }
-    if value == 0.0 {
-        return if value.is_sign_negative() { "-0" } else { "0" }.into();
-    }
-    // The exponent after rounding to six digits decides the form, as in C.
-    let scientific = format!("{:.*e}", (DIGITS - 1) as usize, value);
-    let (mantissa, exponent) = scientific.split_once('e').unwrap_or((&scientific, "0"));
-    let exponent: i32 = exponent.parse().unwrap_or(0);
-    let trim = |text: &str| -> String {
-        if text.contains('.') {
-            text.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            text.to_string()
-        }
-    };
-    if (-4..DIGITS).contains(&exponent) {
-        let decimals = (DIGITS - 1 - exponent) as usize;
-        trim(&format!("{value:.decimals$}"))
-    } else {
-        let sign = if exponent < 0 { '-' } else { '+' };
-        format!("{}e{sign}{:02}", trim(mantissa), exponent.abs())
-    }
+    general_format(value, 6)
 }
 
 fn absolute(path: &Path) -> PathBuf {

@@ -7,6 +7,7 @@
 mod appearance;
 mod atmosphere;
 mod builtins;
+mod c_format;
 mod camera;
 mod datetime;
 mod expr;
