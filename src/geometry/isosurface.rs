@@ -198,7 +198,7 @@ impl Isosurface {
         if low_value + high_value > self.max_gradient * span {
             return None;
         }
-        if span <= self.accuracy || depth >= MAX_DEPTH {
+        if span < self.accuracy || depth >= MAX_DEPTH {
             // The answer is the interval's far end, as POV-Ray's: its `trace` results lie on
             // the grid of halvings of the container span, past the surface by up to
             // `accuracy` (measured with planes and accuracies from 0.001 to 0.3).

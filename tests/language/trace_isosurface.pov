@@ -26,6 +26,9 @@ Check(TraceX(0.123, 1, 0.01, <-3, 0.3, 0.2>, x), 0.125, "plane at 0.123, accurac
 Check(TraceX(0.3456, 1, 0.001, <-3, 0.3, 0.2>, x), 0.345703125, "plane at 0.3456, accuracy 0.001")
 Check(TraceX(-0.9, 1, 0.1, <-3, 0.3, 0.2>, x), -0.875, "plane at -0.9, accuracy 0.1")
 Check(TraceX(0.95, 1, 0.1, <-3, 0.3, 0.2>, x), 1, "plane at 0.95: the container")
+// Halving goes on while the interval is not shorter than `accuracy`.
+Check(TraceX(0.01, 1, 0.0625, <-3, 0.3, 0.2>, x), 0.03125, "interval exactly as long as accuracy 0.0625")
+Check(TraceX(0.01, 1, 0.125, <-3, 0.3, 0.2>, x), 0.0625, "interval exactly as long as accuracy 0.125")
 // From inside: the search starts 0.05 (5 x accuracy 0.01) along the ray.
 Check(TraceX(0, 10, 0.01, <0.5, 0, 0>, -x), -0.0041259765625, "from 0.5 inside, box 10")
 Check(TraceX(0, 1, 0.01, <0.5, 0, 0>, -x), -0.003125, "from 0.5 inside, box 1")
