@@ -5,8 +5,10 @@
 //! bounds. Holds: the root search is POV-Ray's: an interval of the ray is split in halves
 //! until it is shorter than `accuracy`, and dropped when the function values at its ends are
 //! too far from the threshold for a function whose slope stays under `max_gradient` to reach
-//! it in between. A too-low `max_gradient` therefore loses pieces of the surface or finds
-//! points past it, as in POV-Ray. A ray spends at most [`MAX_EVALUATIONS`] function values.
+//! it in between; a crossing is the far end of its last interval, up to `accuracy` past the
+//! surface, and a ray starting inside the surface begins 5 `accuracy` steps out (both as
+//! POV-Ray's `trace` shows). A too-low `max_gradient` therefore loses pieces of the surface or
+//! finds points past it, as in POV-Ray. A ray spends at most [`MAX_EVALUATIONS`] function values.
 //! Where the function is below the threshold on the container's boundary, the container's
 //! surface shows unless `open`. Nothing allocates.
 
