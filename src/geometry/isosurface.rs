@@ -5,8 +5,10 @@
 //! bounds. Holds: the root search is POV-Ray's: an interval of the ray is split in halves
 //! until it is shorter than `accuracy`, and dropped when the function values at its ends are
 //! too far from the threshold for a function whose slope stays under `max_gradient` to reach
-//! it in between. A too-low `max_gradient` therefore loses pieces of the surface or finds
-//! points past it, as in POV-Ray. A ray spends at most [`MAX_EVALUATIONS`] function values.
+//! it in between; a crossing is the far end of its last interval, up to `accuracy` past the
+//! surface, and a ray starting inside the surface begins 5 `accuracy` steps out (both as
+//! POV-Ray's `trace` shows). A too-low `max_gradient` therefore loses pieces of the surface or
+//! finds points past it, as in POV-Ray. A ray spends at most [`MAX_EVALUATIONS`] function values.
 //! Where the function is below the threshold on the container's boundary, the container's
 //! surface shows unless `open`. Nothing allocates.
 
@@ -23,6 +25,8 @@ const FUNCTION_PART: u8 = 0;
 const CONTAINER_PART: u8 = 1;
 /// Deepest halving of a ray interval (far beyond any useful accuracy).
 const MAX_DEPTH: u32 = 60;
+/// Accuracy steps a ray starting inside the surface skips before its search begins.
+const INSIDE_START_SKIP: f64 = 5.0;
 /// Most function evaluations one ray may spend (a huge `max_gradient` with a tiny `accuracy`
 /// would otherwise take hours); past it the search gives up on the rest of the ray.
 const MAX_EVALUATIONS: u32 = 1 << 16;
@@ -110,9 +114,15 @@ impl Isosurface {
             return;
         }
         let unit = direction / length;
-        let start = entry.max(0.0) * length;
         let end = exit * length;
         let at = |distance: f64| self.field(origin + unit * distance);
+        let mut start = entry.max(0.0) * length;
+        // A ray that starts inside the surface (a secondary ray leaving a hit, which lies past
+        // the surface) skips its first `INSIDE_START_SKIP` accuracy steps, as POV-Ray's does:
+        // measured on planes, its crossings then lie on the halvings of the rest of the span.
+        if entry < 0.0 && at(start) < 0.0 {
+            start = (INSIDE_START_SKIP * self.accuracy).min(end);
+        }
         let mut found = Found {
             crossings: [(0.0, 0); MAX_ROOTS],
             len: 0,
@@ -167,9 +177,9 @@ impl Isosurface {
     /// POV-Ray's search for the first point where `value` (positive at `low`) is negative:
     /// an interval is dropped when its end values are too large for a slope of
     /// `max_gradient` to bring their sum to zero, otherwise halved, left half first, until it
-    /// is shorter than `accuracy`; then, if the value is negative at its far end, the answer
-    /// is the interpolated crossing (or the far end when both ends are negative). With a too-low `max_gradient` this drops real crossings, or finds a point past
-    /// the surface, as POV-Ray does.
+    /// is shorter than `accuracy`; then, if the value is negative at its far end, that end is
+    /// the answer. With a too-low `max_gradient` this drops real crossings, or finds a point
+    /// past the surface, as POV-Ray does.
     #[allow(clippy::too_many_arguments)]
     fn search(
         &self,
@@ -190,17 +200,11 @@ impl Isosurface {
         if low_value + high_value > self.max_gradient * span {
             return None;
         }
-        if span <= self.accuracy || depth >= MAX_DEPTH {
-            if high_value >= 0.0 {
-                return None;
-            }
-            // Where the interval brackets the surface, place the point on it (so secondary
-            // rays leave from outside); otherwise, as POV-Ray, take the far end.
-            return Some(if low_value >= 0.0 {
-                low + span * (low_value / (low_value - high_value))
-            } else {
-                high
-            });
+        if span < self.accuracy || depth >= MAX_DEPTH {
+            // The answer is the interval's far end, as POV-Ray's: its `trace` results lie on
+            // the grid of halvings of the container span, past the surface by up to
+            // `accuracy` (measured with planes and accuracies from 0.001 to 0.3).
+            return (high_value < 0.0).then_some(high);
         }
         let middle = 0.5 * (low + high);
         let middle_value = value(middle);
