@@ -152,25 +152,7 @@ impl Evaluator {
             "ovus" => self.eval_ovus(stream)?,
             "lemon" => self.eval_lemon(block.head_span, stream)?,
             "parametric" => self.eval_parametric(block.head_span, stream)?,
-            "sor" => {
-                let count = self.expect_float(stream, "the number of points")?;
-                if !(0.0..=1e7).contains(&count) {
-                    return Err(self
-                        .error(
-                            block.head_span,
-                            format!("a sor needs 4 to 10000000 points, found {count}"),
-                        )
-                        .into());
-                }
-                let mut points = Vec::with_capacity((count as usize).min(1 << 20));
-                for _ in 0..count as usize {
-                    points.push(self.expect_vector(stream, "a point")?.truncate());
-                }
-                Shape::Sor {
-                    points: Arc::new(points),
-                    open: false,
-                }
-            }
+            "sor" => self.eval_sor(block.head_span, stream)?,
             "superellipsoid" => {
                 let (value, span) = self.expect_value(stream, "<east-west, north-south>")?;
                 let exponents = self.to_vector3(value, span)?;
