@@ -380,7 +380,7 @@ impl Evaluator {
             Value::Pigment(pigment) => {
                 let mut texture = self.object_texture(object);
                 let mut pigment = Rc::unwrap_or_clone(pigment);
-                pigment.transform_with_object(&object.transform().inverse());
+                pigment.transform(&object.transform().inverse());
                 change_top_layer(&mut texture, |top| top.pigment = pigment);
                 object.texture = Some(Arc::new(texture));
             }

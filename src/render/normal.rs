@@ -72,6 +72,7 @@ pub fn perturbed_normal(
         point: world_point,
         normal: facing,
         ray_direction: DVec3::ZERO,
+        uv,
     };
     perturbed_normal_at(normal, world_point, uv, &surface)
 }
@@ -105,8 +106,8 @@ fn tilt(
     if depth >= MAX_NORMAL_NESTING {
         return facing;
     }
-    // A uv-mapped normal sees `<u, v, 0>` (the point on shapes without uv coordinates, as
-    // pigments do), and so do the normals it is made of.
+    // A uv-mapped normal sees `<u, v, 0>` (the world point's x and y on shapes without uv
+    // coordinates, as pigments do), and so do the normals it is made of.
     let outer_point = match (normal.uv_mapped, uv) {
         (true, Some(uv)) => uv.extend(0.0),
         _ => outer_point,

@@ -111,8 +111,8 @@ pub enum Pigment {
         warps: Option<Box<Pattern>>,
     },
     /// `uv_mapping`: the pigment is evaluated at `<u, v, 0>` of the surface instead of the
-    /// point. Transformations of the pigment or its texture apply; those of the object do
-    /// not (see [`Pigment::transform_with_object`]).
+    /// point. Only the transformations written in the block that says `uv_mapping` apply;
+    /// none applied afterwards reach it (see [`Pigment::transform`]).
     UvMapped(Box<Pigment>),
 }
 
@@ -249,7 +249,7 @@ impl Texture {
 
     /// [`Texture::transform`], or [`Texture::transform_with_object`] when `object_level`.
     fn transform_in(&mut self, t: &Transform, object_level: bool) {
-        self.pigment.transform_in(t, object_level);
+        self.pigment.transform(t);
         if let Some(normal) = &mut self.normal {
             normal.transform_in(t, object_level);
         }
@@ -270,7 +270,7 @@ impl CompoundTexture {
         self.transform_in(t, false);
     }
 
-    /// [`CompoundTexture::transform`]; `object_level` spares uv-mapped pigments.
+    /// [`CompoundTexture::transform`]; `object_level` spares uv-mapped normals.
     fn transform_in(&mut self, t: &Transform, object_level: bool) {
         match self {
             CompoundTexture::Layered(layers) => layers
@@ -309,44 +309,32 @@ impl<T> BlendMap<T> {
 
 impl Pigment {
     /// Composes `t` into the pigment's pattern transform and those of every nested pigment.
+    /// Uv-mapped pigments are left as they are, wherever they sit (measured: once the block
+    /// that says `uv_mapping` is closed, POV-Ray applies no transformation to the pigment:
+    /// not an object's, a texture's, an enclosing pigment's, nor one written after the
+    /// pigment's name in `pigment { Uv_pigment translate .. }`; the transformations inside
+    /// that block apply before the pigment is wrapped).
     pub fn transform(&mut self, t: &Transform) {
-        self.transform_in(t, false);
-    }
-
-    /// Composes an object's transformation `t` into the pigment: like [`Pigment::transform`],
-    /// except that uv-mapped pigments are left as they are (POV-Ray: scaling a uv-mapped
-    /// object does not scale its pattern).
-    pub fn transform_with_object(&mut self, t: &Transform) {
-        self.transform_in(t, true);
-    }
-
-    /// [`Pigment::transform`]; `object_level` spares uv-mapped pigments.
-    fn transform_in(&mut self, t: &Transform, object_level: bool) {
         match self {
             Pigment::Solid(_) => {}
             Pigment::Pattern { map, transform, .. } => {
                 *transform = transform.then(t);
                 match map {
                     PigmentMap::Colours(_) => {}
-                    PigmentMap::Blocks(blocks) => blocks
-                        .iter_mut()
-                        .for_each(|b| b.transform_in(t, object_level)),
-                    PigmentMap::Pigments(entries) => entries
-                        .iter_mut()
-                        .for_each(|(_, p)| p.transform_in(t, object_level)),
+                    PigmentMap::Blocks(blocks) => blocks.iter_mut().for_each(|b| b.transform(t)),
+                    PigmentMap::Pigments(entries) => {
+                        entries.iter_mut().for_each(|(_, p)| p.transform(t))
+                    }
                 }
             }
             Pigment::Average {
                 entries, transform, ..
             } => {
                 *transform = transform.then(t);
-                entries
-                    .iter_mut()
-                    .for_each(|(_, p)| p.transform_in(t, object_level))
+                entries.iter_mut().for_each(|(_, p)| p.transform(t))
             }
             Pigment::Image { transform, .. } => *transform = transform.then(t),
-            Pigment::UvMapped(_) if object_level => {}
-            Pigment::UvMapped(inner) => inner.transform_in(t, false),
+            Pigment::UvMapped(_) => {}
         }
     }
 
