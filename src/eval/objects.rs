@@ -373,7 +373,7 @@ impl Evaluator {
             Value::Normal(normal) => {
                 let mut texture = self.object_texture(object);
                 let mut normal = Rc::unwrap_or_clone(normal);
-                normal.transform_with_object(&object.transform().inverse());
+                normal.transform(&object.transform().inverse());
                 change_top_layer(&mut texture, |top| top.normal = Some(Box::new(normal)));
                 object.texture = Some(Arc::new(texture));
             }
@@ -459,7 +459,7 @@ impl Evaluator {
     /// the object's local space so later transformations carry it along; layered on top of
     /// a texture the object already has.
     fn attach_texture(&mut self, object: &mut Object, mut texture: Texture) {
-        texture.transform_with_object(&object.transform().inverse());
+        texture.transform(&object.transform().inverse());
         // POV-Ray lays a texture given to an object that has one on top of it.
         let texture = match object.texture.take() {
             Some(below) => layered(vec![Texture::clone(&below), texture]),
@@ -471,7 +471,7 @@ impl Evaluator {
     /// Attaches an `interior_texture` given in the object's outer space like
     /// [`Self::attach_texture`]: a second one is laid on top of the first (measured).
     fn attach_interior_texture(&mut self, object: &mut Object, mut texture: Texture) {
-        texture.transform_with_object(&object.transform().inverse());
+        texture.transform(&object.transform().inverse());
         let texture = match object.interior_texture.take() {
             Some(below) => layered(vec![Texture::clone(&below), texture]),
             None => texture,

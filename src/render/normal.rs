@@ -284,11 +284,15 @@ mod tests {
             (tilted - DVec3::new(-0.13217, 0.0, -0.99123)).length() < 2e-5,
             "{tilted}"
         );
-        // Object transformations leave it be; its own apply.
-        normal.transform_with_object(&Transform::rotation_degrees(DVec3::new(0.0, 0.0, 90.0)));
+        // Transformations applied once it is uv-mapped (an object's) leave it be; its own,
+        // written in its block before it is marked uv-mapped, apply.
+        let quarter_turn = Transform::rotation_degrees(DVec3::new(0.0, 0.0, 90.0));
+        normal.transform(&quarter_turn);
         let turned = perturbed_normal(&normal, DVec3::ZERO, uv, -DVec3::Z);
         assert!((turned - tilted).length() < 1e-12, "{turned}");
-        normal.transform(&Transform::rotation_degrees(DVec3::new(0.0, 0.0, 90.0)));
+        let mut normal = gradient_normal(DVec3::X, 1.0);
+        normal.transform(&quarter_turn);
+        normal.uv_mapped = true;
         let turned = perturbed_normal(&normal, DVec3::ZERO, uv, -DVec3::Z);
         assert!(
             (turned - DVec3::new(0.0, -0.13217, -0.99123)).length() < 2e-5,
