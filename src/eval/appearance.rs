@@ -308,6 +308,9 @@ impl Evaluator {
         let mut average = false;
         let mut earlier_item = None;
         let mut uv_mapping = false;
+        // A uv-mapped pigment named here takes no transformation (POV-Ray: only those in
+        // the block that says `uv_mapping` apply).
+        let mut sealed_uv = false;
         while let Some(item) = self.next_item(stream)? {
             // `uv_mapping` and a first pigment identifier (`pigment { P bozo .. }`) may
             // precede the pattern; nothing else may (POV-Ray).
@@ -321,6 +324,7 @@ impl Evaluator {
             if let Pigment::UvMapped(inner) = &mut pigment {
                 pigment = std::mem::replace(&mut **inner, Pigment::Solid(Colour::BLACK));
                 uv_mapping = true;
+                sealed_uv = true;
             }
             if let Item::Keyword(word, _) = &item {
                 if &**word == "average" {
@@ -404,6 +408,9 @@ impl Evaluator {
                 Item::Keyword(word, span) => match &**word {
                     "translate" | "rotate" | "scale" | "matrix" | "transform" => {
                         let t = self.transform_keyword(word, *span, stream)?;
+                        if sealed_uv {
+                            continue;
+                        }
                         match &mut pigment {
                             Pigment::Pattern { pattern, .. } => pattern.note_transform(&t),
                             Pigment::Image {
@@ -460,9 +467,9 @@ impl Evaluator {
                     let value = self.eval_block(block)?;
                     match value {
                         Value::ColourMap(map) if is_colour_map => colour_map = Some((*map).clone()),
-                        Value::Transform(t) => pigment.transform(&t),
+                        Value::Transform(t) if !sealed_uv => pigment.transform(&t),
+                        Value::Transform(_) | Value::Nothing => {}
                         Value::Pigment(p) => pigment = Rc::unwrap_or_clone(p),
-                        Value::Nothing => {}
                         _ => return Err(self.unexpected_in(&item, "pigment")),
                     }
                 }

@@ -152,25 +152,7 @@ impl Evaluator {
             "ovus" => self.eval_ovus(stream)?,
             "lemon" => self.eval_lemon(block.head_span, stream)?,
             "parametric" => self.eval_parametric(block.head_span, stream)?,
-            "sor" => {
-                let count = self.expect_float(stream, "the number of points")?;
-                if !(0.0..=1e7).contains(&count) {
-                    return Err(self
-                        .error(
-                            block.head_span,
-                            format!("a sor needs 4 to 10000000 points, found {count}"),
-                        )
-                        .into());
-                }
-                let mut points = Vec::with_capacity((count as usize).min(1 << 20));
-                for _ in 0..count as usize {
-                    points.push(self.expect_vector(stream, "a point")?.truncate());
-                }
-                Shape::Sor {
-                    points: Arc::new(points),
-                    open: false,
-                }
-            }
+            "sor" => self.eval_sor(block.head_span, stream)?,
             "superellipsoid" => {
                 let (value, span) = self.expect_value(stream, "<east-west, north-south>")?;
                 let exponents = self.to_vector3(value, span)?;
@@ -391,14 +373,14 @@ impl Evaluator {
             Value::Normal(normal) => {
                 let mut texture = self.object_texture(object);
                 let mut normal = Rc::unwrap_or_clone(normal);
-                normal.transform_with_object(&object.transform().inverse());
+                normal.transform(&object.transform().inverse());
                 change_top_layer(&mut texture, |top| top.normal = Some(Box::new(normal)));
                 object.texture = Some(Arc::new(texture));
             }
             Value::Pigment(pigment) => {
                 let mut texture = self.object_texture(object);
                 let mut pigment = Rc::unwrap_or_clone(pigment);
-                pigment.transform_with_object(&object.transform().inverse());
+                pigment.transform(&object.transform().inverse());
                 change_top_layer(&mut texture, |top| top.pigment = pigment);
                 object.texture = Some(Arc::new(texture));
             }
@@ -477,7 +459,7 @@ impl Evaluator {
     /// the object's local space so later transformations carry it along; layered on top of
     /// a texture the object already has.
     fn attach_texture(&mut self, object: &mut Object, mut texture: Texture) {
-        texture.transform_with_object(&object.transform().inverse());
+        texture.transform(&object.transform().inverse());
         // POV-Ray lays a texture given to an object that has one on top of it.
         let texture = match object.texture.take() {
             Some(below) => layered(vec![Texture::clone(&below), texture]),
@@ -489,7 +471,7 @@ impl Evaluator {
     /// Attaches an `interior_texture` given in the object's outer space like
     /// [`Self::attach_texture`]: a second one is laid on top of the first (measured).
     fn attach_interior_texture(&mut self, object: &mut Object, mut texture: Texture) {
-        texture.transform_with_object(&object.transform().inverse());
+        texture.transform(&object.transform().inverse());
         let texture = match object.interior_texture.take() {
             Some(below) => layered(vec![Texture::clone(&below), texture]),
             None => texture,

@@ -15,6 +15,7 @@ mod julia;
 mod mesh;
 mod parametric;
 mod prism;
+mod sor;
 mod sphere_sweep;
 mod spindle;
 mod text;

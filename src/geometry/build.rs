@@ -216,7 +216,7 @@ pub fn build_scene(objects: &[Object]) -> BuiltScene {
 /// The texture with every pattern transform re-expressed from owner-local to world space.
 fn texture_to_world(texture: &Texture, world_from_owner: &Transform) -> Texture {
     let mut converted = texture.clone();
-    converted.transform_with_object(world_from_owner);
+    converted.transform(world_from_owner);
     converted
 }
 

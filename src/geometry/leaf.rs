@@ -761,7 +761,10 @@ impl Leaf {
                 let normal = self.world_normal(local, part);
                 let mut details = HitDetails::plain(normal, self.material);
                 if uses_uv(self.material) {
-                    details.uv = shape_uv(shape, local, part);
+                    // Shapes POV-Ray gives no uv coordinates show the world point's x and y
+                    // as u and v (measured: `uv_mapping function { z }` is 0 on them).
+                    let world_xy = || DVec2::new(point.x, point.y);
+                    details.uv = Some(shape_uv(shape, local, part).unwrap_or_else(world_xy));
                 }
                 details
             }

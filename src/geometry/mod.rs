@@ -87,8 +87,8 @@ pub struct SurfaceHit {
     pub normal: DVec3,
     /// Index into [`World::materials`].
     pub material: u32,
-    /// The surface's uv coordinates at the point, for materials that use `uv_mapping`;
-    /// `None` otherwise and for shapes without uv coordinates.
+    /// The surface's uv coordinates at the point, for materials that use `uv_mapping` (the
+    /// world point's x and y on shapes without uv coordinates, as POV-Ray); `None` otherwise.
     pub uv: Option<DVec2>,
     /// For a mesh triangle whose corners have different textures: how they blend here.
     pub corner_blend: Option<CornerBlend>,
@@ -110,7 +110,7 @@ pub struct HitDetails {
     pub normal: DVec3,
     /// The material at the point (the first corner's when a triangle's corners differ).
     pub material: u32,
-    /// The uv coordinates (`None` when no material uses them or the shape has none).
+    /// The uv coordinates (`None` when no material uses them).
     pub uv: Option<DVec2>,
     /// The corners' materials and weights, when a triangle's corners differ.
     pub corner_blend: Option<CornerBlend>,

@@ -3,7 +3,7 @@
 //!
 //! In: a [`Parametric`](crate::scene::Parametric) (three compiled functions of u and v, the
 //! uv rectangle, container, max_gradient, accuracy). Out: the nearest crossing of a line,
-//! normals, bounds; the surface is a shell with no inside.
+//! normals, uv coordinates (the parameters), bounds; the surface is a shell with no inside.
 //! Holds: the search splits the uv rectangle in quarters, bounding each piece's points by a
 //! box around the point at its centre grown by `max_gradient` times the piece's half sizes
 //! (the manual's meaning of max_gradient: a bound of all six partial derivatives), keeps the
@@ -408,6 +408,12 @@ impl ParametricSurface {
         uv
     }
 
+    /// POV-Ray's uv at a surface `point` (measured): the surface's own `(u, v)` parameters
+    /// there, not rescaled to the unit square.
+    pub fn uv(&self, point: DVec3) -> DVec2 {
+        self.nearest_uv(point)
+    }
+
     /// The normal at a surface `point`: the cross product of the partial derivatives at the
     /// nearest uv point.
     pub fn normal(&self, point: DVec3) -> DVec3 {
@@ -520,6 +526,17 @@ mod tests {
                 .nearest_within(0.0, f64::INFINITY)
                 .unwrap_or_else(|| panic!("missed the sheet at {target}"));
             assert!((distance - 1.0).abs() < 1e-3, "{distance} for {target}");
+        }
+    }
+
+    #[test]
+    fn uv_is_the_surface_parameters() {
+        // POV-Ray's uv_mapping on a parametric surface sees its (u, v) parameters as they
+        // are (measured: a sheet over u in [0.2, 0.7] shows u = x, not (x - 0.2) / 0.5).
+        let surface = sheet_over(DVec2::new(0.2, 0.1), DVec2::new(0.7, 0.9), 0.001);
+        for parameters in [DVec2::new(0.25, 0.15), DVec2::new(0.6, 0.8)] {
+            let point = DVec3::new(parameters.x, parameters.y, 0.5 * parameters.x);
+            assert!(surface.uv(point).abs_diff_eq(parameters, 1e-6));
         }
     }
 

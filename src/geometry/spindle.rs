@@ -1,7 +1,7 @@
 //! Shapes built on the lemon (the inner solid of a spindle torus): `ovus` and `lemon`.
 //!
 //! In: the radii of an ovus, or the rim points and radii of a lemon. Out: crossings of a line
-//! (tagged with the piece hit), inside test, normals, bounds.
+//! (tagged with the piece hit), inside test, normals, bounds, the ovus's uv coordinates.
 //! Holds: a lemon piece is the solid swept by turning the part of a circle of radius `minor`
 //! centred at (-offset, centre_height) that lies on the positive side of the axis around the Y
 //! axis, cut to a height range; it is convex, so a line meets it in one interval. An ovus is
@@ -12,7 +12,7 @@
 use super::roots::{solve_quadratic, Roots};
 use super::torus::{Torus, TorusShape};
 use crate::accel::Aabb;
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 /// Surface part: the ovus's bottom sphere.
 const BOTTOM_SPHERE: u8 = 0;
@@ -298,6 +298,23 @@ impl Ovus {
         }
     }
 
+    /// POV-Ray's uv at a surface `point` (measured): the sphere's uv around the middle of
+    /// the ovus's height range (u the angle around Y from +x towards +z, v the angle from
+    /// the downward axis over pi). That middle is at half the top radius when both spheres
+    /// show, at the top sphere's centre when it swallows the bottom one and at the origin
+    /// without a top sphere.
+    pub fn uv(&self, point: DVec3) -> DVec2 {
+        let heights = [self.bottom, self.top].into_iter().flatten();
+        let (low, high) = heights.fold((f64::INFINITY, f64::NEG_INFINITY), |(low, high), ball| {
+            (
+                low.min(ball.height - ball.radius),
+                high.max(ball.height + ball.radius),
+            )
+        });
+        let middle = if low <= high { (low + high) * 0.5 } else { 0.0 };
+        super::uv::sphere_uv(point - DVec3::Y * middle)
+    }
+
     /// The union of the pieces' bounds.
     pub fn bounds(&self) -> Aabb {
         let mut bounds = Aabb::EMPTY;
@@ -528,6 +545,24 @@ mod tests {
         let mut roots = Roots::new();
         intersect(origin, direction, &mut roots);
         roots.nearest_within(1e-9, f64::INFINITY)
+    }
+
+    #[test]
+    fn ovus_uv_centres_on_the_middle_of_its_height() {
+        // Measured with POV-Ray: uv-mapped gradients on ovus { 1, 0.6 } (middle at 0.3),
+        // ovus { 0.5, 1.2 } (the top sphere alone, middle at its centre 0.5) and
+        // ovus { 1, 0 } (the bottom sphere alone, middle at 0).
+        let egg = Ovus::new(1.0, 0.6).unwrap();
+        let uv = egg.uv(DVec3::new(0.425, -0.0084, -0.9052));
+        assert!(uv.abs_diff_eq(DVec2::new(0.81987, 0.40479), 2e-4), "{uv}");
+        let uv = egg.uv(DVec3::new(0.0916, 1.4083, -0.4301));
+        assert!(uv.abs_diff_eq(DVec2::new(0.78341, 0.87974), 2e-4), "{uv}");
+        let top_alone = Ovus::new(0.5, 1.2).unwrap();
+        let uv = top_alone.uv(DVec3::new(0.0, 0.5, 1.2));
+        assert!(uv.abs_diff_eq(DVec2::new(0.25, 0.5), 1e-12), "{uv}");
+        let bottom_alone = Ovus::new(1.0, 0.0).unwrap();
+        let uv = bottom_alone.uv(DVec3::new(-1.0, 0.0, 0.0));
+        assert!(uv.abs_diff_eq(DVec2::new(0.5, 0.5), 1e-12), "{uv}");
     }
 
     #[test]

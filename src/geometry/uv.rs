@@ -3,9 +3,9 @@
 //!
 //! In: a shape in its local space and a local point on its surface (with the part tag the
 //! intersection gave). Out: the point's `<u, v>` in POV-Ray 3.7's parametrisation of that
-//! shape (sphere, box, torus, lathe, sor here; meshes and bicubic patches interpolate their
-//! corners' uv), measured by rendering uv-mapped gradients with `povray`. Holds: pure
-//! functions, no allocation; shapes POV-Ray gives no uv coordinates give `None`.
+//! shape (sphere, box, torus, lathe, sor, ovus, parametric here; meshes and bicubic patches
+//! interpolate their corners' uv), measured by rendering uv-mapped gradients with `povray`.
+//! Holds: pure functions, no allocation; shapes POV-Ray gives no uv coordinates give `None`.
 
 use super::leaf::LocalShape;
 use crate::accel::Aabb;
@@ -42,6 +42,8 @@ pub fn shape_uv(shape: &LocalShape, point: DVec3, part: u8) -> Option<DVec2> {
         LocalShape::Torus(torus) => Some(torus_uv(torus.major(), point)),
         LocalShape::Lathe(lathe) => Some(lathe.uv(point, part)),
         LocalShape::Sor(sor) => Some(sor.uv(point, part)),
+        LocalShape::Ovus(ovus) => Some(ovus.uv(point)),
+        LocalShape::Parametric(parametric) => Some(parametric.uv(point)),
         _ => None,
     }
 }

@@ -13,7 +13,7 @@
 //! outside [0, 1] (a `Lo_slope, Hi_slope` range narrower than the slopes met) are not
 //! clamped: the wave wraps them like any pattern value.
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 /// What a surface-dependent pattern knows of the hit being shaded, in world space. Zero
 /// vectors mean "unknown" (a pattern evaluated away from any surface, such as in media).
@@ -25,6 +25,9 @@ pub struct SurfaceContext {
     pub normal: DVec3,
     /// The unit direction of the ray that hit the surface.
     pub ray_direction: DVec3,
+    /// The hit's uv coordinates, when its shape has them and a material there uses them:
+    /// uv-mapped pigments nested in other pigments are looked up there.
+    pub uv: Option<DVec2>,
 }
 
 /// `slope { .. }`'s settings.
@@ -119,6 +122,7 @@ mod tests {
             point: DVec3::ZERO,
             normal,
             ray_direction: DVec3::Z,
+            uv: None,
         }
     }
 

@@ -72,6 +72,7 @@ pub fn perturbed_normal(
         point: world_point,
         normal: facing,
         ray_direction: DVec3::ZERO,
+        uv,
     };
     perturbed_normal_at(normal, world_point, uv, &surface)
 }
@@ -105,8 +106,8 @@ fn tilt(
     if depth >= MAX_NORMAL_NESTING {
         return facing;
     }
-    // A uv-mapped normal sees `<u, v, 0>` (the point on shapes without uv coordinates, as
-    // pigments do), and so do the normals it is made of.
+    // A uv-mapped normal sees `<u, v, 0>` (the world point's x and y on shapes without uv
+    // coordinates, as pigments do), and so do the normals it is made of.
     let outer_point = match (normal.uv_mapped, uv) {
         (true, Some(uv)) => uv.extend(0.0),
         _ => outer_point,
@@ -283,11 +284,15 @@ mod tests {
             (tilted - DVec3::new(-0.13217, 0.0, -0.99123)).length() < 2e-5,
             "{tilted}"
         );
-        // Object transformations leave it be; its own apply.
-        normal.transform_with_object(&Transform::rotation_degrees(DVec3::new(0.0, 0.0, 90.0)));
+        // Transformations applied once it is uv-mapped (an object's) leave it be; its own,
+        // written in its block before it is marked uv-mapped, apply.
+        let quarter_turn = Transform::rotation_degrees(DVec3::new(0.0, 0.0, 90.0));
+        normal.transform(&quarter_turn);
         let turned = perturbed_normal(&normal, DVec3::ZERO, uv, -DVec3::Z);
         assert!((turned - tilted).length() < 1e-12, "{turned}");
-        normal.transform(&Transform::rotation_degrees(DVec3::new(0.0, 0.0, 90.0)));
+        let mut normal = gradient_normal(DVec3::X, 1.0);
+        normal.transform(&quarter_turn);
+        normal.uv_mapped = true;
         let turned = perturbed_normal(&normal, DVec3::ZERO, uv, -DVec3::Z);
         assert!(
             (turned - DVec3::new(0.0, -0.13217, -0.99123)).length() < 2e-5,

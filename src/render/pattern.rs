@@ -54,6 +54,7 @@ pub fn hit_surface(point: DVec3, ray_direction: DVec3, normal: DVec3) -> Surface
             -ray_direction
         },
         ray_direction,
+        uv: None,
     }
 }
 
@@ -131,9 +132,13 @@ fn colour_at_depth(
                 None => image_colour(image, point),
             }
         }
-        // The uv point is chosen where the surface is known (`render::uv`); nested inside
-        // another pigment the wrapper passes the point on.
-        Pigment::UvMapped(inner) => colour_at_depth(inner, world_point, surface, depth + 1),
+        // Nested in another pigment, a uv-mapped pigment is looked up at the hit's uv
+        // coordinates too (measured: `average pigment_map { [1 uv_mapping ..] }` shows the
+        // same uv as a uv-mapped pigment of its own); away from a surface the point passes.
+        Pigment::UvMapped(inner) => {
+            let point = surface.uv.map_or(world_point, |uv| uv.extend(0.0));
+            colour_at_depth(inner, point, surface, depth + 1)
+        }
     }
 }
 

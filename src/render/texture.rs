@@ -91,14 +91,17 @@ pub fn surface_pigment(texture: &Texture, hit: &SurfaceHit, surface: &SurfaceCon
     Colour::from_array(sum)
 }
 
-/// The colour of a texture's own pigment at `hit`: a uv-mapped pigment is evaluated at the
-/// hit's `<u, v, 0>` (at the point on shapes without uv coordinates, as in POV-Ray), any
-/// other at the hit point.
+/// The colour of a texture's own pigment at `hit`: a uv-mapped pigment, and any nested in
+/// the pigment's maps, is evaluated at the hit's `<u, v, 0>` (shapes without uv
+/// coordinates give the world point's x and y, as in POV-Ray), any other at the hit point.
 pub fn pigment_at_hit(pigment: &Pigment, hit: &SurfaceHit, surface: &SurfaceContext) -> Colour {
+    let surface = &SurfaceContext {
+        uv: hit.uv,
+        ..*surface
+    };
     match (pigment.uv_mapped(), hit.uv) {
         (Some(inner), Some(uv)) => pigment_colour_at(inner, uv.extend(0.0), surface),
-        (Some(inner), None) => pigment_colour_at(inner, hit.point, surface),
-        (None, _) => pigment_colour_at(pigment, hit.point, surface),
+        _ => pigment_colour_at(pigment, hit.point, surface),
     }
 }
 

@@ -111,8 +111,8 @@ pub enum Pigment {
         warps: Option<Box<Pattern>>,
     },
     /// `uv_mapping`: the pigment is evaluated at `<u, v, 0>` of the surface instead of the
-    /// point. Transformations of the pigment or its texture apply; those of the object do
-    /// not (see [`Pigment::transform_with_object`]).
+    /// point. Only the transformations written in the block that says `uv_mapping` apply;
+    /// none applied afterwards reach it (see [`Pigment::transform`]).
     UvMapped(Box<Pigment>),
 }
 
@@ -235,26 +235,15 @@ pub struct ImageMap {
 }
 
 impl Texture {
-    /// Composes `t` into every pattern transform of the texture (outer space moves by `t`).
+    /// Composes `t` into every pattern transform of the texture (outer space moves by `t`);
+    /// uv-mapped pigments and normals keep theirs (see [`Pigment::transform`]).
     pub fn transform(&mut self, t: &Transform) {
-        self.transform_in(t, false);
-    }
-
-    /// Composes an object's transformation `t` into the texture: like
-    /// [`Texture::transform`], except that uv-mapped pigments and normals keep their
-    /// transforms (they follow the surface's uv coordinates, not its space).
-    pub fn transform_with_object(&mut self, t: &Transform) {
-        self.transform_in(t, true);
-    }
-
-    /// [`Texture::transform`], or [`Texture::transform_with_object`] when `object_level`.
-    fn transform_in(&mut self, t: &Transform, object_level: bool) {
-        self.pigment.transform_in(t, object_level);
+        self.pigment.transform(t);
         if let Some(normal) = &mut self.normal {
-            normal.transform_in(t, object_level);
+            normal.transform(t);
         }
         if let Some(compound) = &mut self.compound {
-            Arc::make_mut(compound).transform_in(t, object_level);
+            Arc::make_mut(compound).transform(t);
         }
     }
 
@@ -267,31 +256,22 @@ impl Texture {
 impl CompoundTexture {
     /// Composes `t` into every texture and pattern transform held.
     pub fn transform(&mut self, t: &Transform) {
-        self.transform_in(t, false);
-    }
-
-    /// [`CompoundTexture::transform`]; `object_level` spares uv-mapped pigments.
-    fn transform_in(&mut self, t: &Transform, object_level: bool) {
         match self {
-            CompoundTexture::Layered(layers) => layers
-                .iter_mut()
-                .for_each(|l| l.transform_in(t, object_level)),
+            CompoundTexture::Layered(layers) => layers.iter_mut().for_each(|l| l.transform(t)),
             CompoundTexture::Pattern { map, transform, .. } => {
                 *transform = transform.then(t);
-                map.for_each_mut(|texture| texture.transform_in(t, object_level));
+                map.for_each_mut(|texture| texture.transform(t));
             }
             CompoundTexture::Average(entries) => entries
                 .iter_mut()
-                .for_each(|(_, texture)| texture.transform_in(t, object_level)),
+                .for_each(|(_, texture)| texture.transform(t)),
             CompoundTexture::MaterialMap {
                 textures,
                 transform,
                 ..
             } => {
                 *transform = transform.then(t);
-                textures
-                    .iter_mut()
-                    .for_each(|texture| texture.transform_in(t, object_level));
+                textures.iter_mut().for_each(|texture| texture.transform(t));
             }
         }
     }
@@ -309,44 +289,32 @@ impl<T> BlendMap<T> {
 
 impl Pigment {
     /// Composes `t` into the pigment's pattern transform and those of every nested pigment.
+    /// Uv-mapped pigments are left as they are, wherever they sit (measured: once the block
+    /// that says `uv_mapping` is closed, POV-Ray applies no transformation to the pigment:
+    /// not an object's, a texture's, an enclosing pigment's, nor one written after the
+    /// pigment's name in `pigment { Uv_pigment translate .. }`; the transformations inside
+    /// that block apply before the pigment is wrapped).
     pub fn transform(&mut self, t: &Transform) {
-        self.transform_in(t, false);
-    }
-
-    /// Composes an object's transformation `t` into the pigment: like [`Pigment::transform`],
-    /// except that uv-mapped pigments are left as they are (POV-Ray: scaling a uv-mapped
-    /// object does not scale its pattern).
-    pub fn transform_with_object(&mut self, t: &Transform) {
-        self.transform_in(t, true);
-    }
-
-    /// [`Pigment::transform`]; `object_level` spares uv-mapped pigments.
-    fn transform_in(&mut self, t: &Transform, object_level: bool) {
         match self {
             Pigment::Solid(_) => {}
             Pigment::Pattern { map, transform, .. } => {
                 *transform = transform.then(t);
                 match map {
                     PigmentMap::Colours(_) => {}
-                    PigmentMap::Blocks(blocks) => blocks
-                        .iter_mut()
-                        .for_each(|b| b.transform_in(t, object_level)),
-                    PigmentMap::Pigments(entries) => entries
-                        .iter_mut()
-                        .for_each(|(_, p)| p.transform_in(t, object_level)),
+                    PigmentMap::Blocks(blocks) => blocks.iter_mut().for_each(|b| b.transform(t)),
+                    PigmentMap::Pigments(entries) => {
+                        entries.iter_mut().for_each(|(_, p)| p.transform(t))
+                    }
                 }
             }
             Pigment::Average {
                 entries, transform, ..
             } => {
                 *transform = transform.then(t);
-                entries
-                    .iter_mut()
-                    .for_each(|(_, p)| p.transform_in(t, object_level))
+                entries.iter_mut().for_each(|(_, p)| p.transform(t))
             }
             Pigment::Image { transform, .. } => *transform = transform.then(t),
-            Pigment::UvMapped(_) if object_level => {}
-            Pigment::UvMapped(inner) => inner.transform_in(t, false),
+            Pigment::UvMapped(_) => {}
         }
     }
 
@@ -377,32 +345,21 @@ impl Normal {
         }
     }
 
-    /// Composes an object's transformation `t` into the normal: like [`Normal::transform`],
-    /// except that uv-mapped normals are left as they are (they follow the surface's uv
-    /// coordinates; measured: rotating a uv-mapped box does not turn its bumps).
-    pub fn transform_with_object(&mut self, t: &Transform) {
-        self.transform_in(t, true);
-    }
-
-    /// Composes `t` into the normal's transform and those of every nested normal.
+    /// Composes `t` into the normal's transform and those of every nested normal. A
+    /// uv-mapped normal keeps its transform (measured, as for pigments: only the
+    /// transformations in the block that says `uv_mapping` apply; neither an object's, a
+    /// texture's, an enclosing normal's nor one after its name in `normal { N scale .. }`).
     pub fn transform(&mut self, t: &Transform) {
-        self.transform_in(t, false);
-    }
-
-    /// [`Normal::transform`]; `object_level` spares uv-mapped normals.
-    fn transform_in(&mut self, t: &Transform, object_level: bool) {
-        if object_level && self.uv_mapped {
+        if self.uv_mapped {
             return;
         }
         self.transform = self.transform.then(t);
         match &mut self.source {
             NormalSource::Pattern { .. } | NormalSource::BumpMap(_) => {}
-            NormalSource::Map { map, .. } => {
-                map.for_each_mut(|normal| normal.transform_in(t, object_level))
-            }
+            NormalSource::Map { map, .. } => map.for_each_mut(|normal| normal.transform(t)),
             NormalSource::Average(entries) => entries
                 .iter_mut()
-                .for_each(|(_, normal)| normal.transform_in(t, object_level)),
+                .for_each(|(_, normal)| normal.transform(t)),
         }
     }
 }

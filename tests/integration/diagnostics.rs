@@ -985,3 +985,36 @@ fn comparison_outside_parentheses_asks_for_parentheses() {
         ],
     );
 }
+
+#[test]
+fn sor_heights_that_do_not_increase_point_at_the_point() {
+    check(
+        "sor_heights_not_increasing",
+        3,
+        44,
+        &[
+            "a sor's heights must increase: -0.5 follows -0.5",
+            "last but one",
+        ],
+    );
+}
+
+#[test]
+fn sor_negative_radius_points_at_the_point() {
+    check(
+        "sor_negative_radius",
+        2,
+        59,
+        &["a sor's radius must not be negative, found -0.4"],
+    );
+}
+
+#[test]
+fn sor_with_too_few_points_is_an_error() {
+    check(
+        "sor_too_few_points",
+        2,
+        1,
+        &["a sor needs 4 to 10000000 points, found 3"],
+    );
+}

@@ -57,5 +57,5 @@ union { object { B1 } object { B2 } }
 #declare Se2 = superellipsoid { <0, -1> }
 union { object { Se } object { Se2 } }
 #declare So = sor { 4, <1, -1>, <1, 0>, <1, 1>, <1, 2> open sturm }
-#declare So2 = sor { 4, <1, 0>, <1, 0>, <1, 0>, <1, 0> }
+#declare So2 = sor { 4, <0, 0>, <0, 0>, <0, 1>, <0, 1> }
 union { object { So } object { So2 } }

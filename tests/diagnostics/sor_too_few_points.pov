@@ -1,0 +1,2 @@
+// A sor needs at least four points.
+sor { 3, <0.5, -1.5>, <0.6, -1>, <1.0, -0.5> }
