@@ -2,8 +2,9 @@
 //!
 //! In: the item stream after the brace. Out: [`Shape::HeightField`] with its grid of heights.
 //! Holds: heights are what POV-Ray makes of the file (measured with `trace`): a 16-bit value
-//! over 65536, where an 8-bit grey level g counts as 257 g and an 8-bit colour pixel as
-//! 256 red + green; a palette PNG pixel as 256 times its palette index, whatever the colour;
+//! over 65536, where an 8-bit grey level g counts as 257 g, an 8-bit colour pixel as
+//! 256 red + green and a 16-bit colour pixel as 0.297 red + 0.589 green + 0.114 blue
+//! (measured with PPM files); a palette PNG pixel as 256 times its palette index, whatever the colour;
 //! a function is sampled at x = column / (W - 1), y = row / (H - 1) (row 0 at z = 1), and its
 //! 16-bit level wraps around (see [`function_level`]). A missing file is a diagnostic listing
 //! the folders searched.
@@ -201,8 +202,11 @@ fn image_heights(raster: &Raster) -> (usize, usize, Vec<f64>) {
                 .and_then(|indices| indices.get(image_row as usize * columns + column));
             let value = if let Some(&index) = palette_index {
                 f64::from(index) * 256.0
-            } else if raster.grey || raster.sixteen_bit || raster.high_dynamic_range {
+            } else if raster.grey || raster.high_dynamic_range {
                 level(red, FULL_SCALE)
+            } else if raster.sixteen_bit {
+                let [_, _, blue, _] = raster.pixel(column as i64, image_row);
+                level(0.297 * red + 0.589 * green + 0.114 * blue, FULL_SCALE)
             } else {
                 level(red, 255.0) * 256.0 + level(green, 255.0)
             };
