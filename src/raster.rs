@@ -133,37 +133,36 @@ const MAX_SIDE: u32 = 1 << 16;
 pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
     let bytes =
         std::fs::read(path).map_err(|error| format!("cannot read {}: {error}", path.display()))?;
-    if let Some(decode) = own_decoder(format, &bytes) {
-        return decode(&bytes)
-            .map_err(|message| format!("cannot decode {}: {message}", path.display()));
+    decode(&bytes, format).map_err(|message| format!("cannot decode {}: {message}", path.display()))
+}
+
+/// Decodes a file's `bytes` as `format` (`System` guesses from the contents).
+fn decode(bytes: &[u8], format: RasterFormat) -> Result<Raster, String> {
+    if let Some(decode) = own_decoder(format, bytes) {
+        return decode(bytes);
     }
-    let guessed = image::guess_format(&bytes).ok();
+    let guessed = image::guess_format(bytes).ok();
     let chosen = format
         .image_format()
         .or(guessed)
-        .ok_or_else(|| format!("cannot tell the image format of {}", path.display()))?;
+        .ok_or("cannot tell the image format")?;
     // TGA has no signature; trust the keyword. Others: prefer what the contents say.
     let chosen = match (chosen, guessed) {
         (image::ImageFormat::Tga, _) => image::ImageFormat::Tga,
         (_, Some(actual)) => actual,
         (keyword, None) => keyword,
     };
-    let mut reader = image::ImageReader::with_format(std::io::Cursor::new(&bytes), chosen);
+    let mut reader = image::ImageReader::with_format(std::io::Cursor::new(bytes), chosen);
     // Refuse oversized images from their header, before any pixel memory is allocated.
     let mut limits = image::Limits::default();
     limits.max_image_width = Some(MAX_SIDE);
     limits.max_image_height = Some(MAX_SIDE);
     limits.max_alloc = Some(MAX_PIXELS * 16);
     reader.limits(limits);
-    let decoded = reader
-        .decode()
-        .map_err(|error| format!("cannot decode {}: {error}", path.display()))?;
+    let decoded = reader.decode().map_err(|error| error.to_string())?;
     let (width, height) = (decoded.width(), decoded.height());
     if width == 0 || height == 0 || width as u64 * height as u64 > MAX_PIXELS {
-        return Err(format!(
-            "{}: unsupported image size {width}x{height}",
-            path.display()
-        ));
+        return Err(format!("unsupported image size {width}x{height}"));
     }
     use image::ColorType as C;
     let colour_type = decoded.color();
@@ -172,11 +171,11 @@ pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
     let high_dynamic_range = matches!(colour_type, C::Rgb32F | C::Rgba32F);
     let pixels = decoded.to_rgba32f().pixels().map(|p| p.0).collect();
     let palette_indices = match chosen {
-        image::ImageFormat::Png => png_palette_indices(&bytes, width, height),
+        image::ImageFormat::Png => png_palette_indices(bytes, width, height),
         _ => None,
     };
     let encoding = match chosen {
-        image::ImageFormat::Png if !png_states_gamma(&bytes) => StoredEncoding::UnstatedPng,
+        image::ImageFormat::Png if !png_states_gamma(bytes) => StoredEncoding::UnstatedPng,
         image::ImageFormat::Pnm => StoredEncoding::AsStored,
         _ if high_dynamic_range => StoredEncoding::Linear,
         _ => StoredEncoding::Srgb,
@@ -368,6 +367,40 @@ mod tests {
         assert!(load(&folder.join("none.png"), RasterFormat::Png).is_err());
         assert!(raster.palette_indices.is_none());
         std::fs::remove_dir_all(&folder).unwrap();
+    }
+
+    #[test]
+    fn every_test_image_decodes_and_its_truncations_never_panic() {
+        let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/images");
+        let formats = [
+            ("tga", RasterFormat::Tga),
+            ("ppm", RasterFormat::Ppm),
+            ("pgm", RasterFormat::Pgm),
+            ("hdr", RasterFormat::Hdr),
+            ("gif", RasterFormat::Gif),
+            ("jpg", RasterFormat::Jpeg),
+            ("png", RasterFormat::Png),
+        ];
+        let mut decoded = 0;
+        for entry in std::fs::read_dir(&folder).unwrap() {
+            let path = entry.unwrap().path();
+            let extension = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+            let Some(&(_, format)) = formats.iter().find(|(name, _)| *name == extension) else {
+                continue;
+            };
+            let bytes = std::fs::read(&path).unwrap();
+            let raster = decode(&bytes, format).unwrap();
+            let pixels = raster.width as usize * raster.height as usize;
+            assert_eq!(raster.pixels.len(), pixels, "{}", path.display());
+            decoded += 1;
+            for length in (0..bytes.len()).step_by(5) {
+                let _ = decode(&bytes[..length], format);
+                let mut damaged = bytes.clone();
+                damaged[length] ^= 0xa5;
+                let _ = decode(&damaged, format);
+            }
+        }
+        assert!(decoded >= 25, "only {decoded} test images found");
     }
 
     #[test]

@@ -10,24 +10,23 @@ use super::{Raster, StoredEncoding, MAX_PIXELS};
 /// Decodes a Radiance HDR file.
 pub(super) fn decode(bytes: &[u8]) -> Result<Raster, String> {
     let (width, height, top_first, mut position) = header(bytes)?;
-    let count = width as usize * height as usize;
-    let mut pixels = vec![[0.0; 4]; count];
-    let mut scanline = vec![[0u8; 4]; width as usize];
-    for stored_row in 0..height as usize {
-        position = read_scanline(bytes, position, &mut scanline)?;
-        let row = if top_first {
-            stored_row
-        } else {
-            height as usize - 1 - stored_row
-        };
-        let start = row * width as usize;
-        for (pixel, rgbe) in pixels[start..start + width as usize]
-            .iter_mut()
-            .zip(&scanline)
-        {
-            *pixel = linear(*rgbe);
-        }
+    // Grown row by row as scanlines decode, so a header claiming a huge image costs
+    // nothing up front.
+    let mut rows: Vec<Vec<[f32; 4]>> = Vec::new();
+    // A run-length scanline needs at least 8 bytes per 127 pixels: refuse a width the
+    // rest of the file cannot hold before allocating a scanline for it.
+    if width as usize / 16 > bytes.len() - position {
+        return Err(TRUNCATED.to_string());
     }
+    let mut scanline = vec![[0u8; 4]; width as usize];
+    for _ in 0..height {
+        position = read_scanline(bytes, position, &mut scanline)?;
+        rows.push(scanline.iter().map(|&rgbe| linear(rgbe)).collect());
+    }
+    if !top_first {
+        rows.reverse();
+    }
+    let pixels = rows.concat();
     Ok(Raster {
         width,
         height,

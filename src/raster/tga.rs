@@ -174,7 +174,8 @@ fn pixel_bytes(
             .map(<[u8]>::to_vec)
             .ok_or(TRUNCATED.to_string());
     }
-    let mut pixels = Vec::with_capacity(total);
+    // Grown as packets arrive, so a header claiming a huge image costs nothing up front.
+    let mut pixels = Vec::new();
     let mut position = 0;
     while pixels.len() < total {
         let header = *data.get(position).ok_or(TRUNCATED)?;

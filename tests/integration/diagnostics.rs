@@ -830,7 +830,7 @@ fn pot_height_field_that_is_not_a_gif_is_refused_at_the_file_name() {
         "pot_not_a_gif",
         1,
         20,
-        &["cannot read `", "palette8.png`: cannot decode"],
+        &["cannot read height field image \"images/palette8.png\": cannot decode"],
     );
 }
 
@@ -971,4 +971,41 @@ fn unsupported_photon_options_are_warned_at_their_keyword() {
     assert!(warnings[0].2.contains("area light photons"));
     assert_eq!((warnings[1].0, warnings[1].1), (3, 76));
     assert!(warnings[1].2.contains("`split_union off`"));
+}
+
+#[test]
+fn truncated_tga_is_reported_at_the_file_name() {
+    check(
+        "truncated_tga",
+        2,
+        40,
+        &[
+            "cannot read image \"truncated.tga\"",
+            "the file ends before its last pixel",
+            "unreadable image",
+        ],
+    );
+}
+
+#[test]
+fn bad_ppm_header_is_reported_at_the_file_name() {
+    check(
+        "bad_ppm_header",
+        2,
+        42,
+        &["cannot read image \"bad_header.ppm\"", "preamble"],
+    );
+}
+
+#[test]
+fn bad_hdr_resolution_is_reported_at_the_file_name() {
+    check(
+        "bad_hdr",
+        2,
+        20,
+        &[
+            "cannot read height field image \"bad.hdr\"",
+            "the resolution line `-Y four +X 4` is not `-Y height +X width`",
+        ],
+    );
 }

@@ -126,7 +126,11 @@ impl Evaluator {
     ) -> EvalResult<(usize, usize, Vec<f64>)> {
         let path = self.find_file(name, span, "height field image", "no such file")?;
         let raster = crate::raster::load(&path, format).map_err(|message| {
-            self.error(span, format!("cannot read `{}`: {message}", path.display()))
+            self.error(
+                span,
+                format!("cannot read height field image \"{name}\": {message}"),
+            )
+            .with_label("unreadable image")
         })?;
         if raster.width < 2 || raster.height < 2 {
             return Err(self
