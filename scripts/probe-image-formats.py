@@ -6,7 +6,11 @@ scene, `gamma` in the block, `image_pattern`, `use_alpha`), evaluates
 `function { pigment { image_map { .. } } }` at the centres of sample pixels in one run of each
 program (values printed with #debug) and prints the largest difference per file and mode.
 
-usage: scripts/probe-image-formats.py [--durer PATH] [--only SUBSTRING] [--show]
+Modes `height` (trace heights of `height_field`) and `palette` (`filter N`/`transmit N`,
+which POV-Ray refuses for files without a palette: run it with `--only gif_` or
+`--only mapped8`) are included.
+
+usage: scripts/probe-image-formats.py [--durer PATH] [--only SUBSTRING] [--mode MODE] [--show]
 """
 import argparse
 import os
