@@ -4,13 +4,20 @@
 //! In: a file path and POV-Ray's format keyword (`png`, `jpeg`, `tga`, `ppm`, `pgm`, `hdr`,
 //! `gif`, `pot`, `bmp`, `sys`). Out: a [`Raster`] of raw channel values in [0, 1] (HDR values may be
 //! larger), rows from the top of the image. Holds: no gamma is applied here; what a value means
-//! (colour to linearise, height to use as is) is for the caller to decide. Palette PNG files
-//! also give each pixel's palette index (for `material_map`).
+//! (colour to linearise, height to use as is) is for the caller to decide, helped by
+//! [`StoredEncoding`]. Palette files (PNG, GIF, colour-mapped TGA) also give each pixel's
+//! palette index (for `material_map`, `use_index`, `filter`/`transmit` entries, height fields).
+//! TGA ([`tga`]), Radiance HDR ([`hdr`]) and GIF ([`gif_file`]) have readers of their own
+//! (palette indices, POV-Ray's RGBE rounding, interlaced rows); the others use `image`.
 //!
 //! `pot` (Fractint continuous potential) is a GIF twice as wide as the picture: the palette
 //! indices of the left half are the high bytes of 16-bit levels, those of the right half the
 //! low bytes. It is read as a 16-bit grey raster of the left half's size, its rows in the
 //! order the file stores them (an interlaced file is not put back in order, as in POV-Ray).
+
+mod gif_file;
+mod hdr;
+mod tga;
 
 use std::path::Path;
 
@@ -30,10 +37,32 @@ pub struct Raster {
     pub sixteen_bit: bool,
     /// The file is high dynamic range (values are linear light, not encoded).
     pub high_dynamic_range: bool,
-    /// Each pixel's palette index, row by row from the top, for palette PNG files.
+    /// The file stores transparency (an alpha channel or a transparent palette entry).
+    pub alpha: bool,
+    /// POV-Ray's `use_alpha` reads this file's red channel instead of its transparency
+    /// (measured on colour and grey files without alpha: PNG, PPM, PGM, TGA, JPEG; not on
+    /// palette files or HDR files, which give 1 − alpha, so 0).
+    pub use_alpha_reads_red: bool,
+    /// Each pixel's palette index, row by row from the top, for palette files.
     pub palette_indices: Option<Vec<u8>>,
-    /// A PNG file that does not state its encoding (no `gAMA`, `sRGB` or `iCCP` chunk).
-    pub gamma_unstated: bool,
+    /// How the stored values encode light.
+    pub encoding: StoredEncoding,
+}
+
+/// How a file's stored values encode light, as POV-Ray 3.7 reads them when the image block
+/// gives no `gamma` (measured with pigment functions of each format).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StoredEncoding {
+    /// sRGB (JPEG, TGA, GIF, BMP and PNG files that state their gamma).
+    Srgb,
+    /// A PNG file that states no gamma (no `gAMA`, `sRGB` or `iCCP` chunk): sRGB under
+    /// `#version 3.7`, as stored in older scenes.
+    UnstatedPng,
+    /// PPM and PGM: the stored values are used as they are under any `assumed_gamma`
+    /// (measured: a stored 26/255 gives 0.101961 at `assumed_gamma` 1 and 2.2 alike).
+    AsStored,
+    /// Radiance HDR: linear light.
+    Linear,
 }
 
 impl Raster {
@@ -104,37 +133,36 @@ const MAX_SIDE: u32 = 1 << 16;
 pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
     let bytes =
         std::fs::read(path).map_err(|error| format!("cannot read {}: {error}", path.display()))?;
-    if format == RasterFormat::Pot {
-        return potential_levels(&bytes)
-            .map_err(|message| format!("cannot decode {}: {message}", path.display()));
+    decode(&bytes, format).map_err(|message| format!("cannot decode {}: {message}", path.display()))
+}
+
+/// Decodes a file's `bytes` as `format` (`System` guesses from the contents).
+fn decode(bytes: &[u8], format: RasterFormat) -> Result<Raster, String> {
+    if let Some(decode) = own_decoder(format, bytes) {
+        return decode(bytes);
     }
-    let guessed = image::guess_format(&bytes).ok();
+    let guessed = image::guess_format(bytes).ok();
     let chosen = format
         .image_format()
         .or(guessed)
-        .ok_or_else(|| format!("cannot tell the image format of {}", path.display()))?;
+        .ok_or("cannot tell the image format")?;
     // TGA has no signature; trust the keyword. Others: prefer what the contents say.
     let chosen = match (chosen, guessed) {
         (image::ImageFormat::Tga, _) => image::ImageFormat::Tga,
         (_, Some(actual)) => actual,
         (keyword, None) => keyword,
     };
-    let mut reader = image::ImageReader::with_format(std::io::Cursor::new(&bytes), chosen);
+    let mut reader = image::ImageReader::with_format(std::io::Cursor::new(bytes), chosen);
     // Refuse oversized images from their header, before any pixel memory is allocated.
     let mut limits = image::Limits::default();
     limits.max_image_width = Some(MAX_SIDE);
     limits.max_image_height = Some(MAX_SIDE);
     limits.max_alloc = Some(MAX_PIXELS * 16);
     reader.limits(limits);
-    let decoded = reader
-        .decode()
-        .map_err(|error| format!("cannot decode {}: {error}", path.display()))?;
+    let decoded = reader.decode().map_err(|error| error.to_string())?;
     let (width, height) = (decoded.width(), decoded.height());
     if width == 0 || height == 0 || width as u64 * height as u64 > MAX_PIXELS {
-        return Err(format!(
-            "{}: unsupported image size {width}x{height}",
-            path.display()
-        ));
+        return Err(format!("unsupported image size {width}x{height}"));
     }
     use image::ColorType as C;
     let colour_type = decoded.color();
@@ -143,10 +171,15 @@ pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
     let high_dynamic_range = matches!(colour_type, C::Rgb32F | C::Rgba32F);
     let pixels = decoded.to_rgba32f().pixels().map(|p| p.0).collect();
     let palette_indices = match chosen {
-        image::ImageFormat::Png => png_palette_indices(&bytes, width, height),
+        image::ImageFormat::Png => png_palette_indices(bytes, width, height),
         _ => None,
     };
-    let gamma_unstated = chosen == image::ImageFormat::Png && !png_states_gamma(&bytes);
+    let encoding = match chosen {
+        image::ImageFormat::Png if !png_states_gamma(bytes) => StoredEncoding::UnstatedPng,
+        image::ImageFormat::Pnm => StoredEncoding::AsStored,
+        _ if high_dynamic_range => StoredEncoding::Linear,
+        _ => StoredEncoding::Srgb,
+    };
     Ok(Raster {
         width,
         height,
@@ -154,8 +187,29 @@ pub fn load(path: &Path, format: RasterFormat) -> Result<Raster, String> {
         grey,
         sixteen_bit,
         high_dynamic_range,
+        alpha: colour_type.has_alpha(),
+        use_alpha_reads_red: !colour_type.has_alpha()
+            && !high_dynamic_range
+            && palette_indices.is_none(),
         palette_indices,
-        gamma_unstated,
+        encoding,
+    })
+}
+
+/// A decoder of a whole file's bytes.
+type Decoder = fn(&[u8]) -> Result<Raster, String>;
+
+/// durer's own decoder for a file, if it has one: chosen by the contents' signature (HDR
+/// `#?`, GIF `GIF8`), else by the keyword (TGA has no signature; an `hdr` file without one
+/// gets the HDR reader's message).
+fn own_decoder(format: RasterFormat, bytes: &[u8]) -> Option<Decoder> {
+    Some(match format {
+        RasterFormat::Pot => potential_levels,
+        _ if bytes.starts_with(b"#?") => hdr::decode,
+        _ if bytes.starts_with(b"GIF8") => gif_file::decode,
+        RasterFormat::Tga => tga::decode,
+        RasterFormat::Hdr if image::guess_format(bytes).is_err() => hdr::decode,
+        _ => return None,
     })
 }
 
@@ -227,8 +281,10 @@ fn potential_levels(bytes: &[u8]) -> Result<Raster, String> {
         grey: true,
         sixteen_bit: true,
         high_dynamic_range: false,
-        gamma_unstated: false,
+        alpha: false,
+        use_alpha_reads_red: false,
         palette_indices: None,
+        encoding: StoredEncoding::AsStored,
     })
 }
 
@@ -311,6 +367,40 @@ mod tests {
         assert!(load(&folder.join("none.png"), RasterFormat::Png).is_err());
         assert!(raster.palette_indices.is_none());
         std::fs::remove_dir_all(&folder).unwrap();
+    }
+
+    #[test]
+    fn every_test_image_decodes_and_its_truncations_never_panic() {
+        let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/images");
+        let formats = [
+            ("tga", RasterFormat::Tga),
+            ("ppm", RasterFormat::Ppm),
+            ("pgm", RasterFormat::Pgm),
+            ("hdr", RasterFormat::Hdr),
+            ("gif", RasterFormat::Gif),
+            ("jpg", RasterFormat::Jpeg),
+            ("png", RasterFormat::Png),
+        ];
+        let mut decoded = 0;
+        for entry in std::fs::read_dir(&folder).unwrap() {
+            let path = entry.unwrap().path();
+            let extension = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+            let Some(&(_, format)) = formats.iter().find(|(name, _)| *name == extension) else {
+                continue;
+            };
+            let bytes = std::fs::read(&path).unwrap();
+            let raster = decode(&bytes, format).unwrap();
+            let pixels = raster.width as usize * raster.height as usize;
+            assert_eq!(raster.pixels.len(), pixels, "{}", path.display());
+            decoded += 1;
+            for length in (0..bytes.len()).step_by(5) {
+                let _ = decode(&bytes[..length], format);
+                let mut damaged = bytes.clone();
+                damaged[length] ^= 0xa5;
+                let _ = decode(&damaged, format);
+            }
+        }
+        assert!(decoded >= 25, "only {decoded} test images found");
     }
 
     #[test]

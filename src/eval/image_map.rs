@@ -5,8 +5,9 @@
 //! folders searched.
 //!
 //! Gamma (POV-Ray 3.7): an image's stored values are decoded with the `gamma` given in the
-//! block (`gamma srgb` or a number), else with the sRGB transfer function, except for HDR
-//! files, which are linear already, and PNG files that state no gamma (no `gAMA`, `sRGB`
+//! block (`gamma srgb` or a number), else with the sRGB transfer function (JPEG, TGA, GIF),
+//! except for HDR files, which are linear already, PPM and PGM files, whose stored values
+//! are used as they are under any `assumed_gamma` (measured), and PNG files that state no gamma (no `gAMA`, `sRGB`
 //! or `iCCP` chunk) read under `#version` below 3.7, whose stored values are used as they
 //! are (measured: a stored 85 gives 0.333333 at `assumed_gamma` 1 and 2.2 alike); then
 //! raised to 1 / `assumed_gamma` to join the scene's
@@ -21,7 +22,7 @@ use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::raster::{load, RasterFormat};
+use crate::raster::{load, RasterFormat, StoredEncoding};
 use crate::scene::{
     CompoundTexture, ImageGamma, ImageMap, ImageProjection, Pattern, PatternKind, Texture,
     Transform,
@@ -236,16 +237,24 @@ impl Evaluator {
             .with_label("unreadable image")
         })?;
         let working_gamma = self.working_gamma();
+        let as_stored = gamma.is_none() && raster.encoding == StoredEncoding::AsStored;
         let decoding = match gamma {
-            _ if purpose == ImageUse::StoredValues => ImageGamma::Linear,
+            _ if purpose == ImageUse::StoredValues || as_stored => ImageGamma::Linear,
             Some(gamma) => gamma,
-            None if raster.high_dynamic_range || working_gamma.is_none() => ImageGamma::Linear,
-            None if self.version < 3.7 && raster.gamma_unstated => ImageGamma::Linear,
+            None if raster.encoding == StoredEncoding::Linear || working_gamma.is_none() => {
+                ImageGamma::Linear
+            }
+            None if self.version < 3.7 && raster.encoding == StoredEncoding::UnstatedPng => {
+                ImageGamma::Linear
+            }
             None => ImageGamma::Srgb,
         };
-        // Into the scene's working gamma (none for stored values and legacy scenes).
+        // Into the scene's working gamma (none for stored values, PPM files without a
+        // `gamma` and legacy scenes).
         let encoding = match working_gamma {
-            Some(gamma) if purpose == ImageUse::Colours && gamma != 1.0 => 1.0 / gamma as f32,
+            Some(gamma) if purpose == ImageUse::Colours && gamma != 1.0 && !as_stored => {
+                1.0 / gamma as f32
+            }
             _ => 1.0,
         };
         let working = |value: f32| {
@@ -256,10 +265,16 @@ impl Evaluator {
                 value.max(0.0).powf(encoding)
             }
         };
+        // `use_alpha` on a file that stores no transparency reads its red channel
+        // (measured): the alpha channel, which only `use_alpha` reads then, holds 1 − red.
+        let red_as_alpha = use_alpha && raster.use_alpha_reads_red;
         let pixels = raster
             .pixels
             .iter()
-            .map(|&[r, g, b, a]| [working(r), working(g), working(b), a])
+            .map(|&[r, g, b, a]| {
+                let a = if red_as_alpha { 1.0 - r } else { a };
+                [working(r), working(g), working(b), a]
+            })
             .collect();
         let image = ImageMap {
             width: raster.width,

@@ -123,8 +123,8 @@ fn grey([red, green, blue, _]: [f32; 4]) -> f64 {
 }
 
 /// The value of an `image_pattern` at a pattern-space point: the stored grey level
-/// 0.297 R + 0.589 G + 0.114 B (measured), or with `use_alpha` the transparency 1 − alpha
-/// (measured); 0 outside a `once` image.
+/// 0.297 R + 0.589 G + 0.114 B (measured; at most 1, measured with HDR files brighter than
+/// that), or with `use_alpha` the transparency 1 − alpha (measured); 0 outside a `once` image.
 pub fn image_value(image: &ImageMap, point: DVec3) -> f64 {
     let Some((u, v)) = image_coordinates(image, point) else {
         return 0.0;
@@ -133,7 +133,7 @@ pub fn image_value(image: &ImageMap, point: DVec3) -> f64 {
     if image.use_alpha {
         return 1.0 - f64::from(sampled[3]);
     }
-    grey(sampled)
+    grey(sampled).min(1.0)
 }
 
 /// The image coordinates (u right, v up, both in [0, 1)) of a pattern-space point;

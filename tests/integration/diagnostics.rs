@@ -1018,3 +1018,40 @@ fn sor_with_too_few_points_is_an_error() {
         &["a sor needs 4 to 10000000 points, found 3"],
     );
 }
+
+#[test]
+fn truncated_tga_is_reported_at_the_file_name() {
+    check(
+        "truncated_tga",
+        2,
+        40,
+        &[
+            "cannot read image \"truncated.tga\"",
+            "the file ends before its last pixel",
+            "unreadable image",
+        ],
+    );
+}
+
+#[test]
+fn bad_ppm_header_is_reported_at_the_file_name() {
+    check(
+        "bad_ppm_header",
+        2,
+        42,
+        &["cannot read image \"bad_header.ppm\"", "preamble"],
+    );
+}
+
+#[test]
+fn bad_hdr_resolution_is_reported_at_the_file_name() {
+    check(
+        "bad_hdr",
+        2,
+        20,
+        &[
+            "cannot read height field image \"bad.hdr\"",
+            "the resolution line `-Y four +X 4` is not `-Y height +X width`",
+        ],
+    );
+}

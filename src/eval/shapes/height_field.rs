@@ -2,8 +2,9 @@
 //!
 //! In: the item stream after the brace. Out: [`Shape::HeightField`] with its grid of heights.
 //! Holds: heights are what POV-Ray makes of the file (measured with `trace`): a 16-bit value
-//! over 65536, where an 8-bit grey level g counts as 257 g and an 8-bit colour pixel as
-//! 256 red + green; a palette PNG pixel as 256 times its palette index, whatever the colour;
+//! over 65536, where an 8-bit grey level g counts as 257 g, an 8-bit colour pixel as
+//! 256 red + green and a 16-bit colour pixel as 0.297 red + 0.589 green + 0.114 blue of its
+//! 16-bit levels, cut toward zero (measured with PNG and PPM files); a palette PNG pixel as 256 times its palette index, whatever the colour;
 //! a function is sampled at x = column / (W - 1), y = row / (H - 1) (row 0 at z = 1), and its
 //! 16-bit level wraps around (see [`function_level`]). A missing file is a diagnostic listing
 //! the folders searched.
@@ -125,7 +126,11 @@ impl Evaluator {
     ) -> EvalResult<(usize, usize, Vec<f64>)> {
         let path = self.find_file(name, span, "height field image", "no such file")?;
         let raster = crate::raster::load(&path, format).map_err(|message| {
-            self.error(span, format!("cannot read `{}`: {message}", path.display()))
+            self.error(
+                span,
+                format!("cannot read height field image \"{name}\": {message}"),
+            )
+            .with_label("unreadable image")
         })?;
         if raster.width < 2 || raster.height < 2 {
             return Err(self
@@ -201,8 +206,15 @@ fn image_heights(raster: &Raster) -> (usize, usize, Vec<f64>) {
                 .and_then(|indices| indices.get(image_row as usize * columns + column));
             let value = if let Some(&index) = palette_index {
                 f64::from(index) * 256.0
-            } else if raster.grey || raster.sixteen_bit || raster.high_dynamic_range {
+            } else if raster.grey || raster.high_dynamic_range {
                 level(red, FULL_SCALE)
+            } else if raster.sixteen_bit {
+                // The grey level of the 16-bit channels, cut toward zero (measured).
+                let [_, _, blue, _] = raster.pixel(column as i64, image_row);
+                let grey = 0.297 * level(red, FULL_SCALE)
+                    + 0.589 * level(green, FULL_SCALE)
+                    + 0.114 * level(blue, FULL_SCALE);
+                grey.floor()
             } else {
                 level(red, 255.0) * 256.0 + level(green, 255.0)
             };
@@ -210,4 +222,31 @@ fn image_heights(raster: &Raster) -> (usize, usize, Vec<f64>) {
         }
     }
     (columns, rows, heights)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::raster::StoredEncoding;
+
+    #[test]
+    fn sixteen_bit_colour_pixels_give_their_grey_level_cut_toward_zero() {
+        // Measured with a 16-bit RGB PNG: levels 17000, 15300, 4000 give height 14516.
+        let level = |value: u16| f32::from(value) / 65535.0;
+        let pixel = [level(17000), level(15300), level(4000), 1.0];
+        let raster = Raster {
+            width: 2,
+            height: 2,
+            pixels: vec![pixel; 4],
+            grey: false,
+            sixteen_bit: true,
+            high_dynamic_range: false,
+            alpha: false,
+            use_alpha_reads_red: true,
+            palette_indices: None,
+            encoding: StoredEncoding::Srgb,
+        };
+        let (_, _, heights) = image_heights(&raster);
+        assert_eq!(heights[0] * HEIGHT_DIVISOR, 14516.0);
+    }
 }

@@ -1,0 +1,2 @@
+#version 3.7;
+height_field { hdr "bad.hdr" }
