@@ -22,14 +22,19 @@
 //!   target's bounding disc `spacing` apart (measured: a sphere of radius 0.6 at spacing
 //!   0.02 gets 3118 photons, its disc plus one ring); each carries the light's colour times
 //!   spacing², the area it stands for.
-//! - a photon from a point carries the light's colour (faded and spotlit as the light arrives at its first
-//!   hit) times (spacing · multiplier)², the area it stands for where it meets the target.
+//! - a photon from a point carries the light's colour (spotlit as the light arrives at its
+//!   first hit) times (spacing · multiplier)², the area it stands for where it meets the
+//!   target; the light's `fade_distance`/`fade_power` fade it by the length of its whole
+//!   path where it is stored (measured through a glass pane: the caustic fades as the
+//!   floor's direct light does, not as the light at the pane).
 //! - at a surface whose object reflects photons it goes on mirrored, times the finish's
 //!   reflection; where the object refracts photons it goes on bent by Snell's law, times
-//!   `filter · pigment + transmit` (total internal reflection sends it all back). Photons
-//!   cross `pass_through` objects unchanged. After at least one bounce a photon is stored
-//!   where it meets an object that collects photons. Bounces end at `max_trace_level` or
-//!   when the photon's largest component falls below `adc_bailout` of its start.
+//!   `filter · pigment + transmit`, less what the surface reflects when its finish has
+//!   `conserve_energy` (as for camera rays; measured); total internal reflection sends it
+//!   all back. Photons cross `pass_through` objects unchanged. After at least one bounce a
+//!   photon is stored where it meets an object that collects photons. Bounces end at
+//!   `max_trace_level` or when the photon's largest component falls below `adc_bailout` of
+//!   its start.
 //! - shadows: a target that refracts photons blocks the shadow rays of lights that shoot
 //!   refracted photons (its caustic stands for the light through it; measured: no other
 //!   combination changes the shadow). A `no_image` target is neither shot at nor blocks.
@@ -38,10 +43,13 @@
 //!   with fewer than `gather` min the radius is doubled once and the wider estimate kept
 //!   unless it raises the density by more than `expand_thresholds`' fraction with at least
 //!   its minimum found. Each photon lights the point like a light from the direction it came
-//!   from (diffuse, brilliance); their sum is divided by the area of the disc searched.
+//!   from, `cos^brilliance` divided by the `cos` by which photons arriving aslant already
+//!   lie sparser (measured: a caustic through a pane of index 1 lights a floor as the light
+//!   does at any angle and brilliance); their sum is divided by the area of the disc
+//!   searched, times diffuse and pigment.
 
 use super::antialias::unit_hash;
-use super::lights::incoming;
+use super::lights::{fade_factor, incoming};
 use super::pattern::hit_surface;
 use super::reflection::{interior_fade, reflection_colour};
 use super::shading::mirror;
@@ -62,6 +70,9 @@ const TRACE_LIMIT: u64 = 20_000_000;
 
 /// At most this many photons are stored.
 const STORED_LIMIT: usize = 5_000_000;
+
+/// The smallest cosine a gathered photon's weight uses (about 89.94° from the normal).
+const GRAZING_COSINE: f64 = 1e-3;
 
 /// Salt of the jitter random numbers.
 const JITTER_SALT: u64 = 0x51a7_c0de_9e37_79b9;
@@ -204,7 +215,7 @@ impl PhotonMap {
                         let photon = &self.photons[index as usize];
                         let cosine = -photon.direction.dot(normal);
                         if cosine > 0.0 {
-                            photon.power * brilliant(cosine, finish.brilliance)
+                            photon.power * photon_weight(cosine, finish.brilliance)
                         } else {
                             DVec3::ZERO
                         }
@@ -312,12 +323,17 @@ fn sift_down(found: &mut [(u32, f64)], mut index: usize) {
     }
 }
 
-/// `cosine^brilliance`, with the common brilliance 1 exact.
-fn brilliant(cosine: f64, brilliance: f64) -> f64 {
+/// How much a photon arriving at `cosine` to the normal adds: `cosine^(brilliance - 1)`.
+/// Photons arriving aslant already lie sparser by `cosine`, so this makes a caustic light a
+/// surface as the light itself would, `cosine^brilliance` (measured: POV-Ray's photons
+/// through a pane of index 1 light a floor like the light at any angle and brilliance).
+/// Exactly 1 for the common brilliance 1; the cosine is kept above [`GRAZING_COSINE`] so a
+/// grazing photon cannot blow up.
+fn photon_weight(cosine: f64, brilliance: f64) -> f64 {
     if brilliance == 1.0 {
-        cosine
+        1.0
     } else {
-        cosine.powf(brilliance)
+        cosine.max(GRAZING_COSINE).powf(brilliance - 1.0)
     }
 }
 
@@ -582,7 +598,13 @@ impl Shooter<'_> {
         let Some(arriving) = incoming(light, hit.point) else {
             return hit_target;
         };
-        let colour = arriving.colour * energy;
+        // The light's distance fade is applied where the photon lands, by its whole path
+        // (measured), so it is taken out of the light arriving here.
+        let first_fade = fade_factor(light, hit.distance);
+        if first_fade.is_nan() || first_fade <= 0.0 {
+            return hit_target;
+        }
+        let colour = arriving.colour / first_fade * energy;
         let mut first = Bounce {
             ray,
             colour,
@@ -640,12 +662,14 @@ impl Shooter<'_> {
                 Photon {
                     position: hit.point,
                     direction,
-                    power: if photon.spreads {
-                        // Its solid angle times the square of its path: the area it covers.
-                        photon.colour * photon.travelled * photon.travelled
-                    } else {
-                        photon.colour
-                    },
+                    power: fade_factor(light, photon.travelled)
+                        * if photon.spreads {
+                            // Its solid angle times the square of its path: the area it
+                            // covers.
+                            photon.colour * photon.travelled * photon.travelled
+                        } else {
+                            photon.colour
+                        },
                 },
                 photons,
             );
@@ -666,15 +690,17 @@ impl Shooter<'_> {
         let ior = sanitise_ior(material.interior.ior);
         let ratio = if entering { 1.0 / ior } else { ior };
         let cos_incidence = -direction.dot(normal);
-        let mut reflection = if reflects {
-            // A photon never gains light at a bounce.
+        // A photon never gains light at a bounce.
+        let reflectance =
             reflection_colour(&texture.finish, cos_incidence, ratio, pigment.rgb_vec())
-                .clamp(DVec3::ZERO, DVec3::ONE)
-        } else {
-            DVec3::ZERO
-        };
+                .clamp(DVec3::ZERO, DVec3::ONE);
+        let mut reflection = if reflects { reflectance } else { DVec3::ZERO };
         if refracts {
-            let pass = super::lights::transmission(pigment).clamp(DVec3::ZERO, DVec3::ONE);
+            let mut pass = super::lights::transmission(pigment).clamp(DVec3::ZERO, DVec3::ONE);
+            if texture.finish.conserve_energy {
+                // What the surface reflects does not pass (as for camera rays).
+                pass *= DVec3::ONE - reflectance;
+            }
             if pass.max_element() > 0.0 {
                 match refract(direction, normal, ratio) {
                     Some(bent) => self.branch(
