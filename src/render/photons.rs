@@ -27,11 +27,16 @@
 //!   target; the light's `fade_distance`/`fade_power` fade it by the length of its whole
 //!   path where it is stored (measured through a glass pane: the caustic fades as the
 //!   floor's direct light does, not as the light at the pane).
+//! - an object reflects (refracts) a light's photons with its `reflection on`
+//!   (`refraction on`), or without its own item when the light's block says `reflection
+//!   on` (`refraction on`) itself (measured).
 //! - at a surface whose object reflects photons it goes on mirrored, times the finish's
 //!   reflection; where the object refracts photons it goes on bent by Snell's law, times
 //!   `filter · pigment + transmit`, less what the surface reflects when its finish has
 //!   `conserve_energy` (as for camera rays; measured); total internal reflection sends it
-//!   all back. Photons cross `pass_through` objects unchanged. After at least one bounce a
+//!   all back. Photons cross `no_shadow` objects unchanged, and `pass_through` ones on
+//!   their way from the light (after their first bounce they meet those as any object; a
+//!   part's own `pass_through` is dropped in a CSG target). After one bounce a
 //!   photon is stored where it meets an object that collects photons. Bounces end at
 //!   `max_trace_level` or when the photon's largest component falls below `adc_bailout` of
 //!   its start.
@@ -591,7 +596,7 @@ impl Shooter<'_> {
         if !self.budget.take_trace() {
             return false;
         }
-        let Some(hit) = self.next_hit(&ray, SURFACE_EPSILON) else {
+        let Some(hit) = self.next_hit(&ray, 1) else {
             return false;
         };
         let hit_target = hit.material == target_material;
@@ -617,14 +622,18 @@ impl Shooter<'_> {
         hit_target
     }
 
-    /// The nearest surface along `ray` that does not let photons pass through unchanged.
-    fn next_hit(&self, ray: &Ray, min_distance: f64) -> Option<crate::geometry::SurfaceHit> {
+    /// The nearest surface along `ray`, a photon's path at trace `level`, that the photon
+    /// does not cross unchanged: it crosses `no_shadow` objects always, `pass_through`
+    /// ones only on its way from the light (level 1); after its first bounce it meets
+    /// those like any other (POV-Ray's manual: "once a photon hits the target object, it
+    /// will ignore the pass_through flag"; both measured).
+    fn next_hit(&self, ray: &Ray, level: u32) -> Option<crate::geometry::SurfaceHit> {
         let materials = &self.world.materials;
         self.world
-            .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
+            .first_hit_skipping(ray, SURFACE_EPSILON, f64::INFINITY, &|id: u32| {
                 materials
                     .get(id as usize)
-                    .is_some_and(|m| m.photons.pass_through())
+                    .is_some_and(|m| m.no_shadow || (level == 1 && m.photons.pass_through()))
             })
     }
 
@@ -640,7 +649,7 @@ impl Shooter<'_> {
         if !self.budget.take_trace() {
             return;
         }
-        let Some(hit) = self.next_hit(&photon.ray, SURFACE_EPSILON) else {
+        let Some(hit) = self.next_hit(&photon.ray, photon.level) else {
             return;
         };
         let Some(material) = self.world.materials.get(hit.material as usize) else {
@@ -677,8 +686,8 @@ impl Shooter<'_> {
         if photon.level >= self.max_level {
             return;
         }
-        let reflects = flags.reflection() && light.photons.reflection;
-        let refracts = flags.refraction() && light.photons.refraction;
+        let reflects = flags.reflects_for(&light.photons);
+        let refracts = flags.refracts_for(&light.photons);
         if !reflects && !refracts {
             return;
         }
