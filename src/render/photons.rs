@@ -61,7 +61,7 @@ use super::shading::mirror;
 use super::texture::surface_pigment;
 use super::trace::{refract, sanitise_ior, SURFACE_EPSILON};
 use crate::geometry::{Ray, World};
-use crate::scene::{Finish, LightSource, PhotonDensity, PhotonSettings, Scene};
+use crate::scene::{LightSource, PhotonDensity, PhotonSettings, Scene};
 use glam::DVec3;
 use std::cell::{Cell, RefCell};
 use std::f64::consts::{PI, TAU};
@@ -198,16 +198,10 @@ impl PhotonMap {
         self.shot
     }
 
-    /// The caustic light a surface with `finish` and `pigment` sends on from photons
-    /// around `point` (unit `normal` facing the viewer): the diffuse term of every photon
-    /// gathered, over the area searched.
-    pub fn irradiance(
-        &self,
-        point: DVec3,
-        normal: DVec3,
-        finish: &Finish,
-        pigment: DVec3,
-    ) -> DVec3 {
+    /// The caustic light arriving at `point` (unit `normal` facing the viewer) on a finish
+    /// of this `brilliance`, from the photons gathered around it over the area searched;
+    /// the surface sends on its diffuse · pigment times this.
+    pub fn irradiance(&self, point: DVec3, normal: DVec3, brilliance: f64) -> DVec3 {
         if self.photons.is_empty() || !point.is_finite() {
             return DVec3::ZERO;
         }
@@ -220,7 +214,7 @@ impl PhotonMap {
                         let photon = &self.photons[index as usize];
                         let cosine = -photon.direction.dot(normal);
                         if cosine > 0.0 {
-                            photon.power * photon_weight(cosine, finish.brilliance)
+                            photon.power * photon_weight(cosine, brilliance)
                         } else {
                             DVec3::ZERO
                         }
@@ -240,7 +234,7 @@ impl PhotonMap {
                     estimate = wider;
                 }
             }
-            finish.diffuse * pigment * estimate
+            estimate
         })
     }
 
@@ -940,9 +934,12 @@ mod tests {
             expand_min: 40,
             shot: 0,
         };
-        let finish = Finish::default();
-        let light = map.irradiance(DVec3::ZERO, DVec3::Y, &finish, DVec3::ONE);
-        assert!((light.x / finish.diffuse - 1.0).abs() < 0.1, "{light}");
+        let light = map.irradiance(DVec3::ZERO, DVec3::Y, 1.0);
+        assert!((light.x - 1.0).abs() < 0.1, "{light}");
+        // Photons arriving aslant weigh as much under brilliance 1.
+        let aslant = DVec3::new(0.6, 0.8, 0.0);
+        assert_eq!(map.irradiance(DVec3::ZERO, aslant, 1.0), light);
+        assert!(map.irradiance(DVec3::ZERO, aslant, 2.0).x < light.x);
     }
 
     #[test]
