@@ -259,10 +259,7 @@ impl Evaluator {
                     apply_transform(object, &t);
                 }
                 "inverse" => object.inverse = !object.inverse,
-                "no_shadow" => {
-                    object.no_shadow = true;
-                    object.photons.set_pass_through(true);
-                }
+                "no_shadow" => object.no_shadow = true,
                 "hollow" => object.hollow = Some(self.optional_bool(stream)?),
                 "open" => match &mut object.shape {
                     Shape::Cylinder { open, .. } | Shape::Cone { open, .. } => *open = true,

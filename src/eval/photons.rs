@@ -251,8 +251,14 @@ impl Evaluator {
                 return Err(self.unexpected_in(&item, "photons"));
             };
             match &**word {
-                "refraction" => photons.refraction = self.optional_bool(stream)?,
-                "reflection" => photons.reflection = self.optional_bool(stream)?,
+                "refraction" => {
+                    photons.refraction = self.optional_bool(stream)?;
+                    photons.refraction_given = true;
+                }
+                "reflection" => {
+                    photons.reflection = self.optional_bool(stream)?;
+                    photons.reflection_given = true;
+                }
                 "area_light" => {
                     if self.optional_bool(stream)? {
                         self.warn(

@@ -38,7 +38,7 @@ use super::pattern::hit_surface;
 use super::reflection::interior_fade;
 use super::texture::surface_pigment;
 use crate::geometry::{Material, Ray, SurfaceHit, World};
-use crate::scene::{Colour, Fog, LightSource, Media, Scene, Spotlight};
+use crate::scene::{Colour, Fog, LightPhotons, LightSource, Media, Scene, Spotlight};
 use glam::DVec3;
 
 /// A light ready for rendering: the source and what its shadow tests need.
@@ -51,9 +51,9 @@ pub struct SceneLight {
     pub attenuating_media: Vec<Media>,
     /// The fogs that dim this light on its way (`media_attenuation on`).
     pub attenuating_fogs: Vec<Fog>,
-    /// The light shoots refracted photons: photon targets that refract them block its
-    /// shadow rays (their caustics stand for the light through them).
-    pub photon_targets_block: bool,
+    /// The light's photons block when it shoots refracted photons: photon targets that
+    /// refract them block its shadow rays (their caustics stand for the light through them).
+    pub photon_targets_block: Option<LightPhotons>,
 }
 
 /// The scene's lights, ready for rendering.
@@ -77,7 +77,8 @@ pub fn prepare_lights(scene: &Scene) -> Vec<SceneLight> {
             } else {
                 Vec::new()
             },
-            photon_targets_block: scene.settings.photons.is_some() && source.photons.refraction,
+            photon_targets_block: (scene.settings.photons.is_some() && source.photons.refraction)
+                .then_some(source.photons),
         })
         .collect()
 }
@@ -282,14 +283,14 @@ pub fn transmission(pigment: Colour) -> DVec3 {
 ///
 /// Light also fades through objects whose interior has `fade_distance` and a positive
 /// `fade_power`, over the length between entering and leaving them (from the lit point when
-/// it is inside). With `photon_targets_block`, photon targets that refract photons are
-/// opaque.
+/// it is inside). With `photon_targets_block` (the light's photons block), photon targets
+/// that refract the light's photons are opaque.
 pub fn shadow_filter(
     world: &World,
     point: DVec3,
     direction: DVec3,
     distance: f64,
-    photon_targets_block: bool,
+    photon_targets_block: Option<LightPhotons>,
 ) -> DVec3 {
     let ray = Ray {
         origin: point,
@@ -306,9 +307,8 @@ pub fn shadow_filter(
         let Some(material) = world.materials.get(hit.material as usize) else {
             return DVec3::ZERO;
         };
-        if photon_targets_block
+        if photon_targets_block.is_some_and(|light| material.photons.refracts_for(&light))
             && !material.no_image
-            && material.photons.refraction()
             && material.photons.target().is_some()
             && !material.photons.pass_through()
         {

@@ -22,14 +22,24 @@
 //!   target's bounding disc `spacing` apart (measured: a sphere of radius 0.6 at spacing
 //!   0.02 gets 3118 photons, its disc plus one ring); each carries the light's colour times
 //!   spacing², the area it stands for.
-//! - a photon from a point carries the light's colour (faded and spotlit as the light arrives at its first
-//!   hit) times (spacing · multiplier)², the area it stands for where it meets the target.
+//! - a photon from a point carries the light's colour (spotlit as the light arrives at its
+//!   first hit) times (spacing · multiplier)², the area it stands for where it meets the
+//!   target; the light's `fade_distance`/`fade_power` fade it by the length of its whole
+//!   path where it is stored (measured through a glass pane: the caustic fades as the
+//!   floor's direct light does, not as the light at the pane).
+//! - an object reflects (refracts) a light's photons with its `reflection on`
+//!   (`refraction on`), or without its own item when the light's block says `reflection
+//!   on` (`refraction on`) itself (measured).
 //! - at a surface whose object reflects photons it goes on mirrored, times the finish's
 //!   reflection; where the object refracts photons it goes on bent by Snell's law, times
-//!   `filter · pigment + transmit` (total internal reflection sends it all back). Photons
-//!   cross `pass_through` objects unchanged. After at least one bounce a photon is stored
-//!   where it meets an object that collects photons. Bounces end at `max_trace_level` or
-//!   when the photon's largest component falls below `adc_bailout` of its start.
+//!   `filter · pigment + transmit`, less what the surface reflects when its finish has
+//!   `conserve_energy` (as for camera rays; measured); total internal reflection sends it
+//!   all back. Photons cross `no_shadow` objects unchanged, and `pass_through` ones on
+//!   their way from the light (after their first bounce they meet those as any object; a
+//!   part's own `pass_through` is dropped in a CSG target). After one bounce a
+//!   photon is stored where it meets an object that collects photons. Bounces end at
+//!   `max_trace_level` or when the photon's largest component falls below `adc_bailout` of
+//!   its start.
 //! - shadows: a target that refracts photons blocks the shadow rays of lights that shoot
 //!   refracted photons (its caustic stands for the light through it; measured: no other
 //!   combination changes the shadow). A `no_image` target is neither shot at nor blocks.
@@ -38,17 +48,20 @@
 //!   with fewer than `gather` min the radius is doubled once and the wider estimate kept
 //!   unless it raises the density by more than `expand_thresholds`' fraction with at least
 //!   its minimum found. Each photon lights the point like a light from the direction it came
-//!   from (diffuse, brilliance); their sum is divided by the area of the disc searched.
+//!   from, `cos^brilliance` divided by the `cos` by which photons arriving aslant already
+//!   lie sparser (measured: a caustic through a pane of index 1 lights a floor as the light
+//!   does at any angle and brilliance); their sum is divided by the area of the disc
+//!   searched, times diffuse and pigment.
 
 use super::antialias::unit_hash;
-use super::lights::incoming;
+use super::lights::{fade_factor, incoming};
 use super::pattern::hit_surface;
 use super::reflection::{interior_fade, reflection_colour};
 use super::shading::mirror;
 use super::texture::surface_pigment;
 use super::trace::{refract, sanitise_ior, SURFACE_EPSILON};
 use crate::geometry::{Ray, World};
-use crate::scene::{Finish, LightSource, PhotonDensity, PhotonSettings, Scene};
+use crate::scene::{LightSource, PhotonDensity, PhotonSettings, Scene};
 use glam::DVec3;
 use std::cell::{Cell, RefCell};
 use std::f64::consts::{PI, TAU};
@@ -62,6 +75,9 @@ const TRACE_LIMIT: u64 = 20_000_000;
 
 /// At most this many photons are stored.
 const STORED_LIMIT: usize = 5_000_000;
+
+/// The smallest cosine a gathered photon's weight uses (about 89.94° from the normal).
+const GRAZING_COSINE: f64 = 1e-3;
 
 /// Salt of the jitter random numbers.
 const JITTER_SALT: u64 = 0x51a7_c0de_9e37_79b9;
@@ -182,16 +198,10 @@ impl PhotonMap {
         self.shot
     }
 
-    /// The caustic light a surface with `finish` and `pigment` sends on from photons
-    /// around `point` (unit `normal` facing the viewer): the diffuse term of every photon
-    /// gathered, over the area searched.
-    pub fn irradiance(
-        &self,
-        point: DVec3,
-        normal: DVec3,
-        finish: &Finish,
-        pigment: DVec3,
-    ) -> DVec3 {
+    /// The caustic light arriving at `point` (unit `normal` facing the viewer) on a finish
+    /// of this `brilliance`, from the photons gathered around it over the area searched;
+    /// the surface sends on its diffuse · pigment times this.
+    pub fn irradiance(&self, point: DVec3, normal: DVec3, brilliance: f64) -> DVec3 {
         if self.photons.is_empty() || !point.is_finite() {
             return DVec3::ZERO;
         }
@@ -204,7 +214,7 @@ impl PhotonMap {
                         let photon = &self.photons[index as usize];
                         let cosine = -photon.direction.dot(normal);
                         if cosine > 0.0 {
-                            photon.power * brilliant(cosine, finish.brilliance)
+                            photon.power * photon_weight(cosine, brilliance)
                         } else {
                             DVec3::ZERO
                         }
@@ -224,7 +234,7 @@ impl PhotonMap {
                     estimate = wider;
                 }
             }
-            finish.diffuse * pigment * estimate
+            estimate
         })
     }
 
@@ -312,12 +322,17 @@ fn sift_down(found: &mut [(u32, f64)], mut index: usize) {
     }
 }
 
-/// `cosine^brilliance`, with the common brilliance 1 exact.
-fn brilliant(cosine: f64, brilliance: f64) -> f64 {
+/// How much a photon arriving at `cosine` to the normal adds: `cosine^(brilliance - 1)`.
+/// Photons arriving aslant already lie sparser by `cosine`, so this makes a caustic light a
+/// surface as the light itself would, `cosine^brilliance` (measured: POV-Ray's photons
+/// through a pane of index 1 light a floor like the light at any angle and brilliance).
+/// Exactly 1 for the common brilliance 1; the cosine is kept above [`GRAZING_COSINE`] so a
+/// grazing photon cannot blow up.
+fn photon_weight(cosine: f64, brilliance: f64) -> f64 {
     if brilliance == 1.0 {
-        cosine
+        1.0
     } else {
-        cosine.powf(brilliance)
+        cosine.max(GRAZING_COSINE).powf(brilliance - 1.0)
     }
 }
 
@@ -575,14 +590,20 @@ impl Shooter<'_> {
         if !self.budget.take_trace() {
             return false;
         }
-        let Some(hit) = self.next_hit(&ray, SURFACE_EPSILON) else {
+        let Some(hit) = self.next_hit(&ray, 1) else {
             return false;
         };
         let hit_target = hit.material == target_material;
         let Some(arriving) = incoming(light, hit.point) else {
             return hit_target;
         };
-        let colour = arriving.colour * energy;
+        // The light's distance fade is applied where the photon lands, by its whole path
+        // (measured), so it is taken out of the light arriving here.
+        let first_fade = fade_factor(light, hit.distance);
+        if first_fade.is_nan() || first_fade <= 0.0 {
+            return hit_target;
+        }
+        let colour = arriving.colour / first_fade * energy;
         let mut first = Bounce {
             ray,
             colour,
@@ -595,14 +616,18 @@ impl Shooter<'_> {
         hit_target
     }
 
-    /// The nearest surface along `ray` that does not let photons pass through unchanged.
-    fn next_hit(&self, ray: &Ray, min_distance: f64) -> Option<crate::geometry::SurfaceHit> {
+    /// The nearest surface along `ray`, a photon's path at trace `level`, that the photon
+    /// does not cross unchanged: it crosses `no_shadow` objects always, `pass_through`
+    /// ones only on its way from the light (level 1); after its first bounce it meets
+    /// those like any other (POV-Ray's manual: "once a photon hits the target object, it
+    /// will ignore the pass_through flag"; both measured).
+    fn next_hit(&self, ray: &Ray, level: u32) -> Option<crate::geometry::SurfaceHit> {
         let materials = &self.world.materials;
         self.world
-            .first_hit_skipping(ray, min_distance, f64::INFINITY, &|id: u32| {
+            .first_hit_skipping(ray, SURFACE_EPSILON, f64::INFINITY, &|id: u32| {
                 materials
                     .get(id as usize)
-                    .is_some_and(|m| m.photons.pass_through())
+                    .is_some_and(|m| m.no_shadow || (level == 1 && m.photons.pass_through()))
             })
     }
 
@@ -618,7 +643,7 @@ impl Shooter<'_> {
         if !self.budget.take_trace() {
             return;
         }
-        let Some(hit) = self.next_hit(&photon.ray, SURFACE_EPSILON) else {
+        let Some(hit) = self.next_hit(&photon.ray, photon.level) else {
             return;
         };
         let Some(material) = self.world.materials.get(hit.material as usize) else {
@@ -640,12 +665,14 @@ impl Shooter<'_> {
                 Photon {
                     position: hit.point,
                     direction,
-                    power: if photon.spreads {
-                        // Its solid angle times the square of its path: the area it covers.
-                        photon.colour * photon.travelled * photon.travelled
-                    } else {
-                        photon.colour
-                    },
+                    power: fade_factor(light, photon.travelled)
+                        * if photon.spreads {
+                            // Its solid angle times the square of its path: the area it
+                            // covers.
+                            photon.colour * photon.travelled * photon.travelled
+                        } else {
+                            photon.colour
+                        },
                 },
                 photons,
             );
@@ -653,8 +680,8 @@ impl Shooter<'_> {
         if photon.level >= self.max_level {
             return;
         }
-        let reflects = flags.reflection() && light.photons.reflection;
-        let refracts = flags.refraction() && light.photons.refraction;
+        let reflects = flags.reflects_for(&light.photons);
+        let refracts = flags.refracts_for(&light.photons);
         if !reflects && !refracts {
             return;
         }
@@ -666,15 +693,17 @@ impl Shooter<'_> {
         let ior = sanitise_ior(material.interior.ior);
         let ratio = if entering { 1.0 / ior } else { ior };
         let cos_incidence = -direction.dot(normal);
-        let mut reflection = if reflects {
-            // A photon never gains light at a bounce.
+        // A photon never gains light at a bounce.
+        let reflectance =
             reflection_colour(&texture.finish, cos_incidence, ratio, pigment.rgb_vec())
-                .clamp(DVec3::ZERO, DVec3::ONE)
-        } else {
-            DVec3::ZERO
-        };
+                .clamp(DVec3::ZERO, DVec3::ONE);
+        let mut reflection = if reflects { reflectance } else { DVec3::ZERO };
         if refracts {
-            let pass = super::lights::transmission(pigment).clamp(DVec3::ZERO, DVec3::ONE);
+            let mut pass = super::lights::transmission(pigment).clamp(DVec3::ZERO, DVec3::ONE);
+            if texture.finish.conserve_energy {
+                // What the surface reflects does not pass (as for camera rays).
+                pass *= DVec3::ONE - reflectance;
+            }
             if pass.max_element() > 0.0 {
                 match refract(direction, normal, ratio) {
                     Some(bent) => self.branch(
@@ -905,9 +934,12 @@ mod tests {
             expand_min: 40,
             shot: 0,
         };
-        let finish = Finish::default();
-        let light = map.irradiance(DVec3::ZERO, DVec3::Y, &finish, DVec3::ONE);
-        assert!((light.x / finish.diffuse - 1.0).abs() < 0.1, "{light}");
+        let light = map.irradiance(DVec3::ZERO, DVec3::Y, 1.0);
+        assert!((light.x - 1.0).abs() < 0.1, "{light}");
+        // Photons arriving aslant weigh as much under brilliance 1.
+        let aslant = DVec3::new(0.6, 0.8, 0.0);
+        assert_eq!(map.irradiance(DVec3::ZERO, aslant, 1.0), light);
+        assert!(map.irradiance(DVec3::ZERO, aslant, 2.0).x < light.x);
     }
 
     #[test]

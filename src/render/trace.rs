@@ -370,7 +370,10 @@ impl<'a> Tracer<'a> {
             }
             travelled = hit.distance;
             let indirect = Cell::new(None);
-            let surface = self.shade(&ray, &hit, material, level, weight, &media, &indirect);
+            let caustics = Cell::new(None);
+            let surface = self.shade(
+                &ray, &hit, material, level, weight, &media, &indirect, &caustics,
+            );
             colour += carried * surface.colour;
             let Some(continued) = surface.continued else {
                 return (colour, first_distance);
@@ -454,7 +457,8 @@ impl<'a> Tracer<'a> {
     /// The light leaving a surface towards the ray, and how the ray continues through it
     /// when it passes without bending: the blend of the shaded plain textures the material's
     /// texture is made of (see [`for_each_component`]). `indirect` holds the hit's radiosity
-    /// light once a component has gathered it: POV-Ray gathers once per hit, not per layer.
+    /// light once a component has gathered it: POV-Ray gathers once per hit, not per layer;
+    /// `caustics` likewise holds the photon light arriving there.
     #[allow(clippy::too_many_arguments)]
     fn shade(
         &self,
@@ -465,6 +469,7 @@ impl<'a> Tracer<'a> {
         weight: RayWeight,
         media: &Media,
         indirect: &Cell<Option<DVec3>>,
+        caustics: &Cell<Option<DVec3>>,
     ) -> Shaded {
         if let Some(blend) = &hit.corner_blend {
             // A mesh triangle with a texture per corner: each shaded, blended by weight.
@@ -489,6 +494,7 @@ impl<'a> Tracer<'a> {
                     weight,
                     media,
                     indirect,
+                    caustics,
                 );
                 total.add(DVec3::splat(share.max(0.0)), part);
             }
@@ -497,7 +503,7 @@ impl<'a> Tracer<'a> {
         let texture = material.texture_facing(ray.direction, hit.normal);
         if texture.compound.is_none() {
             return self.shade_plain(
-                ray, hit, material, texture, true, level, weight, media, indirect,
+                ray, hit, material, texture, true, level, weight, media, indirect, caustics,
             );
         }
         let mut total = Shaded {
@@ -516,6 +522,7 @@ impl<'a> Tracer<'a> {
                 weight,
                 media,
                 indirect,
+                caustics,
             );
             total.add(share, part);
         });
@@ -524,7 +531,8 @@ impl<'a> Tracer<'a> {
 
     /// [`Self::shade`] for one plain texture; `passes_light` false for an upper layer of a
     /// layered texture (the layers below stand for what is seen through it); `indirect` is
-    /// the hit's radiosity light, gathered by the first component that needs it.
+    /// the hit's radiosity light and `caustics` its photon light, each gathered by the first
+    /// component that needs it (with that component's normal and brilliance).
     #[allow(clippy::too_many_arguments)]
     fn shade_plain(
         &self,
@@ -537,6 +545,7 @@ impl<'a> Tracer<'a> {
         weight: RayWeight,
         media: &Media,
         indirect: &Cell<Option<DVec3>>,
+        caustics: &Cell<Option<DVec3>>,
     ) -> Shaded {
         let surface = hit_surface(hit.point, ray.direction, hit.normal);
         let pigment = pigment_at_hit(&texture.pigment, hit, &surface);
@@ -572,8 +581,12 @@ impl<'a> Tracer<'a> {
         }
         if let Some(photons) = &self.photons {
             if material.photons.collect() && texture.finish.diffuse != 0.0 {
-                let finish = &texture.finish;
-                local.body += photons.irradiance(hit.point, normal, finish, pigment.rgb_vec());
+                let light = caustics.get().unwrap_or_else(|| {
+                    let light = photons.irradiance(hit.point, normal, texture.finish.brilliance);
+                    caustics.set(Some(light));
+                    light
+                });
+                local.body += pigment.rgb_vec() * texture.finish.diffuse * light;
             }
         }
         let opacity = if self.legacy_opacity {

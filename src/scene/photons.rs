@@ -116,10 +116,29 @@ impl ObjectPhotons {
         self.flags & Self::COLLECT_BIT != 0
     }
 
-    /// `pass_through`: photons cross the object unchanged, even when it is a target (set
-    /// by `no_shadow` too; such a target casts an ordinary filtered shadow).
+    /// `pass_through`: photons on their way from the light cross the object unchanged,
+    /// even when it is a target (such a target casts an ordinary filtered shadow);
+    /// `no_shadow`, kept on the material, lets photons cross at any bounce.
     pub fn pass_through(&self) -> bool {
         self.flags & Self::PASS_THROUGH_BIT != 0
+    }
+
+    /// Whether photons of a light with `light`'s block refract at the object: the light
+    /// shoots refracted photons and the object says `refraction on`, or says nothing of
+    /// refraction while the light says `refraction on` itself (measured in POV-Ray 3.7:
+    /// then every object without its own `refraction` item refracts its photons).
+    pub fn refracts_for(&self, light: &LightPhotons) -> bool {
+        light.refraction
+            && (self.refraction()
+                || (light.refraction_given && self.explicit & Self::REFRACTION_BIT == 0))
+    }
+
+    /// Whether photons of a light with `light`'s block reflect off the object: as
+    /// [`Self::refracts_for`], for reflection.
+    pub fn reflects_for(&self, light: &LightPhotons) -> bool {
+        light.reflection
+            && (self.reflection()
+                || (light.reflection_given && self.explicit & Self::REFLECTION_BIT == 0))
     }
 
     /// Sets `refraction`.
@@ -149,6 +168,11 @@ impl ObjectPhotons {
     pub fn inherit(&mut self, parent: &ObjectPhotons) {
         if parent.explicit & Self::TARGET_BIT != 0 {
             self.target_bits = parent.target_bits;
+            // A CSG target is shot at whole: a part's own `pass_through` does not let its
+            // photons pass (measured: POV-Ray refracts them there), unless the CSG sets it.
+            if parent.target_bits != 0 && parent.explicit & Self::PASS_THROUGH_BIT == 0 {
+                self.flags &= !Self::PASS_THROUGH_BIT;
+            }
         }
         let from_parent = parent.explicit & !Self::TARGET_BIT;
         self.flags = (self.flags & !from_parent) | (parent.flags & from_parent);
@@ -182,6 +206,11 @@ pub struct LightPhotons {
     pub refraction: bool,
     /// The light's photons reflect (default on).
     pub reflection: bool,
+    /// The block says `refraction` itself (then objects without their own `refraction`
+    /// item refract the light's photons).
+    pub refraction_given: bool,
+    /// The block says `reflection` itself (as `refraction_given`).
+    pub reflection_given: bool,
 }
 
 impl Default for LightPhotons {
@@ -189,6 +218,8 @@ impl Default for LightPhotons {
         LightPhotons {
             refraction: true,
             reflection: true,
+            refraction_given: false,
+            reflection_given: false,
         }
     }
 }
@@ -231,6 +262,44 @@ mod tests {
         grandchild.inherit(&child);
         assert!(!grandchild.refraction());
         assert_eq!(grandchild.target(), Some(1.0));
+    }
+
+    #[test]
+    fn a_csg_target_drops_a_part_s_own_pass_through() {
+        let mut child = block(|c| c.set_pass_through(true));
+        child.inherit(&block(|p| p.set_target(Some(1.0))));
+        assert!(!child.pass_through());
+        let mut child = block(|c| c.set_pass_through(true));
+        child.inherit(&block(|p| {
+            p.set_target(Some(1.0));
+            p.set_pass_through(true);
+        }));
+        assert!(child.pass_through());
+        let mut child = block(|c| c.set_pass_through(true));
+        child.inherit(&block(|p| p.set_collect(false)));
+        assert!(child.pass_through());
+    }
+
+    #[test]
+    fn a_light_s_own_items_apply_to_objects_without_theirs() {
+        let light = LightPhotons {
+            refraction_given: true,
+            reflection_given: true,
+            ..LightPhotons::default()
+        };
+        let silent = block(|p| p.set_target(Some(1.0)));
+        assert!(silent.refracts_for(&light) && silent.reflects_for(&light));
+        assert!(!silent.refracts_for(&LightPhotons::default()));
+        let refusing = block(|p| {
+            p.set_refraction(false);
+            p.set_reflection(false);
+        });
+        assert!(!refusing.refracts_for(&light) && !refusing.reflects_for(&light));
+        let off = LightPhotons {
+            refraction: false,
+            ..light
+        };
+        assert!(!block(|p| p.set_refraction(true)).refracts_for(&off));
     }
 
     #[test]
