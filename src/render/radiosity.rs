@@ -16,12 +16,16 @@
 //!   spherical Fibonacci set of as many directions (or round robin from the larger
 //!   `direction_pool`), and stores the mean of the light they see, with the harmonic mean
 //!   distance of what they hit;
-//! - its reuse radius is `error_bound` times that distance, clamped between
-//!   `minimum_reuse` and `maximum_reuse` times the distance from the eye;
+//! - its reuse radius is `error_bound` times that distance clamped between `minimum_reuse`
+//!   and `maximum_reuse` times the sample's distance from the eye (the clamp applies to the
+//!   distance, before `error_bound` scales it, as POV-Ray's sample counts show); a deeper
+//!   bounce's sample measures that distance along the path the light takes to the eye (the
+//!   first hit's distance from the eye plus the gathering rays' lengths), which probe scenes
+//!   show POV-Ray doing: its deeper counts do not change with the camera's distance;
 //! - a point reuses the samples whose error `distance / radius + sqrt(1 − N·Nᵢ)` is below 1
 //!   and that do not lie in front of it, weighted by `1 − error`; the pretrace gathers a new
-//!   sample wherever fewer than `nearest_count` are found, with `error_bound` lowered by
-//!   `low_error_factor`;
+//!   sample wherever fewer than `nearest_count` are found, with the first bounce's reuse
+//!   radii lowered by `low_error_factor` (deeper bounces keep theirs);
 //! - each bounce (up to `recursion_limit`) has its own cache, whose samples a spatial index
 //!   ([`SampleIndex`]) finds by position; the usable ones are summed in the order they were
 //!   stored, so results do not depend on the index's layout.
@@ -86,6 +90,10 @@ thread_local! {
     /// Samples this thread gathered during the final render for the row it is tracing, one
     /// cache per bounce; `None` outside [`map_rows_storing`]'s rows.
     static ROW_SAMPLES: RefCell<Option<Vec<Cache>>> = const { RefCell::new(None) };
+
+    /// Where this thread's gathers in progress stand, one entry per bounce (outermost
+    /// first): the gathering point and its distance from the eye along the light's path.
+    static GATHER_PATH: RefCell<Vec<(DVec3, f64)>> = const { RefCell::new(Vec::new()) };
 
     /// The lookup buffers of this thread.
     static LOOKUP_BUFFERS: RefCell<LookupBuffers> = const {
@@ -179,7 +187,9 @@ impl Radiosity {
             return DVec3::ZERO;
         };
         let filling = self.filling.load(Ordering::Relaxed);
-        let bound_scale = if filling {
+        // The pretrace lowers the error bound of the first bounce only: deeper bounces keep
+        // their radii (POV-Ray's deeper counts barely follow `low_error_factor`).
+        let bound_scale = if filling && depth == 0 {
             self.settings.low_error_factor
         } else {
             1.0
@@ -216,13 +226,16 @@ impl Radiosity {
             } else {
                 0
             };
+            let path_distance = self.path_distance(point, depth);
             let (irradiance, harmonic_distance) =
-                gather_over(directions, rays, normal, start, gather);
-            let eye_distance = (point - self.eye).length();
-            let radius = (self.settings.error_bound * harmonic_distance).clamp(
-                self.settings.minimum_reuse * eye_distance,
-                self.settings.maximum_reuse * eye_distance,
-            );
+                with_gather_path(depth, point, path_distance, || {
+                    gather_over(directions, rays, normal, start, gather)
+                });
+            let radius = self.settings.error_bound
+                * harmonic_distance.clamp(
+                    self.settings.minimum_reuse * path_distance,
+                    self.settings.maximum_reuse * path_distance,
+                );
             if radius.is_finite() && radius > 0.0 && irradiance.is_finite() {
                 let sample = Sample {
                     point,
@@ -248,6 +261,19 @@ impl Radiosity {
             irradiance
         };
         self.adjusted(irradiance)
+    }
+
+    /// How far the light gathered at `point` (at bounce `depth`) travels to the eye: the
+    /// straight distance for the first bounce; for a deeper one, the distance of the gather
+    /// that spawned the ray reaching `point` plus that ray's length.
+    fn path_distance(&self, point: DVec3, depth: u32) -> f64 {
+        let parent = depth.checked_sub(1).and_then(|parent| {
+            GATHER_PATH.with(|path| path.borrow().get(parent as usize).copied())
+        });
+        match parent {
+            Some((origin, distance)) => distance + (point - origin).length(),
+            None => (point - self.eye).length(),
+        }
     }
 
     /// `brightness`, `gray_threshold` and `max_sample` applied to gathered light.
@@ -276,6 +302,30 @@ fn rays_at_depth(count: u32, depth: usize) -> u32 {
         .checked_shr(u32::try_from(depth).unwrap_or(u32::MAX))
         .unwrap_or(0)
         .max(1)
+}
+
+/// Runs `gather` with this thread's gather path standing at `point`, `path_distance` from
+/// the eye, for bounce `depth` (so that the deeper gathers it starts measure their paths
+/// from here), and restores the path afterwards.
+fn with_gather_path<T>(
+    depth: u32,
+    point: DVec3,
+    path_distance: f64,
+    gather: impl FnOnce() -> T,
+) -> T {
+    let depth = depth as usize;
+    GATHER_PATH.with(|path| {
+        let mut path = path.borrow_mut();
+        path.truncate(depth);
+        // Without the gathers of the outer bounces (not reached from the tracer), deeper
+        // gathers measure from the eye instead.
+        if path.len() == depth {
+            path.push((point, path_distance));
+        }
+    });
+    let result = gather();
+    GATHER_PATH.with(|path| path.borrow_mut().truncate(depth));
+    result
 }
 
 /// The cosine-weighted unit directions around +z that samples gathering `rays` rays draw
