@@ -642,6 +642,41 @@ mod tests {
     }
 
     #[test]
+    fn deeper_bounces_measure_reuse_along_the_light_path() {
+        let settings = RadiositySettings {
+            recursion_limit: 2,
+            error_bound: 0.5,
+            maximum_reuse: 0.2,
+            nearest_count: 1,
+            ..RadiositySettings::default()
+        };
+        let radiosity = Radiosity::new(&settings, DVec3::ZERO);
+        radiosity.set_filling(true);
+        let first = DVec3::new(0.0, 0.0, 10.0);
+        let deeper = DVec3::new(0.0, 4.0, 7.0);
+        // The first bounce's rays reach `deeper` (5 from `first`), which gathers the sky.
+        let bounce = |_direction: DVec3| {
+            let colour = radiosity.irradiance(deeper, DVec3::Y, 1, &sky);
+            Gathered {
+                colour,
+                distance: 5.0,
+            }
+        };
+        radiosity.irradiance(first, -DVec3::Z, 0, &bounce);
+        let radius_at = |depth: usize| {
+            let cache = radiosity.caches[depth].read().unwrap();
+            assert_eq!(cache.samples.len(), 1, "depth {depth}");
+            cache.samples[0].radius
+        };
+        // First bounce: the harmonic distance (5) clamped to 0.2 × the eye distance (10),
+        // then scaled by error_bound.
+        assert!((radius_at(0) - 0.5 * 2.0).abs() < 1e-12);
+        // Deeper: the sky is infinitely far, so the distance is clamped to 0.2 × the light's
+        // path to the eye (10 + 5), not its straight distance (8.06), then scaled.
+        assert!((radius_at(1) - 0.5 * 0.2 * 15.0).abs() < 1e-12);
+    }
+
+    #[test]
     fn pretrace_steps_halve_from_start_to_end() {
         let radiosity = Radiosity::new(&RadiositySettings::default(), DVec3::ZERO);
         assert_eq!(radiosity.pretrace_steps(160), vec![13, 6]);
