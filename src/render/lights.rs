@@ -298,6 +298,9 @@ pub fn shadow_filter(
     };
     let mut filter = DVec3::ONE;
     let mut start = SHADOW_EPSILON;
+    // Surfaces through the light itself do not shadow it (POV-Ray lights cornell.pov's walls
+    // from lights lying in its ceiling's plane), whatever the rounding of their distance.
+    let distance = distance - SHADOW_EPSILON;
     // The last object entered along the ray and where.
     let mut entered: Option<(u32, f64)> = None;
     for _ in 0..MAX_SHADOW_SURFACES {

@@ -15,14 +15,20 @@
 //!   deeper bounce, as POV-Ray's statistics show), drawn from a fixed cosine-weighted
 //!   spherical Fibonacci set of as many directions (or round robin from the larger
 //!   `direction_pool`), and stores the mean of the light they see, with the distance of the
-//!   nearest surface they hit;
+//!   nearest surface they hit (first bounce) or the harmonic mean distance of their hits
+//!   (deeper bounces);
 //! - its reuse radius is `error_bound` times that distance clamped between `minimum_reuse`
-//!   and `maximum_reuse` times the distance from the eye (the clamp applies to the distance,
-//!   before `error_bound` scales it, as POV-Ray's radiosity files show);
+//!   and `maximum_reuse` times the sample's distance from the eye (the clamp applies to the
+//!   distance, before `error_bound` scales it, as POV-Ray's radiosity files and sample counts
+//!   show); a deeper bounce's sample measures that distance along the path the light takes
+//!   to the eye (the first hit's distance from the eye plus the gathering rays' lengths),
+//!   which probe scenes show POV-Ray doing: its deeper counts do not change with the
+//!   camera's distance;
 //! - a point reuses the samples whose error `distance / radius + sqrt(1 − N·Nᵢ) / bound` is
 //!   below 1 (Ward's test: both terms measured against the error bound) and that do not lie
 //!   in front of it, weighted by `1 − error`; the pretrace gathers a new sample wherever
-//!   fewer than `nearest_count` are found, with the bound lowered by `low_error_factor`;
+//!   fewer than `nearest_count` are found, with the first bounce's reuse radii lowered by
+//!   `low_error_factor` (deeper bounces keep theirs);
 //! - each bounce (up to `recursion_limit`) has its own cache, whose samples a spatial index
 //!   ([`SampleIndex`]) finds by position; the usable ones are summed in the order they were
 //!   stored, so results do not depend on the index's layout.
@@ -87,6 +93,10 @@ thread_local! {
     /// Samples this thread gathered during the final render for the row it is tracing, one
     /// cache per bounce; `None` outside [`map_rows_storing`]'s rows.
     static ROW_SAMPLES: RefCell<Option<Vec<Cache>>> = const { RefCell::new(None) };
+
+    /// Where this thread's gathers in progress stand, one entry per bounce (outermost
+    /// first): the gathering point and its distance from the eye along the light's path.
+    static GATHER_PATH: RefCell<Vec<(DVec3, f64)>> = const { RefCell::new(Vec::new()) };
 
     /// The lookup buffers of this thread.
     static LOOKUP_BUFFERS: RefCell<LookupBuffers> = const {
@@ -180,7 +190,9 @@ impl Radiosity {
             return DVec3::ZERO;
         };
         let filling = self.filling.load(Ordering::Relaxed);
-        let bound_scale = if filling {
+        // The pretrace lowers the error bound of the first bounce only: deeper bounces keep
+        // their radii (POV-Ray's deeper counts barely follow `low_error_factor`).
+        let bound_scale = if filling && depth == 0 {
             self.settings.low_error_factor
         } else {
             1.0
@@ -218,13 +230,20 @@ impl Radiosity {
             } else {
                 0
             };
-            let (irradiance, nearest_distance) =
-                gather_over(directions, rays, normal, start, gather);
-            let eye_distance = (point - self.eye).length();
+            let path_distance = self.path_distance(point, depth);
+            let (irradiance, nearest_distance, harmonic_distance) =
+                with_gather_path(depth, point, path_distance, || {
+                    gather_over(directions, rays, normal, start, gather)
+                });
+            let distance = if depth == 0 {
+                nearest_distance
+            } else {
+                harmonic_distance
+            };
             let radius = self.settings.error_bound
-                * nearest_distance.clamp(
-                    self.settings.minimum_reuse * eye_distance,
-                    self.settings.maximum_reuse * eye_distance,
+                * distance.clamp(
+                    self.settings.minimum_reuse * path_distance,
+                    self.settings.maximum_reuse * path_distance,
                 );
             if radius.is_finite() && radius > 0.0 && irradiance.is_finite() {
                 let sample = Sample {
@@ -253,6 +272,19 @@ impl Radiosity {
         self.adjusted(irradiance)
     }
 
+    /// How far the light gathered at `point` (at bounce `depth`) travels to the eye: the
+    /// straight distance for the first bounce; for a deeper one, the distance of the gather
+    /// that spawned the ray reaching `point` plus that ray's length.
+    fn path_distance(&self, point: DVec3, depth: u32) -> f64 {
+        let parent = depth.checked_sub(1).and_then(|parent| {
+            GATHER_PATH.with(|path| path.borrow().get(parent as usize).copied())
+        });
+        match parent {
+            Some((origin, distance)) => distance + (point - origin).length(),
+            None => (point - self.eye).length(),
+        }
+    }
+
     /// `brightness`, `gray_threshold` and `max_sample` applied to gathered light.
     fn adjusted(&self, irradiance: DVec3) -> DVec3 {
         let mut light = irradiance;
@@ -279,6 +311,30 @@ fn rays_at_depth(count: u32, depth: usize) -> u32 {
         .checked_shr(u32::try_from(depth).unwrap_or(u32::MAX))
         .unwrap_or(0)
         .max(1)
+}
+
+/// Runs `gather` with this thread's gather path standing at `point`, `path_distance` from
+/// the eye, for bounce `depth` (so that the deeper gathers it starts measure their paths
+/// from here), and restores the path afterwards.
+fn with_gather_path<T>(
+    depth: u32,
+    point: DVec3,
+    path_distance: f64,
+    gather: impl FnOnce() -> T,
+) -> T {
+    let depth = depth as usize;
+    GATHER_PATH.with(|path| {
+        let mut path = path.borrow_mut();
+        path.truncate(depth);
+        // Without the gathers of the outer bounces (not reached from the tracer), deeper
+        // gathers measure from the eye instead.
+        if path.len() == depth {
+            path.push((point, path_distance));
+        }
+    });
+    let result = gather();
+    GATHER_PATH.with(|path| path.borrow_mut().truncate(depth));
+    result
 }
 
 /// The cosine-weighted unit directions around +z that samples gathering `rays` rays draw
@@ -314,22 +370,26 @@ fn direction_set(settings: &RadiositySettings, rays: u32) -> Vec<DVec3> {
 }
 
 /// Mean light over `rays` of `directions` (cosine-weighted, around +z) turned to the
-/// hemisphere around `normal`, starting at `start` in the set and wrapping around, and the
-/// distance to the nearest surface hit (infinite when every ray escaped). POV-Ray 3.7 sizes
-/// its reuse radius by that nearest distance, as its manual says ("the distance to the
-/// closest item hit"): sizing it by the harmonic mean let a sample whose rays mostly see the
-/// sky be reused far under an overhang (measured on radiosity2.pov and radiosity3.pov).
+/// hemisphere around `normal`, starting at `start` in the set and wrapping around, the
+/// distance to the nearest surface hit and the harmonic mean distance of the hits (both
+/// infinite when every ray escaped). The first bounce's reuse radius follows the nearest
+/// distance, as POV-Ray's manual says ("the distance to the closest item hit"): sizing it by
+/// the harmonic mean let a sample whose rays mostly see the sky be reused far under an
+/// overhang (measured on radiosity2.pov and radiosity3.pov). Deeper bounces' radii follow
+/// the harmonic mean, which fits POV-Ray's deeper sample counts (cornell.pov: the nearest
+/// distance there gives the same image at 2.7 times the time).
 fn gather_over(
     directions: &[DVec3],
     rays: u32,
     normal: DVec3,
     start: u32,
     gather: &dyn Fn(DVec3) -> Gathered,
-) -> (DVec3, f64) {
+) -> (DVec3, f64, f64) {
     let (tangent, bitangent) = normal.any_orthonormal_pair();
     let pool = directions.len().max(1);
     let mut total = DVec3::ZERO;
     let mut nearest = f64::INFINITY;
+    let mut inverse_distances = 0.0;
     for offset in 0..rays {
         let Some(local) = directions.get((start as usize + offset as usize) % pool) else {
             continue;
@@ -341,9 +401,16 @@ fn gather_over(
         }
         if seen.distance > 0.0 {
             nearest = nearest.min(seen.distance);
+            inverse_distances += 1.0 / seen.distance;
         }
     }
-    (total / f64::from(rays.max(1)), nearest)
+    let rays = f64::from(rays.max(1));
+    let harmonic = if inverse_distances > 0.0 {
+        rays / inverse_distances
+    } else {
+        f64::INFINITY
+    };
+    (total / rays, nearest, harmonic)
 }
 
 /// `colour(column, row)` for every pixel of a `width` × `height` image, storing the samples
@@ -684,6 +751,41 @@ mod tests {
         let radiosity = one_sample_beside_a_wall(0.3);
         assert!(!gathers_at(&radiosity, DVec3::ZERO, tilted(10.0)));
         assert!(gathers_at(&radiosity, DVec3::ZERO, tilted(30.0)));
+    }
+
+    #[test]
+    fn deeper_bounces_measure_reuse_along_the_light_path() {
+        let settings = RadiositySettings {
+            recursion_limit: 2,
+            error_bound: 0.5,
+            maximum_reuse: 0.2,
+            nearest_count: 1,
+            ..RadiositySettings::default()
+        };
+        let radiosity = Radiosity::new(&settings, DVec3::ZERO);
+        radiosity.set_filling(true);
+        let first = DVec3::new(0.0, 0.0, 10.0);
+        let deeper = DVec3::new(0.0, 4.0, 7.0);
+        // The first bounce's rays reach `deeper` (5 from `first`), which gathers the sky.
+        let bounce = |_direction: DVec3| {
+            let colour = radiosity.irradiance(deeper, DVec3::Y, 1, &sky);
+            Gathered {
+                colour,
+                distance: 5.0,
+            }
+        };
+        radiosity.irradiance(first, -DVec3::Z, 0, &bounce);
+        let radius_at = |depth: usize| {
+            let cache = radiosity.caches[depth].read().unwrap();
+            assert_eq!(cache.samples.len(), 1, "depth {depth}");
+            cache.samples[0].radius
+        };
+        // First bounce: the harmonic distance (5) clamped to 0.2 × the eye distance (10),
+        // then scaled by error_bound.
+        assert!((radius_at(0) - 0.5 * 2.0).abs() < 1e-12);
+        // Deeper: the sky is infinitely far, so the distance is clamped to 0.2 × the light's
+        // path to the eye (10 + 5), not its straight distance (8.06), then scaled.
+        assert!((radius_at(1) - 0.5 * 0.2 * 15.0).abs() < 1e-12);
     }
 
     #[test]
