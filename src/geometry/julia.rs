@@ -124,7 +124,11 @@ impl JuliaFractal {
 
     /// True when the orbit of `p` stays in the bailout sphere.
     pub fn inside(&self, p: DVec3) -> bool {
-        let start = self.lift(p);
+        self.orbit_stays_from(self.lift(p))
+    }
+
+    /// True when the orbit of the 4D point `start` stays in the bailout sphere.
+    fn orbit_stays_from(&self, start: DVec4) -> bool {
         // One loop per map, so that the bisections' many tests run without dispatch.
         match (self.algebra, self.function) {
             (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
@@ -161,53 +165,70 @@ impl JuliaFractal {
     /// with the derivative h' carried along the orbit, for `sqr` and `cube`; the smallest
     /// step for the other functions, whose orbits the estimate does not describe.
     fn sample(&self, p: DVec3) -> Sample {
-        let mut h = self.lift(p);
-        // |h'| for quaternions; h' itself (in duplex form) for hypercomplex numbers.
-        let mut slope = 1.0;
-        let mut duplex_slope = (DVec2::X, DVec2::X);
-        let estimates = matches!(self.function, JuliaFunction::Sqr | JuliaFunction::Cube);
+        let start = self.lift(p);
+        // One loop per map, as in `inside`.
+        match (self.algebra, self.function) {
+            // |d(h^n)/dh| = n |h|^(n-1).
+            (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => self.sample_orbit(
+                start,
+                1.0,
+                |h, norm_squared, slope| {
+                    let image = quaternion_mul(quaternion_square(h), h);
+                    (image, slope * (3.0 * norm_squared))
+                },
+                |slope| slope,
+            ),
+            (JuliaAlgebra::Quaternion, JuliaFunction::Sqr) => self.sample_orbit(
+                start,
+                1.0,
+                |h, norm_squared, slope| {
+                    (quaternion_square(h), slope * (2.0 * norm_squared.sqrt()))
+                },
+                |slope| slope,
+            ),
+            // h' itself, in duplex form.
+            (JuliaAlgebra::Hypercomplex, JuliaFunction::Sqr) => self.sample_orbit(
+                start,
+                (DVec2::X, DVec2::X),
+                |h, _, (slope_a, slope_b)| {
+                    let (a, b) = to_duplex(h);
+                    let image = from_duplex(complex_mul(a, a), complex_mul(b, b));
+                    (
+                        image,
+                        (complex_mul(2.0 * a, slope_a), complex_mul(2.0 * b, slope_b)),
+                    )
+                },
+                |(slope_a, slope_b)| from_duplex(slope_a, slope_b).length(),
+            ),
+            _ => Sample {
+                inside: self.orbit_stays_from(start),
+                distance: 0.0,
+            },
+        }
+    }
+
+    /// The orbit of `h` as in [`sample`](Self::sample): `advance` maps h (with |h|²) and the
+    /// carried derivative `slope` to f(h) and the next derivative; `size` gives |h'|.
+    #[inline(always)]
+    fn sample_orbit<Slope: Copy>(
+        &self,
+        mut h: DVec4,
+        mut slope: Slope,
+        advance: impl Fn(DVec4, f64, Slope) -> (DVec4, Slope),
+        size: impl Fn(Slope) -> f64,
+    ) -> Sample {
         for _ in 0..self.max_iteration {
             let norm_squared = h.length_squared();
             if self.escaped(norm_squared) {
-                let distance = if estimates {
-                    let derivative = match self.algebra {
-                        JuliaAlgebra::Quaternion => slope,
-                        JuliaAlgebra::Hypercomplex => {
-                            from_duplex(duplex_slope.0, duplex_slope.1).length()
-                        }
-                    };
-                    let norm = norm_squared.sqrt();
-                    0.5 * norm * norm.ln() / derivative
-                } else {
-                    0.0
-                };
+                let norm = norm_squared.sqrt();
                 return Sample {
                     inside: false,
-                    distance,
+                    distance: 0.5 * norm * norm.ln() / size(slope),
                 };
             }
-            if estimates {
-                match self.algebra {
-                    // |d(h^n)/dh| = n |h|^(n-1).
-                    JuliaAlgebra::Quaternion => {
-                        slope *= if self.function == JuliaFunction::Cube {
-                            3.0 * norm_squared
-                        } else {
-                            2.0 * norm_squared.sqrt()
-                        }
-                    }
-                    JuliaAlgebra::Hypercomplex => {
-                        let (a, b) = to_duplex(h);
-                        let derivative_a = complex_function(self.function, a).1;
-                        let derivative_b = complex_function(self.function, b).1;
-                        duplex_slope = (
-                            complex_mul(derivative_a, duplex_slope.0),
-                            complex_mul(derivative_b, duplex_slope.1),
-                        );
-                    }
-                }
-            }
-            h = self.map(h);
+            let (image, next_slope) = advance(h, norm_squared, slope);
+            h = image + self.parameter;
+            slope = next_slope;
         }
         Sample {
             inside: true,
