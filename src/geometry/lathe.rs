@@ -264,7 +264,8 @@ fn line_may_meet(segment: &Segment, origin: DVec3, direction: DVec3) -> bool {
         c - half_b * half_b / a
     };
     // A relative margin keeps rounding from dropping a grazing segment.
-    !(nearest_squared > largest_radius * largest_radius * (1.0 + 1e-9) + 1e-12)
+    let reach = largest_radius * largest_radius * (1.0 + 1e-9) + 1e-12;
+    nearest_squared.is_nan() || reach.is_nan() || nearest_squared <= reach
 }
 
 #[cfg(test)]
