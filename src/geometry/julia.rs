@@ -15,7 +15,7 @@
 use super::julia_algebra::{
     complex_function, complex_mul, from_duplex, quaternion_mul, quaternion_square, to_duplex,
 };
-use super::roots::Roots;
+use super::roots::{Roots, MAX_ROOTS};
 use crate::accel::Aabb;
 use crate::scene::{JuliaAlgebra, JuliaFractal as JuliaSpec, JuliaFunction};
 use glam::{DVec2, DVec3, DVec4};
@@ -124,12 +124,39 @@ impl JuliaFractal {
 
     /// True when the orbit of `p` stays in the bailout sphere.
     pub fn inside(&self, p: DVec3) -> bool {
-        let mut h = self.lift(p);
+        self.orbit_stays_from(self.lift(p))
+    }
+
+    /// True when the orbit of the 4D point `start` stays in the bailout sphere.
+    fn orbit_stays_from(&self, start: DVec4) -> bool {
+        // One loop per map, so that the bisections' many tests run without dispatch.
+        match (self.algebra, self.function) {
+            (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => {
+                self.orbit_stays(start, |h| quaternion_mul(quaternion_square(h), h))
+            }
+            (JuliaAlgebra::Quaternion, _) => self.orbit_stays(start, quaternion_square),
+            (JuliaAlgebra::Hypercomplex, JuliaFunction::Sqr) => self.orbit_stays(start, |h| {
+                let (a, b) = to_duplex(h);
+                from_duplex(complex_mul(a, a), complex_mul(b, b))
+            }),
+            (JuliaAlgebra::Hypercomplex, function) => self.orbit_stays(start, |h| {
+                let (a, b) = to_duplex(h);
+                from_duplex(
+                    complex_function(function, a).0,
+                    complex_function(function, b).0,
+                )
+            }),
+        }
+    }
+
+    /// True when the orbit h → `function`(h) + p from `h` stays in the bailout sphere.
+    #[inline(always)]
+    fn orbit_stays(&self, mut h: DVec4, function: impl Fn(DVec4) -> DVec4) -> bool {
         for _ in 0..self.max_iteration {
             if self.escaped(h.length_squared()) {
                 return false;
             }
-            h = self.map(h);
+            h = function(h) + self.parameter;
         }
         true
     }
@@ -138,53 +165,70 @@ impl JuliaFractal {
     /// with the derivative h' carried along the orbit, for `sqr` and `cube`; the smallest
     /// step for the other functions, whose orbits the estimate does not describe.
     fn sample(&self, p: DVec3) -> Sample {
-        let mut h = self.lift(p);
-        // |h'| for quaternions; h' itself (in duplex form) for hypercomplex numbers.
-        let mut slope = 1.0;
-        let mut duplex_slope = (DVec2::X, DVec2::X);
-        let estimates = matches!(self.function, JuliaFunction::Sqr | JuliaFunction::Cube);
+        let start = self.lift(p);
+        // One loop per map, as in `inside`.
+        match (self.algebra, self.function) {
+            // |d(h^n)/dh| = n |h|^(n-1).
+            (JuliaAlgebra::Quaternion, JuliaFunction::Cube) => self.sample_orbit(
+                start,
+                1.0,
+                |h, norm_squared, slope| {
+                    let image = quaternion_mul(quaternion_square(h), h);
+                    (image, slope * (3.0 * norm_squared))
+                },
+                |slope| slope,
+            ),
+            (JuliaAlgebra::Quaternion, JuliaFunction::Sqr) => self.sample_orbit(
+                start,
+                1.0,
+                |h, norm_squared, slope| {
+                    (quaternion_square(h), slope * (2.0 * norm_squared.sqrt()))
+                },
+                |slope| slope,
+            ),
+            // h' itself, in duplex form.
+            (JuliaAlgebra::Hypercomplex, JuliaFunction::Sqr) => self.sample_orbit(
+                start,
+                (DVec2::X, DVec2::X),
+                |h, _, (slope_a, slope_b)| {
+                    let (a, b) = to_duplex(h);
+                    let image = from_duplex(complex_mul(a, a), complex_mul(b, b));
+                    (
+                        image,
+                        (complex_mul(2.0 * a, slope_a), complex_mul(2.0 * b, slope_b)),
+                    )
+                },
+                |(slope_a, slope_b)| from_duplex(slope_a, slope_b).length(),
+            ),
+            _ => Sample {
+                inside: self.orbit_stays_from(start),
+                distance: 0.0,
+            },
+        }
+    }
+
+    /// The orbit of `h` as in [`sample`](Self::sample): `advance` maps h (with |h|²) and the
+    /// carried derivative `slope` to f(h) and the next derivative; `size` gives |h'|.
+    #[inline(always)]
+    fn sample_orbit<Slope: Copy>(
+        &self,
+        mut h: DVec4,
+        mut slope: Slope,
+        advance: impl Fn(DVec4, f64, Slope) -> (DVec4, Slope),
+        size: impl Fn(Slope) -> f64,
+    ) -> Sample {
         for _ in 0..self.max_iteration {
             let norm_squared = h.length_squared();
             if self.escaped(norm_squared) {
-                let distance = if estimates {
-                    let derivative = match self.algebra {
-                        JuliaAlgebra::Quaternion => slope,
-                        JuliaAlgebra::Hypercomplex => {
-                            from_duplex(duplex_slope.0, duplex_slope.1).length()
-                        }
-                    };
-                    let norm = norm_squared.sqrt();
-                    0.5 * norm * norm.ln() / derivative
-                } else {
-                    0.0
-                };
+                let norm = norm_squared.sqrt();
                 return Sample {
                     inside: false,
-                    distance,
+                    distance: 0.5 * norm * norm.ln() / size(slope),
                 };
             }
-            if estimates {
-                match self.algebra {
-                    // |d(h^n)/dh| = n |h|^(n-1).
-                    JuliaAlgebra::Quaternion => {
-                        slope *= if self.function == JuliaFunction::Cube {
-                            3.0 * norm_squared
-                        } else {
-                            2.0 * norm_squared.sqrt()
-                        }
-                    }
-                    JuliaAlgebra::Hypercomplex => {
-                        let (a, b) = to_duplex(h);
-                        let derivative_a = complex_function(self.function, a).1;
-                        let derivative_b = complex_function(self.function, b).1;
-                        duplex_slope = (
-                            complex_mul(derivative_a, duplex_slope.0),
-                            complex_mul(derivative_b, duplex_slope.1),
-                        );
-                    }
-                }
-            }
-            h = self.map(h);
+            let (image, next_slope) = advance(h, norm_squared, slope);
+            h = image + self.parameter;
+            slope = next_slope;
         }
         Sample {
             inside: true,
@@ -194,6 +238,38 @@ impl JuliaFractal {
 
     /// Pushes the crossings of the line `origin + t direction`, nearest first.
     pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
+        self.search(origin, direction, |t| {
+            roots.push(t, 0);
+            // Later crossings could not be kept anyway.
+            !roots.is_full()
+        });
+    }
+
+    /// The nearest crossing of the line strictly between the limits, among the first
+    /// [`MAX_ROOTS`] crossings (those [`intersect`](Self::intersect) keeps); the search stops
+    /// there instead of walking the rest of the line.
+    pub fn nearest(
+        &self,
+        origin: DVec3,
+        direction: DVec3,
+        min_distance: f64,
+        max_distance: f64,
+    ) -> Option<f64> {
+        let mut nearest = None;
+        let mut count = 0;
+        self.search(origin, direction, |t| {
+            count += 1;
+            if t > min_distance && t < max_distance {
+                nearest = Some(t);
+            }
+            nearest.is_none() && t < max_distance && count < MAX_ROOTS
+        });
+        nearest
+    }
+
+    /// Walks the line `origin + t direction` and hands each crossing's ray parameter to
+    /// `crossing`, nearest first, while it answers true.
+    fn search(&self, origin: DVec3, direction: DVec3, mut crossing: impl FnMut(f64) -> bool) {
         let length = direction.length();
         if !(length > 0.0 && length.is_finite()) {
             return;
@@ -253,9 +329,7 @@ impl JuliaFractal {
                 }
             }
             let hit = if current.inside { near } else { near + step };
-            roots.push(hit / length, 0);
-            if roots.is_full() {
-                // Later crossings could not be kept anyway.
+            if !crossing(hit / length) {
                 return;
             }
             depth += stride;
@@ -486,5 +560,41 @@ mod tests {
             ..JuliaSpec::default()
         };
         assert!(JuliaFractal::new(&empty).is_none());
+    }
+
+    #[test]
+    fn nearest_is_the_first_crossing_intersect_keeps() {
+        let shapes = [
+            fractal(DVec4::new(-0.2, 0.4, 0.1, 0.0), |s| s.max_iteration = 6),
+            fractal(DVec4::new(0.2, 0.1, 0.59, -0.2), |s| {
+                s.algebra = JuliaAlgebra::Hypercomplex;
+                s.max_iteration = 7;
+            }),
+        ];
+        let mut state = 3u64;
+        let mut random = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let mut hits = 0;
+        for shape in &shapes {
+            for _ in 0..300 {
+                let origin = DVec3::new(random(), random(), random()) * 2.5;
+                let target = DVec3::new(random(), random(), random()) * 0.5;
+                let direction = (target - origin) * (1.0 + random().abs());
+                let (min_distance, max_distance) = (random().abs(), 1.0 + 3.0 * random().abs());
+                let mut roots = Roots::new();
+                shape.intersect(origin, direction, &mut roots);
+                let expected = roots
+                    .nearest_within(min_distance, max_distance)
+                    .map(|r| r.0);
+                let found = shape.nearest(origin, direction, min_distance, max_distance);
+                assert_eq!(found, expected, "{origin} {direction}");
+                hits += usize::from(found.is_some());
+            }
+        }
+        assert!(hits > 200, "{hits}");
     }
 }

@@ -101,6 +101,9 @@ impl Lathe {
         let mut crossings = [(0.0, 0u8); CROSSING_BUFFER];
         let mut count = 0;
         for (index, segment) in self.segments.iter().enumerate() {
+            if !line_may_meet(segment, origin, direction) {
+                continue;
+            }
             let part = if index < UNKNOWN_SEGMENT as usize {
                 index as u8
             } else {
@@ -222,6 +225,47 @@ impl Lathe {
             DVec3::new(self.radius, self.high, self.radius),
         ])
     }
+}
+
+/// False when the line `origin + s direction` surely misses the surface the segment sweeps:
+/// it stays farther from the Y axis than any radius of the segment while inside the segment's
+/// height range (both bounded by the sums of the coefficient sizes, t in [0, 1]).
+fn line_may_meet(segment: &Segment, origin: DVec3, direction: DVec3) -> bool {
+    let spread = segment.c.abs() + segment.b.abs() + segment.a.abs();
+    let largest_radius = segment.start.x.abs() + spread.x;
+    let (low, high) = (segment.start.y - spread.y, segment.start.y + spread.y);
+    // Squared distance from the axis: a s² + 2 half_b s + c, least at s = −half_b / a.
+    let a = direction.x * direction.x + direction.z * direction.z;
+    let half_b = origin.x * direction.x + origin.z * direction.z;
+    let c = origin.x * origin.x + origin.z * origin.z;
+    let (first, last) = if direction.y != 0.0 {
+        let ends = (
+            (low - origin.y) / direction.y,
+            (high - origin.y) / direction.y,
+        );
+        (ends.0.min(ends.1), ends.0.max(ends.1))
+    } else if origin.y >= low && origin.y <= high {
+        (f64::NEG_INFINITY, f64::INFINITY)
+    } else {
+        return false;
+    };
+    let closest = if a > 0.0 {
+        (-half_b / a).clamp(first, last)
+    } else {
+        first
+    };
+    let nearest_squared = if closest.is_finite() {
+        let (x, z) = (
+            origin.x + closest * direction.x,
+            origin.z + closest * direction.z,
+        );
+        x * x + z * z
+    } else {
+        c - half_b * half_b / a
+    };
+    // A relative margin keeps rounding from dropping a grazing segment.
+    let reach = largest_radius * largest_radius * (1.0 + 1e-9) + 1e-12;
+    nearest_squared.is_nan() || reach.is_nan() || nearest_squared <= reach
 }
 
 #[cfg(test)]

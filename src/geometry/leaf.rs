@@ -687,6 +687,19 @@ impl Leaf {
     /// The nearest crossing strictly between the limits, with its surface part.
     #[inline]
     pub fn nearest(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<(f64, u8)> {
+        if let LocalShape::JuliaFractal(shape) = &self.shape {
+            // Its walk along the ray stops at the first crossing in range.
+            let (origin, direction) = match &self.local_from_world {
+                None => (ray.origin, ray.direction),
+                Some(map) => (
+                    map.transform_point3(ray.origin),
+                    map.transform_vector3(ray.direction),
+                ),
+            };
+            return shape
+                .nearest(origin, direction, min_distance, max_distance)
+                .map(|distance| (distance, 0));
+        }
         let mut roots = Roots::new();
         self.intersect(ray, &mut roots);
         roots.nearest_within(min_distance, max_distance)
