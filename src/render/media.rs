@@ -21,9 +21,15 @@
 //!   `exp(−od)` of the pieces before it only; its extinction times L/N adds to od. The
 //!   stretch lets `exp(−od)` through. Exact for constant emission and absorption at
 //!   samples 1 to 32, and for step-shaped densities at samples 1, 4 and 10.
-//! - methods 1 and 2: `intervals · samples` samples at the middles of equal pieces (method 1
-//!   jitters them), each dimmed by the extinction up to itself (half its own piece).
-//!   Exact for constant media; method 1's randomness is not matched.
+//! - methods 1 and 2 (from the manual): `intervals` equal intervals, each sampled `samples`
+//!   min times at the middles of equal pieces (method 2 moved by `jitter`, method 1 at a
+//!   random place in each piece), then at random places until the confidence test passes
+//!   (see [`ConfidenceTest`]) or max samples are taken; the samples, in order along the
+//!   ray, share the interval equally, each dimmed by the extinction up to itself (half its
+//!   own share). Exact for constant media (measured with samples 2); method 1's random
+//!   numbers are POV-Ray's own, so only averages match. `ratio` has no effect.
+//! - the first media listed (the first of the container entered first, then the
+//!   atmosphere's) sets the method and sampling of all media along a stretch (measured).
 //! - a ray that hits nothing crosses atmospheric media over 2·10¹⁰ units.
 //! - scattering: for each light with `media_interaction` on, its light at the sample (after
 //!   fading, spotlight cone and shadows; with `media_attenuation` also dimmed by the
