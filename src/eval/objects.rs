@@ -6,7 +6,7 @@ use super::texture_maps::{change_top_layer, layered, top_layer_finish};
 use super::value::{MaterialValue, Value};
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{CsgOperation, LightGroup, Object, Shape, Texture, Transform};
+use crate::scene::{CsgOperation, Interior, LightGroup, Object, Shape, Texture, Transform};
 use crate::syntax::ast::{Block, Item};
 use glam::{DAffine3, DMat3, DVec3};
 use std::rc::Rc;
@@ -307,7 +307,7 @@ impl Evaluator {
                             self.attach_interior_texture(object, texture);
                         }
                         if let Some(interior) = material.interior {
-                            object.interior = Some(Box::new(interior));
+                            attach_interior(object, interior);
                         }
                         return Ok(());
                     }
@@ -387,9 +387,7 @@ impl Evaluator {
                 change_top_layer(&mut texture, |top| top.finish = finish.clone());
                 object.texture = Some(Arc::new(texture));
             }
-            Value::Interior(interior) => {
-                object.interior = Some(Box::new(Rc::unwrap_or_clone(interior)))
-            }
+            Value::Interior(interior) => attach_interior(object, Rc::unwrap_or_clone(interior)),
             Value::Transform(t) => apply_transform(object, &t),
             Value::Nothing => {} // a left-out block such as `media { .. }`
             other => {
@@ -608,6 +606,18 @@ impl Evaluator {
         }
         Ok(material)
     }
+}
+
+/// Gives `object` the interior `interior`, whose media densities are written in the
+/// object's outer space: they are re-expressed in its local space, so transformations
+/// written before the interior do not move them and later ones do (measured: POV-Ray
+/// leaves a density in place when `translate` comes before `interior`).
+fn attach_interior(object: &mut Object, mut interior: Interior) {
+    let local_from_outer = object.transform().inverse();
+    for media in &mut interior.media {
+        media.transform(&local_from_outer);
+    }
+    object.interior = Some(Box::new(interior));
 }
 
 /// Applies a transformation to an object (its textures ride along in local space).

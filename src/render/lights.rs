@@ -146,7 +146,13 @@ fn filter_along(
         DVec3::ONE
     };
     if !light.attenuating_media.is_empty() && filter != DVec3::ZERO {
-        filter *= transmittance(&light.attenuating_media, point, direction, 0.0, limit);
+        filter *= transmittance(
+            &light.attenuating_media,
+            point,
+            direction,
+            (0.0, limit),
+            false,
+        );
     }
     for fog in &light.attenuating_fogs {
         filter *= fog_transmittance(fog, point, direction, limit);
@@ -324,10 +330,10 @@ pub fn shadow_filter(
         if direction.dot(hit.normal) < 0.0 {
             entered = Some((hit.material, hit.distance));
         } else {
-            let since = match entered {
-                Some((id, at)) if id == hit.material => at,
-                Some(_) => hit.distance,
-                None => 0.0,
+            let (since, from_outside) = match entered {
+                Some((id, at)) if id == hit.material => (at, true),
+                Some(_) => (hit.distance, true),
+                None => (0.0, false),
             };
             // Shadow rays fade only with a positive `fade_power`; camera rays also fade with
             // 0 (measured).
@@ -342,8 +348,8 @@ pub fn shadow_filter(
                     &material.interior.media,
                     point,
                     direction,
-                    since,
-                    hit.distance,
+                    (since, hit.distance),
+                    from_outside,
                 );
             }
             entered = None;

@@ -21,9 +21,15 @@
 //!   `exp(−od)` of the pieces before it only; its extinction times L/N adds to od. The
 //!   stretch lets `exp(−od)` through. Exact for constant emission and absorption at
 //!   samples 1 to 32, and for step-shaped densities at samples 1, 4 and 10.
-//! - methods 1 and 2: `intervals · samples` samples at the middles of equal pieces (method 1
-//!   jitters them), each dimmed by the extinction up to itself (half its own piece).
-//!   Exact for constant media; method 1's randomness is not matched.
+//! - methods 1 and 2 (from the manual): `intervals` equal intervals, each sampled `samples`
+//!   min times at the middles of equal pieces (method 2 moved by `jitter`, method 1 at a
+//!   random place in each piece), then at random places until the confidence test passes
+//!   (see [`ConfidenceTest`]) or max samples are taken; the samples, in order along the
+//!   ray, share the interval equally, each dimmed by the extinction up to itself (half its
+//!   own share). Exact for constant media (measured with samples 2); method 1's random
+//!   numbers are POV-Ray's own, so only averages match. `ratio` has no effect.
+//! - the first media listed (the first of the container entered first, then the
+//!   atmosphere's) sets the method and sampling of all media along a stretch (measured).
 //! - a ray that hits nothing crosses atmospheric media over 2·10¹⁰ units.
 //! - scattering: for each light with `media_interaction` on, its light at the sample (after
 //!   fading, spotlight cone and shadows; with `media_attenuation` also dimmed by the
@@ -42,14 +48,14 @@ use glam::DVec3;
 /// How far a ray that hits nothing runs through atmospheric media (measured).
 pub const UNBOUNDED_MEDIA_LENGTH: f64 = 2e10;
 
+/// Stand-in settings for an empty list of media.
+static DEFAULT_MEDIA: std::sync::LazyLock<Media> = std::sync::LazyLock::new(Media::default);
+
 /// At most this many media blocks act together along one stretch of a ray.
 pub const MAX_ACTIVE_MEDIA: usize = 16;
 
 /// Distinct (phase function, light group) pairs lit separately at one media sample.
 const SCATTERING_CLASSES: usize = 8;
-
-/// Samples taken along a shadow ray to dim a light through media.
-const ATTENUATION_SAMPLES: u32 = 8;
 
 /// The media acting along one stretch of a ray, each with the light group of the object
 /// holding it (which lights light it; `None` for atmospheric media and objects outside
@@ -76,6 +82,12 @@ impl<'a> ActiveMedia<'a> {
                 self.len += 1;
             }
         }
+    }
+
+    /// The media whose sampling settings rule the stretch: the first listed (measured:
+    /// the first media of the container entered first, before the atmosphere).
+    fn ruling(&self) -> &'a Media {
+        self.iter().next().unwrap_or(&DEFAULT_MEDIA)
     }
 
     /// True when no media act.
@@ -156,9 +168,9 @@ impl<'a> MediaShader<'a> {
         if active.is_empty() || !(length > 0.0 && length.is_finite()) {
             return (DVec3::ONE, DVec3::ZERO);
         }
-        let first = active.iter().next().map_or(3, |m| m.method);
-        if first != 3 {
-            return self.even(active, stretch, length, first == 1);
+        let method = active.ruling().method;
+        if method != 3 {
+            return self.intervals(active, stretch, length, method == 1);
         }
         // Method 3 samples each stretch between the edges of spotlight and cylinder beams
         // on its own, so that narrow beams are not missed.
@@ -247,16 +259,13 @@ impl<'a> MediaShader<'a> {
 
     /// Method 3 (see the module rules).
     fn adaptive(&self, active: &ActiveMedia, stretch: Stretch, length: f64) -> (DVec3, DVec3) {
-        let mut samples = 1;
-        let mut level = 0;
-        let mut threshold = f64::INFINITY;
-        let mut jitter: f64 = 0.0;
-        for media in active.iter() {
-            samples = samples.max(media.samples.0);
-            level = level.max(media.aa_level);
-            threshold = threshold.min(media.aa_threshold);
-            jitter = jitter.max(media.jitter);
-        }
+        let ruling = active.ruling();
+        let (samples, level, threshold, jitter) = (
+            ruling.samples.0,
+            ruling.aa_level,
+            ruling.aa_threshold,
+            ruling.jitter,
+        );
         let pieces = (samples / 2 + 1).max(2);
         let spacing = length / f64::from(pieces + 1);
         let weight = length / f64::from(pieces);
@@ -308,36 +317,56 @@ impl<'a> MediaShader<'a> {
         at_a.add(at_middle).add(at_b).scaled(1.0 / 3.0)
     }
 
-    /// Methods 1 and 2 (see the module rules); `random` jitters the samples (method 1).
-    fn even(
+    /// Methods 1 and 2 (see the module rules): `intervals` equal intervals, each sampled
+    /// `samples` min times (method 2 evenly, moved by `jitter`; method 1 at random), then
+    /// at random until the confidence test passes or max samples are taken.
+    fn intervals(
         &self,
         active: &ActiveMedia,
         stretch: Stretch,
         length: f64,
         random: bool,
     ) -> (DVec3, DVec3) {
-        let mut count = 1u32;
-        let mut jitter: f64 = if random { 1.0 } else { 0.0 };
-        for media in active.iter() {
-            count = count.max(media.intervals.saturating_mul(media.samples.0));
-            jitter = jitter.max(media.jitter);
-        }
-        let count = count.min(MAX_EVEN_SAMPLES);
-        let step = length / f64::from(count);
+        let ruling = active.ruling();
+        let intervals = ruling.intervals.clamp(1, MAX_INTERVALS);
+        let minimum = ruling.samples.0.clamp(1, MAX_INTERVAL_SAMPLES as u32);
+        let maximum = ruling.samples.1.clamp(minimum, MAX_INTERVAL_SAMPLES as u32);
+        let jitter = if random { 1.0 } else { ruling.jitter };
+        let test = ConfidenceTest::new(ruling.confidence, ruling.variance);
+        let width = length / f64::from(intervals);
         let seed = ray_seed(stretch);
+        let mut taken = [(0.0, Sample::default()); MAX_INTERVAL_SAMPLES];
         let mut depth = DVec3::ZERO;
         let mut added = DVec3::ZERO;
-        for index in 0..count {
-            let offset = if jitter > 0.0 {
-                (unit_random(seed, u64::from(index)) - 0.5) * jitter
-            } else {
-                0.0
-            };
-            let at = stretch.start + (f64::from(index) + 0.5 + offset) * step;
-            let sample = self.sample(active, stretch, at);
-            let half = sample.extinction * (0.5 * step);
-            added += exp_neg(depth + half) * sample.light * step;
-            depth += sample.extinction * step;
+        for interval in 0..intervals {
+            let from = stretch.start + f64::from(interval) * width;
+            let interval_seed = mix64(seed ^ u64::from(interval));
+            let mut spread = Spread::default();
+            let mut count = 0;
+            while count < maximum as usize {
+                let index = count as u64;
+                let at = if count < minimum as usize {
+                    let offset = (unit_random(interval_seed, index) - 0.5) * jitter;
+                    from + (count as f64 + 0.5 + offset) * width / f64::from(minimum)
+                } else {
+                    from + unit_random(interval_seed, index) * width
+                };
+                let sample = self.sample(active, stretch, at);
+                spread.add(sample.light);
+                taken[count] = (at, sample);
+                count += 1;
+                if count >= minimum as usize && test.passes(&spread) {
+                    break;
+                }
+            }
+            let taken = &mut taken[..count];
+            taken.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+            let step = width / count as f64;
+            for (_, sample) in taken.iter() {
+                let half = sample.extinction * (0.5 * step);
+                added += exp_neg(depth + half) * sample.light * step;
+                depth += sample.extinction * step;
+            }
         }
         (exp_neg(depth), added)
     }
@@ -431,8 +460,122 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
     [Some((-b - root) / (2.0 * a)), Some((-b + root) / (2.0 * a))]
 }
 
-/// At most this many samples are taken along one stretch by methods 1 and 2.
+/// At most this many samples are taken along one ray's shadow stretch by methods 1 and 2.
 const MAX_EVEN_SAMPLES: u32 = 100_000;
+
+/// At most this many intervals cut one stretch (methods 1 and 2).
+const MAX_INTERVALS: u32 = 10_000;
+
+/// At most this many samples are taken in one interval (methods 1 and 2).
+const MAX_INTERVAL_SAMPLES: usize = 256;
+
+/// Running mean and variance of sample lights (Welford's method), per channel.
+#[derive(Default)]
+struct Spread {
+    count: f64,
+    mean: DVec3,
+    squares: DVec3,
+}
+
+impl Spread {
+    fn add(&mut self, value: DVec3) {
+        self.count += 1.0;
+        let delta = value - self.mean;
+        self.mean += delta / self.count;
+        self.squares += delta * (value - self.mean);
+    }
+}
+
+/// The test that ends an interval's sampling (methods 1 and 2): with probability
+/// `confidence`, the variance of the samples' light is at most `variance`. The upper
+/// confidence bound of the variance is (n − 1) s² / χ²(1 − confidence; n − 1), χ² by the
+/// Wilson–Hilferty approximation.
+struct ConfidenceTest {
+    /// The standard normal quantile of 1 − confidence.
+    lower_quantile: f64,
+    variance: f64,
+}
+
+impl ConfidenceTest {
+    fn new(confidence: f64, variance: f64) -> Self {
+        let confidence = if confidence.is_finite() {
+            confidence.clamp(0.0, 0.9999)
+        } else {
+            0.9
+        };
+        ConfidenceTest {
+            lower_quantile: normal_quantile(1.0 - confidence),
+            variance: if variance.is_finite() {
+                variance.max(0.0)
+            } else {
+                1.0 / 128.0
+            },
+        }
+    }
+
+    /// True when the samples so far are close enough (never with fewer than two).
+    fn passes(&self, spread: &Spread) -> bool {
+        if spread.count < 2.0 {
+            return false;
+        }
+        let freedom = spread.count - 1.0;
+        let term = 2.0 / (9.0 * freedom);
+        let chi_squared = freedom * (1.0 - term + self.lower_quantile * term.sqrt()).powi(3);
+        if chi_squared <= 0.0 {
+            return false;
+        }
+        spread.squares.max_element() / chi_squared <= self.variance
+    }
+}
+
+/// The quantile of the standard normal distribution at probability `p` in (0, 1)
+/// (Acklam's rational approximation, relative error below 1.2·10⁻⁹).
+fn normal_quantile(p: f64) -> f64 {
+    const A: [f64; 6] = [
+        -3.969683028665376e1,
+        2.209460984245205e2,
+        -2.759285104469687e2,
+        1.38357751867269e2,
+        -3.066479806614716e1,
+        2.506628277459239,
+    ];
+    const B: [f64; 5] = [
+        -5.447609879822406e1,
+        1.615858368580409e2,
+        -1.556989798598866e2,
+        6.680131188771972e1,
+        -1.328068155288572e1,
+    ];
+    const C: [f64; 6] = [
+        -7.784894002430293e-3,
+        -3.223964580411365e-1,
+        -2.400758277161838,
+        -2.549732539343734,
+        4.374664141464968,
+        2.938163982698783,
+    ];
+    const D: [f64; 4] = [
+        7.784695709041462e-3,
+        3.224671290700398e-1,
+        2.445134137142996,
+        3.754408661907416,
+    ];
+    let p = p.clamp(1e-12, 1.0 - 1e-12);
+    let tail = |q: f64| {
+        (((((C[0] * q + C[1]) * q + C[2]) * q + C[3]) * q + C[4]) * q + C[5])
+            / ((((D[0] * q + D[1]) * q + D[2]) * q + D[3]) * q + 1.0)
+    };
+    if p < 0.02425 {
+        tail((-2.0 * p.ln()).sqrt())
+    } else if p > 1.0 - 0.02425 {
+        -tail((-2.0 * (1.0 - p).ln()).sqrt())
+    } else {
+        let q = p - 0.5;
+        let r = q * q;
+        (((((A[0] * r + A[1]) * r + A[2]) * r + A[3]) * r + A[4]) * r + A[5]) * q
+            / (((((B[0] * r + B[1]) * r + B[2]) * r + B[3]) * r + B[4]) * r + 1.0)
+    }
+}
 
 /// What method 3's subdivision needs to know.
 struct Refinement<'r, 'a> {
@@ -457,24 +600,57 @@ impl Refinement<'_, '_> {
 }
 
 /// What `media` let through along the ray from `origin` along unit `direction` between
-/// distances `start` and `end` (for shadow rays: the light's dimming on its way; sampled at
-/// the middles of equal pieces, exact for constant densities).
+/// distances `start` and `end` (for shadow rays: the light's dimming on its way).
+///
+/// Measured in POV-Ray 3.7 (step and ramp densities in an absorbing box crossed by the
+/// shadow rays of a scattering slab): method 3 takes the pieces of viewing rays (N =
+/// max(2, ⌊n/2⌋ + 1) pieces of weight L/N whose samples lie L/(N + 1) apart) without
+/// subdividing them, except that the first piece's starting sample is taken at the
+/// stretch's far end when the ray `entered` the container at `start` (for a ray starting
+/// inside, the pieces are those of viewing rays); methods 1 and 2 sample the middles of
+/// `intervals · samples` equal pieces. Both are exact for constant densities.
 pub fn transmittance(
     media: &[Media],
     origin: DVec3,
     direction: DVec3,
-    start: f64,
-    end: f64,
+    (start, end): (f64, f64),
+    entered: bool,
 ) -> DVec3 {
-    let step = (end - start) / f64::from(ATTENUATION_SAMPLES);
-    if !(step > 0.0 && step.is_finite() && media.iter().any(Media::extinguishes)) {
+    let length = end - start;
+    if !(length > 0.0 && length.is_finite() && media.iter().any(Media::extinguishes)) {
         return DVec3::ONE;
     }
+    let extinction_at = |t: f64| {
+        let at = origin + direction * t;
+        media
+            .iter()
+            .filter(|m| m.extinguishes())
+            .map(|item| extinction_of(item) * density_at(item, at))
+            .sum::<DVec3>()
+    };
+    let ruling = media.first().unwrap_or(&DEFAULT_MEDIA);
+    let (method, samples) = (ruling.method, ruling.samples.0);
     let mut depth = DVec3::ZERO;
-    for index in 0..ATTENUATION_SAMPLES {
-        let at = origin + direction * (start + (f64::from(index) + 0.5) * step);
-        for item in media.iter().filter(|m| m.extinguishes()) {
-            depth += extinction_of(item) * density_at(item, at) * step;
+    if method == 3 {
+        let pieces = (samples / 2 + 1).max(2);
+        let spacing = length / f64::from(pieces + 1);
+        let weight = length / f64::from(pieces);
+        let mut at_start = extinction_at(if entered { end } else { start });
+        for piece in 0..pieces {
+            let from = start + f64::from(piece) * spacing;
+            let middle = extinction_at(from + 0.5 * spacing);
+            let at_end = extinction_at(from + spacing);
+            depth += (at_start + middle + at_end) * (weight / 3.0);
+            at_start = at_end;
+        }
+    } else {
+        let count = ruling
+            .intervals
+            .saturating_mul(samples)
+            .clamp(1, MAX_EVEN_SAMPLES);
+        let step = length / f64::from(count);
+        for index in 0..count {
+            depth += extinction_at(start + (f64::from(index) + 0.5) * step) * step;
         }
     }
     exp_neg(depth)
@@ -583,6 +759,40 @@ mod tests {
         media.samples = (2, 2);
         let (_, add) = shader_free_along(std::slice::from_ref(&media), 2.0);
         assert!((add.x - 0.31279).abs() < 1e-5);
+    }
+
+    #[test]
+    fn normal_quantiles_and_the_confidence_test() {
+        assert!((normal_quantile(0.1) + 1.281_551_565_5).abs() < 1e-8);
+        assert!((normal_quantile(0.5)).abs() < 1e-12);
+        assert!((normal_quantile(0.99) - 2.326_347_874).abs() < 1e-8);
+        let test = ConfidenceTest::new(0.9, 1.0 / 128.0);
+        let mut steady = Spread::default();
+        let mut noisy = Spread::default();
+        for index in 0..10 {
+            steady.add(DVec3::splat(0.5));
+            noisy.add(DVec3::splat(if index % 2 == 0 { 0.0 } else { 1.0 }));
+        }
+        assert!(test.passes(&steady));
+        assert!(!test.passes(&noisy));
+    }
+
+    #[test]
+    fn adaptive_methods_are_exact_on_constant_media() {
+        // Constant media pass the confidence test at the minimum count, so methods 1 and 2
+        // with samples 2, 50 give what samples 2 give.
+        for method in [1, 2] {
+            let media = Media {
+                method,
+                emission: DVec3::splat(0.25),
+                absorption: DVec3::splat(0.5),
+                samples: (2, 50),
+                ..Media::default()
+            };
+            let (keep, add) = shader_free_along(std::slice::from_ref(&media), 2.0);
+            assert!((keep.x - (-1f64).exp()).abs() < 1e-12);
+            assert!((add.x - 0.31279).abs() < 1e-5, "method {method}: {}", add.x);
+        }
     }
 
     #[test]

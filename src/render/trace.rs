@@ -110,6 +110,11 @@ impl Media {
         self.entries[..self.len].iter().rev().map(|entry| entry.0)
     }
 
+    /// The materials of the objects the ray is in, in the order it entered them.
+    fn materials_outermost_first(&self) -> impl Iterator<Item = u32> + '_ {
+        self.entries[..self.len].iter().map(|entry| entry.0)
+    }
+
     /// The media after entering an object with this material and index.
     fn entered(&self, material: u32, ior: f64) -> Media {
         let mut media = *self;
@@ -407,8 +412,10 @@ impl<'a> Tracer<'a> {
         if !self.all_hollow(inside) {
             return (DVec3::ONE, DVec3::ZERO);
         }
+        // The first media listed rules the sampling: the container entered first, then
+        // the atmosphere (measured).
         let mut active = ActiveMedia::NONE;
-        for id in inside.materials_innermost_first() {
+        for id in inside.materials_outermost_first() {
             if let Some(material) = self.world.materials.get(id as usize) {
                 active.extend(&material.interior.media, material.light_group);
             }
