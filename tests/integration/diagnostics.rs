@@ -830,7 +830,7 @@ fn pot_height_field_that_is_not_a_gif_is_refused_at_the_file_name() {
         "pot_not_a_gif",
         1,
         20,
-        &["cannot read `", "palette8.png`: cannot decode"],
+        &["cannot read height field image \"images/palette8.png\": cannot decode"],
     );
 }
 
