@@ -1055,3 +1055,16 @@ fn bad_hdr_resolution_is_reported_at_the_file_name() {
         ],
     );
 }
+
+#[test]
+fn sor_end_point_level_with_the_third_point_is_an_error() {
+    check(
+        "sor_end_point_level",
+        2,
+        10,
+        &[
+            "a sor's point may not lie at the height of the point two places from it (1)",
+            "divide by a zero height difference",
+        ],
+    );
+}
