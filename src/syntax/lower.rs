@@ -248,26 +248,80 @@ impl<'m> Lowerer<'m> {
         let mut inner = pair.into_inner();
         let name = inner.next().expect("call name");
         let name_span = self.span(&name);
-        let arguments = inner
-            .next()
-            .map(|args| {
-                args.into_inner()
-                    .map(|a| match a.as_rule() {
-                        Rule::block => Argument::Block(Rc::new(self.block(a))),
-                        Rule::spline_kind => {
-                            Argument::Expr(Expr::Ident(Name::from(a.as_str()), self.span(&a)))
-                        }
-                        Rule::expr => Argument::Expr(self.expr(a)),
-                        _ => Argument::Expr(self.full_expr(a)),
-                    })
-                    .collect()
-            })
-            .unwrap_or_default();
+        let mut arguments = Vec::new();
+        let mut directives = Vec::new();
+        if let Some(list) = inner.next() {
+            // The pieces of one comma-separated slot, sorted once the slot is complete.
+            let mut slot = Vec::new();
+            for piece in list.into_inner() {
+                if piece.as_rule() == Rule::argument_comma {
+                    self.sort_slot(&mut slot, &mut arguments, &mut directives);
+                } else {
+                    slot.push(self.argument_piece(piece));
+                }
+            }
+            self.sort_slot(&mut slot, &mut arguments, &mut directives);
+        }
         Call {
             name: Name::from(name.as_str()),
             name_span,
             arguments,
+            directives,
             span,
+        }
+    }
+
+    /// Lowers one piece of a call's argument list: an argument or a directive.
+    fn argument_piece(&self, pair: Pair<Rule>) -> ArgumentPiece {
+        ArgumentPiece::Argument(match pair.as_rule() {
+            Rule::block => Argument::Block(Rc::new(self.block(pair))),
+            Rule::spline_kind => {
+                Argument::Expr(Expr::Ident(Name::from(pair.as_str()), self.span(&pair)))
+            }
+            Rule::full_expr => Argument::Expr(self.full_expr(pair)),
+            _ => return ArgumentPiece::Directive(Rc::new(self.directive(pair))),
+        })
+    }
+
+    /// Moves the pieces of one argument slot into the call's arguments and directives. A bare
+    /// `#if` is a value when it ends its slot (`max(1, #if (C) 2 #else 3 #end)`), else a
+    /// directive (`M(#if (C) #declare R = 1; #end R)`).
+    fn sort_slot(
+        &self,
+        slot: &mut Vec<ArgumentPiece>,
+        arguments: &mut Vec<Argument>,
+        directives: &mut Vec<ArgumentDirective>,
+    ) {
+        let count = slot.len();
+        let pieces: Vec<ArgumentPiece> = slot
+            .drain(..)
+            .enumerate()
+            .map(|(index, piece)| match piece {
+                ArgumentPiece::Argument(Argument::Expr(Expr::Directive(directive)))
+                    if index + 1 < count =>
+                {
+                    ArgumentPiece::Directive(directive)
+                }
+                other => other,
+            })
+            .collect();
+        let has_argument = pieces
+            .iter()
+            .any(|p| matches!(p, ArgumentPiece::Argument(_)));
+        let mut follows_argument = false;
+        for (index, piece) in pieces.into_iter().enumerate() {
+            match piece {
+                ArgumentPiece::Argument(argument) => {
+                    arguments.push(argument);
+                    follows_argument = true;
+                }
+                ArgumentPiece::Directive(directive) => directives.push(ArgumentDirective {
+                    before_argument: arguments.len(),
+                    follows_argument,
+                    may_be_argument: !has_argument && index + 1 == count,
+                    directive,
+                }),
+            }
         }
     }
 
@@ -638,6 +692,12 @@ impl<'m> Lowerer<'m> {
         };
         Directive { kind, span }
     }
+}
+
+/// One piece of a call's argument list, before its slot is sorted.
+enum ArgumentPiece {
+    Argument(Argument),
+    Directive(Rc<Directive>),
 }
 
 /// The inner pairs of `pair` without its directive words.
