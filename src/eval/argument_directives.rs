@@ -83,18 +83,16 @@ impl Evaluator {
             .filter(|d| d.before_argument == index)
         {
             if directive.follows_argument {
-                let what = if index == call.arguments.len() {
-                    "after a macro call's last argument"
-                } else {
-                    "between a macro call's arguments without a comma before it"
-                };
+                // The wording of the text macros' check (token_macro), which meets the same
+                // case token by token.
                 return Err(self
-                    .error(
-                        directive.directive.span,
-                        format!("POV-Ray reads no directive {what}"),
+                    .error(directive.directive.span, "directive after a macro argument")
+                    .with_label(
+                        "POV-Ray ends the argument list here: put the directive before an \
+                         argument",
                     )
-                    .with_label("expected `,` or `)` before this directive")
-                    .with_help("put the directive after `(` or after a comma")
+                    .with_secondary(call.span, "the macro call")
+                    .with_help("a directive may follow `(` or a comma")
                     .into());
             }
             let mut left = self.directive_values(&directive.directive)?;

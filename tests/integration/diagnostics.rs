@@ -985,3 +985,30 @@ fn comparison_outside_parentheses_asks_for_parentheses() {
         ],
     );
 }
+
+#[test]
+fn directive_after_a_structured_macro_call_argument_is_refused() {
+    check(
+        "macro_directive_after_argument",
+        2,
+        24,
+        &[
+            "directive after a macro argument",
+            "POV-Ray ends the argument list here",
+            "a directive may follow `(` or a comma",
+        ],
+    );
+}
+
+#[test]
+fn directive_leaving_two_macro_arguments_points_at_the_first_value() {
+    check(
+        "macro_directive_leaves_value",
+        2,
+        37,
+        &[
+            "left a value where POV-Ray reads none",
+            "left by this directive",
+        ],
+    );
+}
