@@ -69,13 +69,11 @@ impl Evaluator {
 
     /// Runs the directives of a macro call that stand before its argument `index` (those
     /// after the last argument when `index` is the number of arguments). POV-Ray reads a
-    /// directive in a macro call only after `(` or a comma; a value left by one that ends a
-    /// slot of its own is that slot's argument, pushed onto `values`.
+    /// directive in a macro call only after `(` or a comma.
     pub(crate) fn run_macro_directives_before(
         &mut self,
         call: &Call,
         index: usize,
-        values: &mut Vec<Value>,
     ) -> EvalResult<()> {
         for directive in call
             .directives
@@ -95,34 +93,14 @@ impl Evaluator {
                     .with_help("a directive may follow `(` or a comma")
                     .into());
             }
-            let mut left = self.directive_values(&directive.directive)?;
-            match (left.pop(), left.is_empty() && directive.may_be_argument) {
-                (None, _) => {}
-                (Some((value, _)), true) => values.push(value),
-                (Some((_, span)), false) => {
-                    let span = left.first().map_or(span, |(_, first)| *first);
-                    return Err(self
-                        .error(
-                            span,
-                            "a directive among a macro call's arguments left a value where \
-                             POV-Ray reads none",
-                        )
-                        .with_label("this value")
-                        .with_secondary(directive.directive.span, "left by this directive")
-                        .with_help(
-                            "a directive may leave one value, the argument, at the end of a \
-                             slot of its own, as in `Add(1, #include \"value.inc\")`",
-                        )
-                        .into());
-                }
-            }
+            self.run_argument_directive(directive)?;
         }
         Ok(())
     }
 
-    /// A bare `#if` as a macro argument: the value it chooses, if any (`M(1, 2, #if (C)
-    /// #declare R = 1; #end)` passes two arguments).
-    pub(crate) fn macro_if_argument(
+    /// A directive standing as a whole macro argument: the value it leaves, if any (`M(1, 2,
+    /// #if (C) #declare R = 1; #end)` passes two arguments).
+    pub(crate) fn macro_directive_argument(
         &mut self,
         directive: &Rc<Directive>,
     ) -> EvalResult<Option<Value>> {
@@ -132,10 +110,11 @@ impl Evaluator {
             return Err(self
                 .error(
                     span,
-                    "an `#if` among a macro call's arguments chose two values",
+                    "a directive standing as a macro argument left two values",
                 )
                 .with_label("the second value")
-                .with_secondary(directive.span, "this `#if`")
+                .with_secondary(directive.span, "the directive")
+                .with_help("separate arguments with commas outside the directive")
                 .into());
         }
         Ok(value)
@@ -155,21 +134,21 @@ impl Evaluator {
         Ok(())
     }
 
-    /// Runs one directive of a function's or spline's call to its end; it may not leave a
-    /// value.
+    /// Runs one directive among a call's arguments to its end; it may not leave a value (one
+    /// that ends a slot of its own is that slot's argument instead, see `lower.rs`).
     fn run_argument_directive(&mut self, directive: &ArgumentDirective) -> EvalResult<()> {
         let left = self.directive_values(&directive.directive)?;
         if let Some((_, span)) = left.first() {
             return Err(self
                 .error(
                     *span,
-                    "durer reads no value left by a directive among a function's arguments",
+                    "a directive among a call's arguments left a value where POV-Ray reads none",
                 )
                 .with_label("this value")
                 .with_secondary(directive.directive.span, "left by this directive")
                 .with_help(
-                    "a value chosen by `#if` may stand as a whole argument, as in \
-                     `max(1, #if (C) 2 #else 3 #end)`",
+                    "a directive may leave a value only as a whole argument, alone between \
+                     commas: `max(1, #if (C) 2 #else 3 #end)`, `Add(1, #include \"value.inc\")`",
                 )
                 .into());
         }

@@ -80,7 +80,7 @@ impl Evaluator {
         use crate::syntax::ast::Argument;
         let mut values = Vec::with_capacity(call.arguments.len());
         for (index, argument) in call.arguments.iter().enumerate() {
-            self.run_macro_directives_before(call, index, &mut values)?;
+            self.run_macro_directives_before(call, index)?;
             match argument {
                 Argument::Expr(Expr::Ident(name, span)) => {
                     // Point straight at the variable the name resolves to (following a
@@ -108,7 +108,7 @@ impl Evaluator {
                     values.push(value);
                 }
                 Argument::Expr(Expr::Directive(directive)) => {
-                    values.extend(self.macro_if_argument(directive)?);
+                    values.extend(self.macro_directive_argument(directive)?);
                 }
                 Argument::Expr(expr) => {
                     let (value, rest) = self.eval_value_pair(expr)?;
@@ -120,7 +120,7 @@ impl Evaluator {
                 Argument::Block(block) => values.push(self.eval_block(block)?),
             }
         }
-        self.run_macro_directives_before(call, call.arguments.len(), &mut values)?;
+        self.run_macro_directives_before(call, call.arguments.len())?;
         Ok(values)
     }
 

@@ -149,7 +149,8 @@ pub enum Expr {
     Array(Rc<ArrayLiteral>),
     /// `function(a, b) { ... }`.
     Function(Rc<FunctionLiteral>),
-    /// `#if` used inside an expression.
+    /// A directive used as a value: `#if` inside an expression, or a directive standing alone
+    /// as a call's argument (`Add(1, #include "value.inc")`).
     Directive(Rc<Directive>),
 }
 
@@ -200,9 +201,6 @@ pub struct ArgumentDirective {
     /// Whether it directly follows an argument, with no comma between (POV-Ray reads a
     /// directive there in a built-in function's call but not in a macro's).
     pub follows_argument: bool,
-    /// Whether it ends a comma-separated slot that holds no argument, so that in a macro
-    /// call a value it leaves is that slot's argument (`Add(1, #include "value.inc")`).
-    pub may_be_argument: bool,
     /// The directive.
     pub directive: Rc<Directive>,
 }

@@ -283,9 +283,11 @@ impl<'m> Lowerer<'m> {
         })
     }
 
-    /// Moves the pieces of one argument slot into the call's arguments and directives. A bare
-    /// `#if` is a value when it ends its slot (`max(1, #if (C) 2 #else 3 #end)`), else a
-    /// directive (`M(#if (C) #declare R = 1; #end R)`).
+    /// Moves the pieces of one argument slot into the call's arguments and directives. A
+    /// directive ending a slot without an argument is the slot's argument, the value it leaves
+    /// (`max(1, #if (C) 2 #else 3 #end)`, `Add(1, #include "value.inc")`; in a macro call it
+    /// may leave none: `M(1, 2, #declare Z = 3;)`). A bare `#if` followed by more of its slot
+    /// is a directive (`M(#if (C) #declare R = 1; #end R)`).
     fn sort_slot(
         &self,
         slot: &mut Vec<ArgumentPiece>,
@@ -293,7 +295,7 @@ impl<'m> Lowerer<'m> {
         directives: &mut Vec<ArgumentDirective>,
     ) {
         let count = slot.len();
-        let pieces: Vec<ArgumentPiece> = slot
+        let mut pieces: Vec<ArgumentPiece> = slot
             .drain(..)
             .enumerate()
             .map(|(index, piece)| match piece {
@@ -308,8 +310,15 @@ impl<'m> Lowerer<'m> {
         let has_argument = pieces
             .iter()
             .any(|p| matches!(p, ArgumentPiece::Argument(_)));
+        if !has_argument {
+            if let Some(ArgumentPiece::Directive(directive)) = pieces.pop() {
+                pieces.push(ArgumentPiece::Argument(Argument::Expr(Expr::Directive(
+                    directive,
+                ))));
+            }
+        }
         let mut follows_argument = false;
-        for (index, piece) in pieces.into_iter().enumerate() {
+        for piece in pieces {
             match piece {
                 ArgumentPiece::Argument(argument) => {
                     arguments.push(argument);
@@ -318,7 +327,6 @@ impl<'m> Lowerer<'m> {
                 ArgumentPiece::Directive(directive) => directives.push(ArgumentDirective {
                     before_argument: arguments.len(),
                     follows_argument,
-                    may_be_argument: !has_argument && index + 1 == count,
                     directive,
                 }),
             }

@@ -1001,13 +1001,26 @@ fn directive_after_a_structured_macro_call_argument_is_refused() {
 }
 
 #[test]
-fn directive_leaving_two_macro_arguments_points_at_the_first_value() {
+fn directive_leaving_two_macro_arguments_points_at_the_second_value() {
     check(
         "macro_directive_leaves_value",
         2,
         37,
         &[
-            "left a value where POV-Ray reads none",
+            "a directive standing as a macro argument left two values",
+            "separate arguments with commas outside the directive",
+        ],
+    );
+}
+
+#[test]
+fn directive_leaving_a_value_before_an_argument_is_refused() {
+    check(
+        "macro_directive_value_before_argument",
+        2,
+        44,
+        &[
+            "a directive among a call's arguments left a value where POV-Ray reads none",
             "left by this directive",
         ],
     );

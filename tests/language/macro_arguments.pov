@@ -84,6 +84,14 @@ Check((max(1 #declare X = 4; , 2) = 2 & X = 4), "a directive after a built-in's 
 Check((min(X, #declare X = 5; X) = 1), "a built-in's argument before a directive is read first")
 Check((select(-1, #declare A = 1; 5, #declare B = 2; 6) = 5 & A = 1 & B = 2), "directives before arguments select skips")
 Check((max(1, #if (1) 2 #else 3 #end) = 2), "#if as a whole argument of a built-in")
+Check((max(1, #ifdef (Undeclared) 2 #else 3 #end) = 3), "#ifdef as a whole argument of a built-in")
+Check((max(1, #switch (2) #case (1) 4 #break #case (2) 5 #break #end) = 5), "#switch as a whole argument")
+// A directive alone between commas may leave the argument, as an included file does.
+#fopen Out "macro_arguments_value.tmp" write
+#write(Out, "#local Inside = 11; Inside\n")
+#fclose Out
+Check((vlength(Two(1, #include "macro_arguments_value.tmp") - <1, 11>) = 0), "a macro argument read from an included file")
+Check((max(1, #include "macro_arguments_value.tmp") = 11), "a built-in's argument read from an included file")
 #declare Sum = function(a, b) { a + b }
 Check((Sum(1, #declare X = 3; X) = 4), "a directive in a user function's call")
 #declare F = function(x) { max(x, #declare K = 2; K) }
