@@ -743,3 +743,61 @@ fn unescape(raw: &str) -> String {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::syntax::ast::{Argument, Call, DirectiveKind, Expr, Item};
+
+    /// The call that `text`, one call at the top level, lowers to.
+    fn call(text: &str) -> Call {
+        let items = crate::syntax::parse(text, 0).expect("parses");
+        match items.first() {
+            Some(Item::Expr(Expr::Call(call))) => (**call).clone(),
+            other => panic!("not a call: {other:?}"),
+        }
+    }
+
+    #[test]
+    fn directives_among_arguments_are_placed_between_them() {
+        let c = call("M(1, #declare R = 5; R, #local Q = 2;)");
+        assert_eq!(c.arguments.len(), 3);
+        assert_eq!(c.directives.len(), 1);
+        assert_eq!(c.directives[0].before_argument, 1);
+        assert!(!c.directives[0].follows_argument);
+        // The directive alone after the last comma is that slot's argument.
+        assert!(matches!(
+            &c.arguments[2],
+            Argument::Expr(Expr::Directive(_))
+        ));
+    }
+
+    #[test]
+    fn a_directive_right_after_an_argument_is_marked() {
+        let c = call("M(1, 2 #declare Z = 3;)");
+        assert_eq!(c.arguments.len(), 2);
+        assert_eq!(c.directives[0].before_argument, 2);
+        assert!(c.directives[0].follows_argument);
+    }
+
+    #[test]
+    fn a_bare_if_is_a_value_at_the_end_of_its_slot_and_a_directive_before_more() {
+        let c = call("max(1, #if (1) 2 #else 3 #end)");
+        assert_eq!(c.arguments.len(), 2);
+        assert!(c.directives.is_empty());
+        let c = call("M(1, #if (1) #declare Y = 2; #end Y)");
+        assert_eq!(c.arguments.len(), 2);
+        assert!(matches!(&c.arguments[1], Argument::Expr(Expr::Ident(..))));
+        assert!(matches!(
+            c.directives[0].directive.kind,
+            DirectiveKind::If { .. }
+        ));
+    }
+
+    #[test]
+    fn an_empty_slot_between_commas_is_refused() {
+        assert!(crate::syntax::parse("M(1, , 2)", 0).is_err());
+        assert!(crate::syntax::parse("M(1, #declare X = 1;, 2)", 0).is_err());
+        assert!(crate::syntax::parse("M(, 1)", 0).is_err());
+        assert!(crate::syntax::parse("M(1, 2,)", 0).is_ok());
+    }
+}
