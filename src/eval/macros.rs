@@ -1,4 +1,5 @@
-//! Macro calls: argument binding (by reference for plain identifiers), expansion in place
+//! Macro calls: argument binding (by reference for plain identifiers; directives among the
+//! arguments run between them, see `argument_directives`), expansion in place
 //! as stream items (a text body is run token by token first, see `token_macro`), and
 //! evaluation as a single value inside expressions.
 
