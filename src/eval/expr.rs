@@ -423,18 +423,19 @@ impl Evaluator {
 
     fn eval_call(&mut self, call: &Rc<Call>) -> EvalResult<Value> {
         match self.lookup(call.name) {
-            Some(Value::Macro(_)) => return self.call_macro_value(call),
+            Some(Value::Macro(_)) => self.call_macro_value(call),
             Some(Value::Function(function)) => {
                 let function = function.clone();
-                return self.call_user_function(&function, call);
+                self.with_argument_directives(call, |ev| ev.call_user_function(&function, call))
             }
             Some(Value::Spline(spline)) => {
                 let spline = spline.clone();
-                return super::splines::call_spline(self, &spline, call);
+                self.with_argument_directives(call, |ev| {
+                    super::splines::call_spline(ev, &spline, call)
+                })
             }
-            _ => {}
+            _ => self.with_argument_directives(call, |ev| super::builtins::call_builtin(ev, call)),
         }
-        super::builtins::call_builtin(self, call)
     }
 
     /// Evaluates the argument at `index` as a float.
@@ -445,6 +446,7 @@ impl Evaluator {
 
     /// Evaluates the argument at `index`.
     pub(crate) fn argument(&mut self, call: &Call, index: usize) -> EvalResult<Value> {
+        self.run_directives_before(call, index)?;
         match call.arguments.get(index) {
             Some(crate::syntax::ast::Argument::Expr(e)) => self.eval_expr(e),
             Some(crate::syntax::ast::Argument::Block(b)) => self.eval_block(b),

@@ -1,4 +1,5 @@
-//! Macro calls: argument binding (by reference for plain identifiers), expansion in place
+//! Macro calls: argument binding (by reference for plain identifiers; directives among the
+//! arguments run between them, see `argument_directives`), expansion in place
 //! as stream items (a text body is run token by token first, see `token_macro`), and
 //! evaluation as a single value inside expressions.
 
@@ -74,11 +75,13 @@ impl Evaluator {
 
     /// Evaluates a macro call's arguments in the caller's scope. Plain identifiers are passed
     /// by reference. As in POV-Ray, commas are optional, so `Obj -y` is two arguments when
-    /// `Obj` is not a number: such a sum or difference is split in two.
+    /// `Obj` is not a number: such a sum or difference is split in two. Directives among the
+    /// arguments run in order between them (see `argument_directives`).
     fn macro_arguments(&mut self, call: &Call) -> EvalResult<Vec<Value>> {
         use crate::syntax::ast::Argument;
         let mut values = Vec::with_capacity(call.arguments.len());
-        for argument in &call.arguments {
+        for (index, argument) in call.arguments.iter().enumerate() {
+            self.run_macro_directives_before(call, index)?;
             match argument {
                 Argument::Expr(Expr::Ident(name, span)) => {
                     // Point straight at the variable the name resolves to (following a
@@ -105,6 +108,9 @@ impl Evaluator {
                     };
                     values.push(value);
                 }
+                Argument::Expr(Expr::Directive(directive)) => {
+                    values.extend(self.macro_directive_argument(directive)?);
+                }
                 Argument::Expr(expr) => {
                     let (value, rest) = self.eval_value_pair(expr)?;
                     values.push(value);
@@ -115,6 +121,7 @@ impl Evaluator {
                 Argument::Block(block) => values.push(self.eval_block(block)?),
             }
         }
+        self.run_macro_directives_before(call, call.arguments.len())?;
         Ok(values)
     }
 

@@ -5,6 +5,7 @@
 //! bodies are evaluated from their AST at each call; every limit ends in a diagnostic.
 
 mod appearance;
+mod argument_directives;
 mod atmosphere;
 mod builtins;
 mod c_format;
@@ -235,6 +236,8 @@ pub(crate) struct Evaluator {
     pub(crate) files: Vec<Option<files::DataFile>>,
     /// Text macro bodies parsed once for all calls (see `token_macro`).
     pub(crate) text_macro_cache: token_macro::TextMacroCache,
+    /// Running calls with directives among their arguments (see `argument_directives`).
+    pub(crate) directive_cursors: Vec<argument_directives::DirectiveCursor>,
 }
 
 impl Evaluator {
@@ -266,6 +269,7 @@ impl Evaluator {
             files: Vec::new(),
             query_worlds: HashMap::new(),
             text_macro_cache: Default::default(),
+            directive_cursors: Vec::new(),
         }
     }
 

@@ -149,7 +149,8 @@ pub enum Expr {
     Array(Rc<ArrayLiteral>),
     /// `function(a, b) { ... }`.
     Function(Rc<FunctionLiteral>),
-    /// `#if` used inside an expression.
+    /// A directive used as a value: `#if` inside an expression, or a directive standing alone
+    /// as a call's argument (`Add(1, #include "value.inc")`).
     Directive(Rc<Directive>),
 }
 
@@ -184,8 +185,24 @@ pub struct Call {
     pub name_span: Span,
     /// The arguments; blocks (e.g. `texture { .. }`) are allowed for macros.
     pub arguments: Vec<Argument>,
+    /// Directives written among the arguments (`M(1, #declare R = 5; R)`), in source order.
+    pub directives: Vec<ArgumentDirective>,
     /// The whole call.
     pub span: Span,
+}
+
+/// A directive written among a call's arguments: it runs in the caller's scope after the
+/// arguments before it are evaluated and before the ones after it.
+#[derive(Clone, Debug)]
+pub struct ArgumentDirective {
+    /// The index of the argument it stands before (the number of arguments when it follows
+    /// the last one).
+    pub before_argument: usize,
+    /// Whether it directly follows an argument, with no comma between (POV-Ray reads a
+    /// directive there in a built-in function's call but not in a macro's).
+    pub follows_argument: bool,
+    /// The directive.
+    pub directive: Rc<Directive>,
 }
 
 /// One argument of a call.

@@ -248,26 +248,88 @@ impl<'m> Lowerer<'m> {
         let mut inner = pair.into_inner();
         let name = inner.next().expect("call name");
         let name_span = self.span(&name);
-        let arguments = inner
-            .next()
-            .map(|args| {
-                args.into_inner()
-                    .map(|a| match a.as_rule() {
-                        Rule::block => Argument::Block(Rc::new(self.block(a))),
-                        Rule::spline_kind => {
-                            Argument::Expr(Expr::Ident(Name::from(a.as_str()), self.span(&a)))
-                        }
-                        Rule::expr => Argument::Expr(self.expr(a)),
-                        _ => Argument::Expr(self.full_expr(a)),
-                    })
-                    .collect()
-            })
-            .unwrap_or_default();
+        let mut arguments = Vec::new();
+        let mut directives = Vec::new();
+        if let Some(list) = inner.next() {
+            // The pieces of one comma-separated slot, sorted once the slot is complete.
+            let mut slot = Vec::new();
+            for piece in list.into_inner() {
+                if piece.as_rule() == Rule::argument_comma {
+                    self.sort_slot(&mut slot, &mut arguments, &mut directives);
+                } else {
+                    slot.push(self.argument_piece(piece));
+                }
+            }
+            self.sort_slot(&mut slot, &mut arguments, &mut directives);
+        }
         Call {
             name: Name::from(name.as_str()),
             name_span,
             arguments,
+            directives,
             span,
+        }
+    }
+
+    /// Lowers one piece of a call's argument list: an argument or a directive.
+    fn argument_piece(&self, pair: Pair<Rule>) -> ArgumentPiece {
+        ArgumentPiece::Argument(match pair.as_rule() {
+            Rule::block => Argument::Block(Rc::new(self.block(pair))),
+            Rule::spline_kind => {
+                Argument::Expr(Expr::Ident(Name::from(pair.as_str()), self.span(&pair)))
+            }
+            Rule::full_expr => Argument::Expr(self.full_expr(pair)),
+            _ => return ArgumentPiece::Directive(Rc::new(self.directive(pair))),
+        })
+    }
+
+    /// Moves the pieces of one argument slot into the call's arguments and directives. A
+    /// directive ending a slot without an argument is the slot's argument, the value it leaves
+    /// (`max(1, #if (C) 2 #else 3 #end)`, `Add(1, #include "value.inc")`; in a macro call it
+    /// may leave none: `M(1, 2, #declare Z = 3;)`). A bare `#if` followed by more of its slot
+    /// is a directive (`M(#if (C) #declare R = 1; #end R)`).
+    fn sort_slot(
+        &self,
+        slot: &mut Vec<ArgumentPiece>,
+        arguments: &mut Vec<Argument>,
+        directives: &mut Vec<ArgumentDirective>,
+    ) {
+        let count = slot.len();
+        let mut pieces: Vec<ArgumentPiece> = slot
+            .drain(..)
+            .enumerate()
+            .map(|(index, piece)| match piece {
+                ArgumentPiece::Argument(Argument::Expr(Expr::Directive(directive)))
+                    if index + 1 < count =>
+                {
+                    ArgumentPiece::Directive(directive)
+                }
+                other => other,
+            })
+            .collect();
+        let has_argument = pieces
+            .iter()
+            .any(|p| matches!(p, ArgumentPiece::Argument(_)));
+        if !has_argument {
+            if let Some(ArgumentPiece::Directive(directive)) = pieces.pop() {
+                pieces.push(ArgumentPiece::Argument(Argument::Expr(Expr::Directive(
+                    directive,
+                ))));
+            }
+        }
+        let mut follows_argument = false;
+        for piece in pieces {
+            match piece {
+                ArgumentPiece::Argument(argument) => {
+                    arguments.push(argument);
+                    follows_argument = true;
+                }
+                ArgumentPiece::Directive(directive) => directives.push(ArgumentDirective {
+                    before_argument: arguments.len(),
+                    follows_argument,
+                    directive,
+                }),
+            }
         }
     }
 
@@ -640,6 +702,12 @@ impl<'m> Lowerer<'m> {
     }
 }
 
+/// One piece of a call's argument list, before its slot is sorted.
+enum ArgumentPiece {
+    Argument(Argument),
+    Directive(Rc<Directive>),
+}
+
 /// The inner pairs of `pair` without its directive words.
 fn significant(pair: Pair<Rule>) -> impl Iterator<Item = Pair<Rule>> {
     pair.into_inner()
@@ -674,4 +742,62 @@ fn unescape(raw: &str) -> String {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::syntax::ast::{Argument, Call, DirectiveKind, Expr, Item};
+
+    /// The call that `text`, one call at the top level, lowers to.
+    fn call(text: &str) -> Call {
+        let items = crate::syntax::parse(text, 0).expect("parses");
+        match items.first() {
+            Some(Item::Expr(Expr::Call(call))) => (**call).clone(),
+            other => panic!("not a call: {other:?}"),
+        }
+    }
+
+    #[test]
+    fn directives_among_arguments_are_placed_between_them() {
+        let c = call("M(1, #declare R = 5; R, #local Q = 2;)");
+        assert_eq!(c.arguments.len(), 3);
+        assert_eq!(c.directives.len(), 1);
+        assert_eq!(c.directives[0].before_argument, 1);
+        assert!(!c.directives[0].follows_argument);
+        // The directive alone after the last comma is that slot's argument.
+        assert!(matches!(
+            &c.arguments[2],
+            Argument::Expr(Expr::Directive(_))
+        ));
+    }
+
+    #[test]
+    fn a_directive_right_after_an_argument_is_marked() {
+        let c = call("M(1, 2 #declare Z = 3;)");
+        assert_eq!(c.arguments.len(), 2);
+        assert_eq!(c.directives[0].before_argument, 2);
+        assert!(c.directives[0].follows_argument);
+    }
+
+    #[test]
+    fn a_bare_if_is_a_value_at_the_end_of_its_slot_and_a_directive_before_more() {
+        let c = call("max(1, #if (1) 2 #else 3 #end)");
+        assert_eq!(c.arguments.len(), 2);
+        assert!(c.directives.is_empty());
+        let c = call("M(1, #if (1) #declare Y = 2; #end Y)");
+        assert_eq!(c.arguments.len(), 2);
+        assert!(matches!(&c.arguments[1], Argument::Expr(Expr::Ident(..))));
+        assert!(matches!(
+            c.directives[0].directive.kind,
+            DirectiveKind::If { .. }
+        ));
+    }
+
+    #[test]
+    fn an_empty_slot_between_commas_is_refused() {
+        assert!(crate::syntax::parse("M(1, , 2)", 0).is_err());
+        assert!(crate::syntax::parse("M(1, #declare X = 1;, 2)", 0).is_err());
+        assert!(crate::syntax::parse("M(, 1)", 0).is_err());
+        assert!(crate::syntax::parse("M(1, 2,)", 0).is_ok());
+    }
 }

@@ -1068,3 +1068,43 @@ fn sor_end_point_level_with_the_third_point_is_an_error() {
         ],
     );
 }
+
+#[test]
+fn directive_after_a_structured_macro_call_argument_is_refused() {
+    check(
+        "macro_directive_after_argument",
+        2,
+        24,
+        &[
+            "directive after a macro argument",
+            "POV-Ray ends the argument list here",
+            "a directive may follow `(` or a comma",
+        ],
+    );
+}
+
+#[test]
+fn directive_leaving_two_macro_arguments_points_at_the_second_value() {
+    check(
+        "macro_directive_leaves_value",
+        2,
+        37,
+        &[
+            "a directive standing as a macro argument left two values",
+            "separate arguments with commas outside the directive",
+        ],
+    );
+}
+
+#[test]
+fn directive_leaving_a_value_before_an_argument_is_refused() {
+    check(
+        "macro_directive_value_before_argument",
+        2,
+        44,
+        &[
+            "a directive among a call's arguments left a value where POV-Ray reads none",
+            "left by this directive",
+        ],
+    );
+}

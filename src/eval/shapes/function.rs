@@ -202,7 +202,12 @@ impl Evaluator {
     /// Which internal function `internal(N)` names, or a diagnostic when durer lacks it.
     fn internal_function(&mut self, call: &Call) -> EvalResult<Internal> {
         let number = match call.arguments.as_slice() {
-            [Argument::Expr(expr)] => self.eval_float(expr)?,
+            [Argument::Expr(expr)] => {
+                self.run_directives_at(call, 0)?;
+                let number = self.eval_float(expr)?;
+                self.run_directives_at(call, 1)?;
+                number
+            }
             _ => return Err(self.error(call.span, "`internal` takes one number").into()),
         };
         Internal::from_number(number).ok_or_else(|| {
@@ -467,12 +472,17 @@ impl Evaluator {
                 .error(call.span, "too many nested sums and products")
                 .into());
         }
+        self.run_directives_at(call, 0)?;
+        self.run_directives_at(call, 1)?;
         let from = self.compile_expr(from, names)?;
+        self.run_directives_at(call, 2)?;
         let to = self.compile_expr(to, names)?;
+        self.run_directives_at(call, 3)?;
         let index = names.len();
         names.push(*counter);
         let body = self.compile_expr(body, names);
         names.pop();
+        self.run_directives_at(call, 4)?;
         Ok(Node::Series {
             product: &*call.name == "prod",
             counter: index,
@@ -486,15 +496,20 @@ impl Evaluator {
                 .error(call.span, format!("more than {MAX_PARAMETERS} arguments"))
                 .into());
         }
-        call.arguments
-            .iter()
-            .map(|argument| match argument {
-                Argument::Expr(expr) => self.compile_expr(expr, names),
-                Argument::Block(block) => Err(self
-                    .error(block.span, "a function argument must be a float")
-                    .into()),
-            })
-            .collect()
+        let mut nodes = Vec::with_capacity(call.arguments.len());
+        for (index, argument) in call.arguments.iter().enumerate() {
+            self.run_directives_at(call, index)?;
+            nodes.push(match argument {
+                Argument::Expr(expr) => self.compile_expr(expr, names)?,
+                Argument::Block(block) => {
+                    return Err(self
+                        .error(block.span, "a function argument must be a float")
+                        .into())
+                }
+            });
+        }
+        self.run_directives_at(call, call.arguments.len())?;
+        Ok(nodes)
     }
 
     /// True when `expr` reads a parameter or calls a user function (so it must be compiled

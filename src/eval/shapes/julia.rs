@@ -109,10 +109,13 @@ impl Evaluator {
                             .error(call.span, "`pwr` takes two floats: pwr(x, y)")
                             .into());
                     };
+                    self.run_directives_at(call, 0)?;
                     let real_part = self.eval_expr(real)?;
                     let real_part = self.to_float(real_part, real.span())?;
+                    self.run_directives_at(call, 1)?;
                     let imaginary_part = self.eval_expr(imaginary)?;
                     let imaginary_part = self.to_float(imaginary_part, imaginary.span())?;
+                    self.run_directives_at(call, 2)?;
                     fractal.function = JuliaFunction::Power(DVec2::new(real_part, imaginary_part));
                     function_span = call.span;
                 }
