@@ -39,14 +39,19 @@ pub struct Raster {
     pub high_dynamic_range: bool,
     /// The file stores transparency (an alpha channel or a transparent palette entry).
     pub alpha: bool,
-    /// POV-Ray's `use_alpha` reads this file's red channel instead of its transparency
-    /// (measured on colour and grey files without alpha: PNG, PPM, PGM, TGA, JPEG; not on
-    /// palette files or HDR files, which give 1 − alpha, so 0).
-    pub use_alpha_reads_red: bool,
     /// Each pixel's palette index, row by row from the top, for palette files.
     pub palette_indices: Option<Vec<u8>>,
     /// How the stored values encode light.
     pub encoding: StoredEncoding,
+}
+
+impl Raster {
+    /// Whether POV-Ray's `use_alpha` reads this file's red channel instead of its
+    /// transparency (measured on colour and grey files without alpha: PNG, PPM, PGM, TGA,
+    /// JPEG; not on palette files or HDR files, which give 1 − alpha, so 0).
+    pub fn use_alpha_reads_red(&self) -> bool {
+        !self.alpha && !self.high_dynamic_range && self.palette_indices.is_none()
+    }
 }
 
 /// How a file's stored values encode light, as POV-Ray 3.7 reads them when the image block
@@ -188,9 +193,6 @@ fn decode(bytes: &[u8], format: RasterFormat) -> Result<Raster, String> {
         sixteen_bit,
         high_dynamic_range,
         alpha: colour_type.has_alpha(),
-        use_alpha_reads_red: !colour_type.has_alpha()
-            && !high_dynamic_range
-            && palette_indices.is_none(),
         palette_indices,
         encoding,
     })
@@ -282,7 +284,6 @@ fn potential_levels(bytes: &[u8]) -> Result<Raster, String> {
         sixteen_bit: true,
         high_dynamic_range: false,
         alpha: false,
-        use_alpha_reads_red: false,
         palette_indices: None,
         encoding: StoredEncoding::AsStored,
     })

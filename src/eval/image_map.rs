@@ -267,7 +267,7 @@ impl Evaluator {
         };
         // `use_alpha` on a file that stores no transparency reads its red channel
         // (measured): the alpha channel, which only `use_alpha` reads then, holds 1 − red.
-        let red_as_alpha = use_alpha && raster.use_alpha_reads_red;
+        let red_as_alpha = use_alpha && raster.use_alpha_reads_red();
         let pixels = raster
             .pixels
             .iter()

@@ -71,7 +71,6 @@ pub(super) fn decode(bytes: &[u8]) -> Result<Raster, String> {
         sixteen_bit: false,
         high_dynamic_range: false,
         alpha: transparent.is_some(),
-        use_alpha_reads_red: false,
         palette_indices: Some(indices),
         encoding: StoredEncoding::Srgb,
     })

@@ -12,7 +12,7 @@ pub(super) fn decode(bytes: &[u8]) -> Result<Raster, String> {
     let (width, height, top_first, mut position) = header(bytes)?;
     // Grown row by row as scanlines decode, so a header claiming a huge image costs
     // nothing up front.
-    let mut rows: Vec<Vec<[f32; 4]>> = Vec::new();
+    let mut pixels: Vec<[f32; 4]> = Vec::new();
     // A run-length scanline needs at least 8 bytes per 127 pixels: refuse a width the
     // rest of the file cannot hold before allocating a scanline for it.
     if width as usize / 16 > bytes.len() - position {
@@ -21,12 +21,18 @@ pub(super) fn decode(bytes: &[u8]) -> Result<Raster, String> {
     let mut scanline = vec![[0u8; 4]; width as usize];
     for _ in 0..height {
         position = read_scanline(bytes, position, &mut scanline)?;
-        rows.push(scanline.iter().map(|&rgbe| linear(rgbe)).collect());
+        pixels.extend(scanline.iter().map(|&rgbe| linear(rgbe)));
     }
     if !top_first {
-        rows.reverse();
+        // Rows were stored from the bottom: swap them end for end in place.
+        let row = width as usize;
+        let rows = height as usize;
+        for low in 0..rows / 2 {
+            let high = rows - 1 - low;
+            let (front, back) = pixels.split_at_mut(high * row);
+            front[low * row..(low + 1) * row].swap_with_slice(&mut back[..row]);
+        }
     }
-    let pixels = rows.concat();
     Ok(Raster {
         width,
         height,
@@ -35,7 +41,6 @@ pub(super) fn decode(bytes: &[u8]) -> Result<Raster, String> {
         sixteen_bit: false,
         high_dynamic_range: true,
         alpha: false,
-        use_alpha_reads_red: false,
         palette_indices: None,
         encoding: StoredEncoding::Linear,
     })
@@ -196,6 +201,28 @@ mod tests {
         assert_eq!(flat.pixels, packed.pixels);
         assert_eq!(flat.pixel(0, 0)[0], 192.5 / 2048.0);
         assert_eq!(flat.pixel(3, 0)[1], 30.5 / 2048.0);
+    }
+
+    #[test]
+    fn rows_stored_from_the_bottom_are_turned_top_first() {
+        let mut file = b"#?RADIANCE\n\n+Y 3 +X 2\n".to_vec();
+        for row in 0..3u8 {
+            for column in 0..2u8 {
+                file.extend_from_slice(&[128 + row * 20 + column, 128, 128, 129]);
+            }
+        }
+        let raster = decode(&file).unwrap();
+        let reds: Vec<f32> = raster.pixels.iter().map(|pixel| pixel[0]).collect();
+        let stored = |row: u8, column: u8| linear([128 + row * 20 + column, 128, 128, 129])[0];
+        let expected = [
+            stored(2, 0),
+            stored(2, 1),
+            stored(1, 0),
+            stored(1, 1),
+            stored(0, 0),
+            stored(0, 1),
+        ];
+        assert_eq!(reds, expected);
     }
 
     #[test]

@@ -128,7 +128,6 @@ pub(super) fn decode(bytes: &[u8]) -> Result<Raster, String> {
         sixteen_bit: false,
         high_dynamic_range: false,
         alpha,
-        use_alpha_reads_red: !alpha && kind != Kind::Mapped,
         palette_indices,
         encoding: StoredEncoding::Srgb,
     })

@@ -242,7 +242,6 @@ mod tests {
             sixteen_bit: true,
             high_dynamic_range: false,
             alpha: false,
-            use_alpha_reads_red: true,
             palette_indices: None,
             encoding: StoredEncoding::Srgb,
         };
