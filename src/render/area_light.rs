@@ -3,7 +3,7 @@
 //! In: a light's [`AreaLight`], the lit point and a function giving the light that reaches
 //! the point from one position of the array. Out: the averaged light filter. Holds: no
 //! allocation (the subdivision recurses on the stack, at most log₂ of the array size
-//! deep); jitter is a hash of the lit point and the array cell, so images do not depend on
+//! deep, and arrays up to 17×17 remember their lights' values in a table on the stack); jitter is a hash of the lit point and the array cell, so images do not depend on
 //! the number of threads.
 //!
 //! Rules (POV-Ray 3.7 manual, checked against renders):
@@ -42,6 +42,13 @@ impl Sampled for DVec3 {
 
 /// Corners of a block differing by more than this (in any channel) split it.
 pub const ADAPTIVE_THRESHOLD: f64 = 0.1;
+
+/// Arrays of up to this many point lights (9×9) remember their values in a small table.
+const SMALL_ARRAY_LIGHTS: usize = 81;
+
+/// Arrays of up to this many point lights (17×17) remember each light's value while they
+/// are averaged; larger ones compute the corners their blocks share again.
+const REMEMBERED_LIGHTS: usize = 289;
 
 /// The array of one area light as seen from one lit point.
 #[derive(Clone, Copy, Debug)]
@@ -101,9 +108,34 @@ impl AreaArray {
         self.centre + u * self.axis1 + v * self.axis2
     }
 
-    /// The mean of `light_from(position)` over the array, sampled block by block.
+    /// The mean of `light_from(position)` over the array, sampled block by block. Blocks
+    /// share corners, so in arrays of up to [`REMEMBERED_LIGHTS`] point lights each light's
+    /// value is computed once and remembered on the stack (a 9×9 `adaptive 1` array needs 9
+    /// shadow rays instead of 16); larger arrays compute a shared corner again.
     pub fn average<T: Sampled>(&self, light_from: &mut impl FnMut(DVec3) -> T) -> T {
-        self.block((0, 0), (self.size1 - 1, self.size2 - 1), 0, light_from)
+        let count = u64::from(self.size1) * u64::from(self.size2);
+        if count <= SMALL_ARRAY_LIGHTS as u64 {
+            self.average_remembering::<SMALL_ARRAY_LIGHTS, T>(light_from)
+        } else if count <= REMEMBERED_LIGHTS as u64 {
+            self.average_remembering::<REMEMBERED_LIGHTS, T>(light_from)
+        } else {
+            let mut value_at = |i: u32, j: u32| light_from(self.position(i, j));
+            self.block((0, 0), (self.size1 - 1, self.size2 - 1), 0, &mut value_at)
+        }
+    }
+
+    /// [`AreaArray::average`] remembering each point light's value in a table of `LIGHTS`
+    /// entries (at least the array's size), so no light is computed twice.
+    fn average_remembering<const LIGHTS: usize, T: Sampled>(
+        &self,
+        light_from: &mut impl FnMut(DVec3) -> T,
+    ) -> T {
+        let mut remembered: [Option<T>; LIGHTS] = [None; LIGHTS];
+        let mut value_at = |i: u32, j: u32| {
+            let index = j as usize * self.size1 as usize + i as usize;
+            *remembered[index].get_or_insert_with(|| light_from(self.position(i, j)))
+        };
+        self.block((0, 0), (self.size1 - 1, self.size2 - 1), 0, &mut value_at)
     }
 
     /// The value of the block of point lights from (u1, v1) to (u2, v2).
@@ -112,12 +144,11 @@ impl AreaArray {
         (u1, v1): (u32, u32),
         (u2, v2): (u32, u32),
         level: u32,
-        light_from: &mut impl FnMut(DVec3) -> T,
+        value_at: &mut impl FnMut(u32, u32) -> T,
     ) -> T {
         let splittable = u2 - u1 > 1 || v2 - v1 > 1;
         if !splittable || level >= self.min_level {
-            let corners = [(u1, v1), (u2, v1), (u1, v2), (u2, v2)]
-                .map(|(i, j)| light_from(self.position(i, j)));
+            let corners = [(u1, v1), (u2, v1), (u1, v2), (u2, v2)].map(|(i, j)| value_at(i, j));
             if !splittable || !corners_differ(&corners) {
                 return (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
             }
@@ -127,10 +158,10 @@ impl AreaArray {
         let (v_low, v_high) = ((v1 + v2) / 2, (v1 + v2).div_ceil(2));
         let next = level + 1;
         let quarters = [
-            self.block((u1, v1), (u_low, v_low), next, light_from),
-            self.block((u_high, v1), (u2, v_low), next, light_from),
-            self.block((u1, v_high), (u_low, v2), next, light_from),
-            self.block((u_high, v_high), (u2, v2), next, light_from),
+            self.block((u1, v1), (u_low, v_low), next, value_at),
+            self.block((u_high, v1), (u2, v_low), next, value_at),
+            self.block((u1, v_high), (u_low, v2), next, value_at),
+            self.block((u_high, v_high), (u2, v2), next, value_at),
         ];
         (quarters[0] + quarters[1] + quarters[2] + quarters[3]) / 4.0
     }
@@ -262,6 +293,31 @@ mod tests {
         });
         assert_eq!(tested, 4);
         assert_eq!(value, DVec3::ONE);
+    }
+
+    #[test]
+    fn shared_corners_are_computed_once() {
+        // adaptive 1 splits a 9×9 array into four blocks sharing a 3×3 grid of corners.
+        let mut light = area(9, 9);
+        light.adaptive = Some(1);
+        let array = AreaArray::new(&light, DVec3::ZERO, DVec3::new(0.0, -5.0, 0.0));
+        let mut tested = 0;
+        let value = array.average(&mut |_| {
+            tested += 1;
+            DVec3::ONE
+        });
+        assert_eq!(tested, 9);
+        assert_eq!(value, DVec3::ONE);
+        // Past the remembered size every block computes its own corners.
+        let mut large = area(19, 19);
+        large.adaptive = Some(1);
+        let array = AreaArray::new(&large, DVec3::ZERO, DVec3::new(0.0, -5.0, 0.0));
+        let mut tested = 0;
+        array.average(&mut |_| {
+            tested += 1;
+            DVec3::ONE
+        });
+        assert_eq!(tested, 16);
     }
 
     #[test]
