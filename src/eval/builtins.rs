@@ -603,9 +603,20 @@ fn format_float(value: f64, width: f64, precision: f64) -> String {
         precision.min(MAX_PRECISION) as usize
     };
     let zero_padded = width < 0.0;
-    // Any width over the limit is invalid whatever the value; clamping keeps `format!` safe.
-    let width = width.abs().min((MAX_FORMATTED_LENGTH + 1) as f64) as usize;
-    let fixed = padded(format!("{value:.precision$}"), value, width, zero_padded);
+    // Any width over the limit is invalid whatever the value; clamping keeps `format!` safe
+    // (a NaN width is 0, as C's conversion to int would make it).
+    let width = if width.is_nan() {
+        0
+    } else {
+        width.abs().min((MAX_FORMATTED_LENGTH + 1) as f64) as usize
+    };
+    let fixed = if value.is_finite() {
+        format!("{value:.precision$}")
+    } else {
+        // C writes `nan`, `inf` and `-inf` whatever the precision.
+        general_format(value, precision)
+    };
+    let fixed = padded(fixed, value, width, zero_padded);
     if fixed.len() <= MAX_FORMATTED_LENGTH {
         return fixed;
     }
@@ -754,6 +765,10 @@ mod tests {
         assert_eq!(format_float(1e300, 0.0, 300.0), "<invalid>");
         assert_eq!(format_float(1e-300, 0.0, 400.0), "<invalid>");
         assert_eq!(format_float(1e200, 250.0, 2.0).len(), 250);
+        assert_eq!(format_float(f64::INFINITY, 0.0, 2.0), "inf");
+        assert_eq!(format_float(f64::NEG_INFINITY, 6.0, 2.0), "  -inf");
+        assert_eq!(format_float(f64::NAN, 0.0, 2.0), "nan");
+        assert_eq!(format_float(1.5, f64::NAN, 2.0), "1.50");
     }
 
     use super::leading_float;

@@ -388,7 +388,9 @@ impl Evaluator {
                 Item::Keyword(word, span) => match &**word {
                     "translate" | "rotate" | "scale" | "matrix" | "transform" => {
                         let t = self.transform_keyword(word, *span, stream)?;
-                        if let Some(normal) = &mut normal {
+                        // A uv-mapped normal named here keeps its frame (see
+                        // `Normal::transform`), so its pattern notes nothing either.
+                        if let Some(normal) = normal.as_mut().filter(|normal| !normal.uv_mapped) {
                             if let NormalSource::Pattern { pattern, .. }
                             | NormalSource::Map { pattern, .. } = &mut normal.source
                             {

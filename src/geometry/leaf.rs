@@ -674,12 +674,19 @@ impl Leaf {
     /// Pushes every crossing of the world ray (as ray parameters) into `roots`.
     #[inline]
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {
+        let (origin, direction) = self.local_ray(ray);
+        self.shape.intersect(origin, direction, roots);
+    }
+
+    /// The world ray's origin and direction in the shape's own space (the direction keeps
+    /// the map's scale, so ray parameters stay world ones).
+    #[inline]
+    fn local_ray(&self, ray: &Ray) -> (DVec3, DVec3) {
         match &self.local_from_world {
-            None => self.shape.intersect(ray.origin, ray.direction, roots),
-            Some(map) => self.shape.intersect(
+            None => (ray.origin, ray.direction),
+            Some(map) => (
                 map.transform_point3(ray.origin),
                 map.transform_vector3(ray.direction),
-                roots,
             ),
         }
     }
@@ -689,13 +696,7 @@ impl Leaf {
     pub fn nearest(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<(f64, u8)> {
         if let LocalShape::JuliaFractal(shape) = &self.shape {
             // Its walk along the ray stops at the first crossing in range.
-            let (origin, direction) = match &self.local_from_world {
-                None => (ray.origin, ray.direction),
-                Some(map) => (
-                    map.transform_point3(ray.origin),
-                    map.transform_vector3(ray.direction),
-                ),
-            };
+            let (origin, direction) = self.local_ray(ray);
             return shape
                 .nearest(origin, direction, min_distance, max_distance)
                 .map(|distance| (distance, 0));
@@ -769,6 +770,17 @@ impl Leaf {
                     .any(|&material| uses_uv(material))
                     .then(|| corner_weighted(face.corner_uvs, weights));
                 HitDetails::blended(normal, materials, weights, uv)
+            }
+            // One nearest-uv search gives a parametric surface's normal and uv together.
+            LocalShape::Parametric(surface) if uses_uv(self.material) => {
+                let (normal, uv) = surface.normal_and_uv(local);
+                let normal = match &self.local_from_world {
+                    None => normal,
+                    Some(map) => map.matrix3.transpose() * normal,
+                };
+                let mut details = HitDetails::plain(self.oriented(normal), self.material);
+                details.uv = Some(uv);
+                details
             }
             shape => {
                 let normal = self.world_normal(local, part);

@@ -417,7 +417,17 @@ impl ParametricSurface {
     /// The normal at a surface `point`: the cross product of the partial derivatives at the
     /// nearest uv point.
     pub fn normal(&self, point: DVec3) -> DVec3 {
+        self.normal_at_uv(self.nearest_uv(point))
+    }
+
+    /// The normal and the uv at a surface `point`, from one search for its nearest uv point.
+    pub fn normal_and_uv(&self, point: DVec3) -> (DVec3, DVec2) {
         let uv = self.nearest_uv(point);
+        (self.normal_at_uv(uv), uv)
+    }
+
+    /// The normal at the surface point of parameters `uv`.
+    fn normal_at_uv(&self, uv: DVec2) -> DVec3 {
         let (along_u, along_v) = self.partials(uv, (self.uv_high - self.uv_low) * DERIVATIVE_STEP);
         let normal = along_u.cross(along_v);
         if normal.is_finite() && normal != DVec3::ZERO {

@@ -95,6 +95,8 @@ pub struct Superellipsoid {
     horizontal_power: Power,
     blend_power: Power,
     vertical_power: Power,
+    /// n / 2, the power that turns the function's value into a norm (Newton walks).
+    norm_power: Power,
     /// True when both exponents are at most 2, which makes the function convex.
     convex: bool,
 }
@@ -116,6 +118,7 @@ impl Superellipsoid {
             horizontal_power: Power::new(horizontal),
             blend_power: Power::new(blend),
             vertical_power: Power::new(vertical),
+            norm_power: Power::new(north_south / 2.0),
             convex: (1.0..f64::INFINITY).contains(&horizontal)
                 && (1.0..f64::INFINITY).contains(&vertical),
         })
@@ -174,7 +177,7 @@ impl Superellipsoid {
                 // Only rounding brings a walk inside: it is on the crossing.
                 return Walk::Crossing(t);
             }
-            let norm = value.powf(1.0 / self.vertical);
+            let norm = self.norm_power.of(value);
             let norm_slope = heading * norm / (self.vertical * value) * slope;
             if !norm_slope.is_finite() {
                 return Walk::Undecided;

@@ -328,7 +328,7 @@ impl<'a> MediaShader<'a> {
         random: bool,
     ) -> (DVec3, DVec3) {
         let ruling = active.ruling();
-        let intervals = ruling.intervals.clamp(1, MAX_INTERVALS);
+        let intervals = ruling.intervals.max(1);
         let minimum = ruling.samples.0.clamp(1, MAX_INTERVAL_SAMPLES as u32);
         let maximum = ruling.samples.1.clamp(minimum, MAX_INTERVAL_SAMPLES as u32);
         let jitter = if random { 1.0 } else { ruling.jitter };
@@ -463,10 +463,8 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
 /// At most this many samples are taken along one ray's shadow stretch by methods 1 and 2.
 const MAX_EVEN_SAMPLES: u32 = 100_000;
 
-/// At most this many intervals cut one stretch (methods 1 and 2).
-const MAX_INTERVALS: u32 = 10_000;
-
-/// At most this many samples are taken in one interval (methods 1 and 2).
+/// At most this many samples are taken in one interval (methods 1 and 2), on viewing and
+/// shadow rays alike; a larger `samples` (the parser takes up to 10,000) is cut to it.
 const MAX_INTERVAL_SAMPLES: usize = 256;
 
 /// Running mean and variance of sample lights (Welford's method), per channel.
@@ -646,7 +644,7 @@ pub fn transmittance(
     } else {
         let count = ruling
             .intervals
-            .saturating_mul(samples)
+            .saturating_mul(samples.min(MAX_INTERVAL_SAMPLES as u32))
             .clamp(1, MAX_EVEN_SAMPLES);
         let step = length / f64::from(count);
         for index in 0..count {

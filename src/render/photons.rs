@@ -598,12 +598,13 @@ impl Shooter<'_> {
             return hit_target;
         };
         // The light's distance fade is applied where the photon lands, by its whole path
-        // (measured), so it is taken out of the light arriving here.
-        let first_fade = fade_factor(light, hit.distance);
-        if first_fade.is_nan() || first_fade <= 0.0 {
+        // (measured), so the fade `incoming` gave the light arriving here (by the distance
+        // from the light's position, also for parallel beams) is taken out again.
+        let first_fade = fade_factor(light, light.position.distance(hit.point));
+        let colour = arriving.colour / first_fade * energy;
+        if !(first_fade > 0.0 && colour.is_finite()) {
             return hit_target;
         }
-        let colour = arriving.colour / first_fade * energy;
         let mut first = Bounce {
             ray,
             colour,
