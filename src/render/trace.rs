@@ -642,8 +642,12 @@ impl<'a> Tracer<'a> {
             pass *= DVec3::ONE - reflection;
         }
         let pass_weight = weight.transmitted(pass);
-        // Whether the mirror reflection stands in for light that could not get through.
-        let mut totally_reflected = false;
+        // Whether the mirror reflection is a total internal reflection (also when the
+        // finish reflection has taken all the light there, as `fresnel` does with
+        // `conserve_energy`): it fades inside the object like light coming through (measured
+        // through a glass prism).
+        let mut totally_reflected =
+            (ratio - 1.0).abs() >= 1e-12 && refract(ray.direction, normal, ratio).is_none();
         // Negative transmit subtracts what lies behind; it is weighed by its size.
         let surface_passes = pass.abs().dot(GREY_WEIGHTS) >= self.adc_bailout;
         if pass_weight.0 > 0.0 && pass_weight.0 >= self.adc_bailout && surface_passes {
@@ -673,7 +677,6 @@ impl<'a> Tracer<'a> {
                 // Total internal reflection: the surface becomes a perfect mirror.
                 reflection = DVec3::ONE;
                 reflection_weight = pass_weight;
-                totally_reflected = true;
             }
         }
 
