@@ -366,7 +366,7 @@ impl<'a> Tracer<'a> {
             // when the hit is on that object (measured: povray fades nothing on the way to
             // another object inside it, nor out through a clipped-away part). Only the light
             // that came through the surface fades; the surface's own light and its finish
-            // reflection do not (measured from inside a glass plane).
+            // reflection do not (measured through thick glass slabs).
             let mut fade = DVec3::ONE;
             if media
                 .materials_innermost_first()
