@@ -18,7 +18,8 @@
 //! - interior fading over a distance d: `a = 1 / (1 + (d / fade_distance)^fade_power)`
 //!   and light is multiplied by `a + (1 − a) fade_color`; for fade_power ≥ 1000 by
 //!   `exp(−d (1 − fade_color) / fade_distance)` per channel; off when `fade_distance` is
-//!   not positive.
+//!   not positive. It dims only the light coming through the surface a ray inside meets
+//!   and a total internal reflection, not the finish reflection nor the surface's light.
 
 use super::shading::highlight_tint;
 use crate::scene::{Finish, Interior};

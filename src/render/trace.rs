@@ -362,15 +362,18 @@ impl<'a> Tracer<'a> {
             let Some(material) = self.world.materials.get(hit.material as usize) else {
                 return (colour, first_distance);
             };
-            // Light from this hit fades on its way through the object the ray is in, when
-            // the hit is on that object (measured: povray fades nothing on the way to
-            // another object inside it, nor out through a clipped-away part).
+            // Light from beyond this hit fades on its way through the object the ray is in,
+            // when the hit is on that object (measured: povray fades nothing on the way to
+            // another object inside it, nor out through a clipped-away part). Only the light
+            // that came through the surface fades; the surface's own light and its finish
+            // reflection do not (measured through thick glass slabs).
+            let mut fade = DVec3::ONE;
             if media
                 .materials_innermost_first()
                 .any(|id| id == hit.material)
             {
                 if let Some(kept) = interior_fade(&material.interior, hit.distance - travelled) {
-                    carried *= kept;
+                    fade = kept;
                 }
             }
             travelled = hit.distance;
@@ -379,11 +382,11 @@ impl<'a> Tracer<'a> {
             let surface = self.shade(
                 &ray, &hit, material, level, weight, &media, &indirect, &caustics,
             );
-            colour += carried * surface.colour;
+            colour += carried * (surface.colour + fade * surface.through);
             let Some(continued) = surface.continued else {
                 return (colour, first_distance);
             };
-            carried *= continued.filter;
+            carried *= fade * continued.filter;
             weight = continued.weight;
             media = continued.media;
             // The same ray is searched again beyond this hit, which avoids drift along it.
@@ -482,6 +485,7 @@ impl<'a> Tracer<'a> {
             // A mesh triangle with a texture per corner: each shaded, blended by weight.
             let mut total = Shaded {
                 colour: DVec3::ZERO,
+                through: DVec3::ZERO,
                 continued: None,
             };
             for (&corner, &share) in blend.materials.iter().zip(&blend.weights) {
@@ -515,6 +519,7 @@ impl<'a> Tracer<'a> {
         }
         let mut total = Shaded {
             colour: DVec3::ZERO,
+            through: DVec3::ZERO,
             continued: None,
         };
         let surface = hit_surface(hit.point, ray.direction, hit.normal);
@@ -603,6 +608,7 @@ impl<'a> Tracer<'a> {
         };
         let mut shaded = Shaded {
             colour: opacity * local.body + local.highlights,
+            through: DVec3::ZERO,
             continued: None,
         };
         if level >= self.max_trace_level {
@@ -636,6 +642,12 @@ impl<'a> Tracer<'a> {
             pass *= DVec3::ONE - reflection;
         }
         let pass_weight = weight.transmitted(pass);
+        // Whether the mirror reflection is a total internal reflection (also when the
+        // finish reflection has taken all the light there, as `fresnel` does with
+        // `conserve_energy`): it fades inside the object like light coming through (measured
+        // through a glass prism).
+        let mut totally_reflected =
+            (ratio - 1.0).abs() >= 1e-12 && refract(ray.direction, normal, ratio).is_none();
         // Negative transmit subtracts what lies behind; it is weighed by its size.
         let surface_passes = pass.abs().dot(GREY_WEIGHTS) >= self.adc_bailout;
         if pass_weight.0 > 0.0 && pass_weight.0 >= self.adc_bailout && surface_passes {
@@ -647,10 +659,11 @@ impl<'a> Tracer<'a> {
                 });
             } else if entering && media.band.is_none() && disperses(interior) {
                 match self.dispersed(ray, hit, normal, media, ior, level, pass_weight) {
-                    Some(seen) => shaded.colour += pass * seen,
+                    Some(seen) => shaded.through += pass * seen,
                     None => {
                         reflection = DVec3::ONE;
                         reflection_weight = pass_weight;
+                        totally_reflected = true;
                     }
                 }
             } else if let Some(bent) = refract(ray.direction, normal, ratio) {
@@ -659,7 +672,7 @@ impl<'a> Tracer<'a> {
                     direction: bent,
                 };
                 let seen = self.trace(through, level + 1, pass_weight, &beyond, RayKind::Refracted);
-                shaded.colour += pass * seen;
+                shaded.through += pass * seen;
             } else {
                 // Total internal reflection: the surface becomes a perfect mirror.
                 reflection = DVec3::ONE;
@@ -681,7 +694,12 @@ impl<'a> Tracer<'a> {
                     media,
                     RayKind::Reflected,
                 );
-                shaded.colour += reflection * apply_exponent(seen, finish.reflection_exponent);
+                let mirrored = reflection * apply_exponent(seen, finish.reflection_exponent);
+                if totally_reflected {
+                    shaded.through += mirrored;
+                } else {
+                    shaded.colour += mirrored;
+                }
             }
         }
         shaded
@@ -772,8 +790,11 @@ impl RayWeight {
 
 /// What shading one surface yields.
 struct Shaded {
-    /// Light from the surface itself, its reflections and bent transmitted rays.
+    /// Light from the surface itself and its finish reflection.
     colour: DVec3,
+    /// Light that came through the surface from beyond: bent transmitted rays, and the
+    /// total internal reflection standing in for them (what an interior's fading dims).
+    through: DVec3,
     /// How the ray goes on when it passes the surface without bending.
     continued: Option<Continued>,
 }
@@ -782,6 +803,7 @@ impl Shaded {
     /// Adds `part` weighted by `share` (one component of a blended texture).
     fn add(&mut self, share: DVec3, part: Shaded) {
         self.colour += share * part.colour;
+        self.through += share * part.through;
         if let Some(part) = part.continued {
             let continued = self.continued.get_or_insert(Continued {
                 filter: DVec3::ZERO,
