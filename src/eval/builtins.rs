@@ -602,7 +602,8 @@ fn format_float(value: f64, width: f64, precision: f64) -> String {
     } else {
         precision.min(MAX_PRECISION) as usize
     };
-    let zero_padded = width < 0.0;
+    // C pads `nan` and `inf` with spaces even when asked for zeros.
+    let zero_padded = width < 0.0 && value.is_finite();
     // Any width over the limit is invalid whatever the value; clamping keeps `format!` safe
     // (a NaN width is 0, as C's conversion to int would make it).
     let width = if width.is_nan() {
@@ -769,6 +770,7 @@ mod tests {
         assert_eq!(format_float(f64::NEG_INFINITY, 6.0, 2.0), "  -inf");
         assert_eq!(format_float(f64::NAN, 0.0, 2.0), "nan");
         assert_eq!(format_float(1.5, f64::NAN, 2.0), "1.50");
+        assert_eq!(format_float(f64::NEG_INFINITY, -6.0, 2.0), "  -inf");
     }
 
     use super::leading_float;
