@@ -227,49 +227,20 @@ fn png_states_gamma(bytes: &[u8]) -> bool {
 /// A Fractint continuous potential file as a 16-bit grey raster: each level is the palette
 /// index in the left half of the GIF times 256 plus the one in the right half.
 fn potential_levels(bytes: &[u8]) -> Result<Raster, String> {
-    let mut options = gif::DecodeOptions::new();
-    options.set_color_output(gif::ColorOutput::Indexed);
-    let mut decoder = options
-        .read_info(std::io::Cursor::new(bytes))
-        .map_err(|error| error.to_string())?;
-    let (screen_width, screen_height) = (u32::from(decoder.width()), u32::from(decoder.height()));
-    let frame = decoder
-        .next_frame_info()
-        .map_err(|error| error.to_string())?
-        .ok_or("the file holds no image")?;
-    let (frame_width, frame_height) = (u32::from(frame.width), u32::from(frame.height));
-    // The decoder puts an interlaced file's rows back in order; POV-Ray does not.
-    let interlaced = frame.interlaced;
-    if (frame_width, frame_height) != (screen_width, screen_height) {
+    // Two stored pixels make one height, so twice the usual limit.
+    let image = gif_file::stored_indices(bytes, 2 * MAX_PIXELS)?;
+    if !image.covers_screen {
         return Err("the image does not cover the whole screen".to_string());
     }
-    // Two stored pixels make one height, so twice the usual limit.
-    if u64::from(frame_width) * u64::from(frame_height) > 2 * MAX_PIXELS {
-        return Err(format!(
-            "a {frame_width}x{frame_height} potential file is larger than durer reads"
-        ));
-    }
-    let mut buffer = vec![0; decoder.buffer_size()];
-    if buffer.len() != frame_width as usize * frame_height as usize {
-        return Err("the image is not one palette index per pixel".to_string());
-    }
-    decoder
-        .read_into_buffer(&mut buffer)
-        .map_err(|error| error.to_string())?;
+    let (frame_width, frame_height) = (image.width, image.height);
     let width = frame_width / 2;
-    if width == 0 || frame_height == 0 {
+    if width == 0 {
         return Err(format!(
             "a {frame_width}x{frame_height} image is too small for a potential file"
         ));
     }
-    let rows: Vec<&[u8]> = buffer.chunks(frame_width as usize).collect();
     let mut pixels = Vec::with_capacity(width as usize * frame_height as usize);
-    for stored in 0..rows.len() {
-        let row = if interlaced {
-            rows[interlaced_row(stored, rows.len())]
-        } else {
-            rows[stored]
-        };
+    for row in image.indices.chunks(frame_width as usize) {
         for column in 0..width as usize {
             let level = u16::from(row[column]) << 8 | u16::from(row[column + width as usize]);
             let value = f32::from(level) / f32::from(u16::MAX);
