@@ -281,16 +281,23 @@ mod tests {
         assert!((value.x - 0.25).abs() < 1e-12, "{value}");
     }
 
-    #[test]
-    fn adaptive_zero_stops_at_uniform_corners() {
-        let mut light = area(9, 9);
-        light.adaptive = Some(0);
+    /// How many point lights an `adaptive` array of `size` × `size` tests for a uniformly
+    /// lit point, and the average it finds.
+    fn tests_for_uniform_light(size: u32, adaptive: u32) -> (usize, DVec3) {
+        let mut light = area(size, size);
+        light.adaptive = Some(adaptive);
         let array = AreaArray::new(&light, DVec3::ZERO, DVec3::new(0.0, -5.0, 0.0));
         let mut tested = 0;
         let value = array.average(&mut |_| {
             tested += 1;
             DVec3::ONE
         });
+        (tested, value)
+    }
+
+    #[test]
+    fn adaptive_zero_stops_at_uniform_corners() {
+        let (tested, value) = tests_for_uniform_light(9, 0);
         assert_eq!(tested, 4);
         assert_eq!(value, DVec3::ONE);
     }
@@ -298,25 +305,11 @@ mod tests {
     #[test]
     fn shared_corners_are_computed_once() {
         // adaptive 1 splits a 9×9 array into four blocks sharing a 3×3 grid of corners.
-        let mut light = area(9, 9);
-        light.adaptive = Some(1);
-        let array = AreaArray::new(&light, DVec3::ZERO, DVec3::new(0.0, -5.0, 0.0));
-        let mut tested = 0;
-        let value = array.average(&mut |_| {
-            tested += 1;
-            DVec3::ONE
-        });
+        let (tested, value) = tests_for_uniform_light(9, 1);
         assert_eq!(tested, 9);
         assert_eq!(value, DVec3::ONE);
         // Past the remembered size every block computes its own corners.
-        let mut large = area(19, 19);
-        large.adaptive = Some(1);
-        let array = AreaArray::new(&large, DVec3::ZERO, DVec3::new(0.0, -5.0, 0.0));
-        let mut tested = 0;
-        array.average(&mut |_| {
-            tested += 1;
-            DVec3::ONE
-        });
+        let (tested, _) = tests_for_uniform_light(19, 1);
         assert_eq!(tested, 16);
     }
 
