@@ -646,12 +646,17 @@ impl<'a> Tracer<'a> {
         // finish reflection has taken all the light there, as `fresnel` does with
         // `conserve_energy`): it fades inside the object like light coming through (measured
         // through a glass prism).
-        let mut totally_reflected =
-            (ratio - 1.0).abs() >= 1e-12 && refract(ray.direction, normal, ratio).is_none();
+        let bends = (ratio - 1.0).abs() >= 1e-12;
+        let bent = if bends {
+            refract(ray.direction, normal, ratio)
+        } else {
+            None
+        };
+        let mut totally_reflected = bends && bent.is_none();
         // Negative transmit subtracts what lies behind; it is weighed by its size.
         let surface_passes = pass.abs().dot(GREY_WEIGHTS) >= self.adc_bailout;
         if pass_weight.0 > 0.0 && pass_weight.0 >= self.adc_bailout && surface_passes {
-            if (ratio - 1.0).abs() < 1e-12 {
+            if !bends {
                 shaded.continued = Some(Continued {
                     filter: pass,
                     weight: pass_weight,
@@ -666,7 +671,7 @@ impl<'a> Tracer<'a> {
                         totally_reflected = true;
                     }
                 }
-            } else if let Some(bent) = refract(ray.direction, normal, ratio) {
+            } else if let Some(bent) = bent {
                 let through = Ray {
                     origin: hit.point,
                     direction: bent,
