@@ -6,13 +6,13 @@
 pub mod accel;
 pub mod diag;
 pub mod eval;
-pub mod function;
 pub mod geometry;
 pub mod hash;
+pub mod math;
 pub mod noise;
-pub mod pattern;
 pub mod raster;
 pub mod render;
 pub mod report;
 pub mod scene;
 pub mod syntax;
+pub mod texture;

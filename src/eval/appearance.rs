@@ -7,10 +7,11 @@ use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::noise::SceneNoiseGenerator;
-use crate::scene::{
-    BlendMap, Colour, CompoundTexture, Pattern, Pigment, PigmentMap, Texture, Transform,
-};
 use crate::syntax::ast::{BlockHead, Expr, Item};
+use crate::{
+    math::{Colour, Transform},
+    texture::{pattern::Pattern, BlendMap, CompoundTexture, Pigment, PigmentMap, Texture},
+};
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -96,7 +97,8 @@ impl Evaluator {
                         // texture: its top layer's), as in POV-Ray (measured with a layered
                         // texture given a `pigment { octaves 3 }` and a finish).
                         "finish" => {
-                            let base = crate::scene::Finish::clone(&top_layer(&texture).finish);
+                            let base =
+                                crate::texture::finish::Finish::clone(&top_layer(&texture).finish);
                             let finish = Arc::new(self.eval_finish(&mut body, Some(base))?);
                             change_top_layer(&mut texture, |top| top.finish = finish);
                         }
@@ -119,7 +121,7 @@ impl Evaluator {
                         "tiles" => {
                             let blocks = self.eval_tiles(&mut body, block.head_span)?;
                             pattern = Some((
-                                self.new_pattern(crate::pattern::PatternKind::Checker),
+                                self.new_pattern(crate::texture::pattern::PatternKind::Checker),
                                 Some(BlendMap::Blocks(blocks)),
                                 block.head_span,
                             ));
@@ -495,9 +497,9 @@ impl Evaluator {
                     Value::Function(literal) => {
                         let function = self.compile_function(&literal)?;
                         pigment = Pigment::Pattern {
-                            pattern: Box::new(
-                                self.new_pattern(crate::pattern::PatternKind::Function(function)),
-                            ),
+                            pattern: Box::new(self.new_pattern(
+                                crate::texture::pattern::PatternKind::Function(function),
+                            )),
                             map: PigmentMap::Colours(grey_ramp()),
                             transform: Transform::IDENTITY,
                         };
@@ -781,11 +783,13 @@ pub(super) fn modified_pattern<'a>(
     match pigment {
         Pigment::Pattern { pattern, .. } => Some(pattern),
         Pigment::Image { image, warps, .. } => Some(warps.get_or_insert_with(|| {
-            carrier(crate::pattern::PatternKind::ImagePattern(image.clone()))
+            carrier(crate::texture::pattern::PatternKind::ImagePattern(
+                image.clone(),
+            ))
         })),
         // The pattern only carries the warps; its kind (any would do) is never evaluated.
         Pigment::Average { warps, .. } => {
-            Some(warps.get_or_insert_with(|| carrier(crate::pattern::PatternKind::Planar)))
+            Some(warps.get_or_insert_with(|| carrier(crate::texture::pattern::PatternKind::Planar)))
         }
         _ => None,
     }

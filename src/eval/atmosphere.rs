@@ -8,8 +8,11 @@ use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::noise::TurbulenceShape;
-use crate::scene::{Colour, Fog, FogKind, FogTurbulence, Rainbow, SkySphere, Transform};
 use crate::syntax::ast::{BlockHead, Item};
+use crate::{
+    math::{Colour, Transform},
+    scene::{Fog, FogKind, FogTurbulence, Rainbow, SkySphere},
+};
 use glam::DVec3;
 use std::rc::Rc;
 

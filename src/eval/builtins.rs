@@ -3,7 +3,7 @@
 use super::c_format::general_format;
 use super::value::{Value, Vector};
 use super::{EvalResult, Evaluator};
-use crate::scene::Transform;
+use crate::math::Transform;
 use crate::syntax::ast::Call;
 use glam::DVec3;
 use std::rc::Rc;

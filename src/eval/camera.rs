@@ -10,10 +10,11 @@ use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{
-    CameraFace, FocalBlur, Mesh, MeshCamera, MeshDistribution, Shape, Transform, UvFace, UvFaces,
-};
 use crate::syntax::ast::{Block, BlockHead, Item};
+use crate::{
+    math::Transform,
+    scene::{CameraFace, FocalBlur, Mesh, MeshCamera, MeshDistribution, Shape, UvFace, UvFaces},
+};
 use glam::DVec3;
 use std::sync::Arc;
 

@@ -5,7 +5,7 @@ use super::stream::array_offset;
 use super::value::{Value, Vector};
 use super::{EvalResult, Evaluator, STRING_SIZE_LIMIT};
 use crate::diag::Span;
-use crate::scene::Colour;
+use crate::math::Colour;
 use crate::syntax::ast::{BinaryOp, Call, Expr, Item, UnaryOp};
 use crate::syntax::symbol::Symbol;
 use glam::DVec3;

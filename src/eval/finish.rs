@@ -12,8 +12,11 @@
 use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
-use crate::scene::{Finish, Interior, Irid};
 use crate::syntax::ast::{BlockHead, Item};
+use crate::{
+    scene::Interior,
+    texture::finish::{Finish, Irid},
+};
 use glam::DVec3;
 use std::rc::Rc;
 

@@ -23,11 +23,14 @@ use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::raster::{load, RasterFormat, StoredEncoding};
-use crate::scene::{
-    CompoundTexture, ImageGamma, ImageMap, ImageProjection, Pattern, PatternKind, Texture,
-    Transform,
-};
 use crate::syntax::ast::{BlockHead, Item};
+use crate::{
+    math::Transform,
+    texture::{
+        pattern::{Pattern, PatternKind},
+        CompoundTexture, ImageGamma, ImageMap, ImageProjection, Texture,
+    },
+};
 use std::sync::Arc;
 
 impl Evaluator {

@@ -10,8 +10,11 @@ use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{AreaLight, LightSource, Object, Spotlight, Transform};
 use crate::syntax::ast::{Block, BlockHead, Item};
+use crate::{
+    math::Transform,
+    scene::{AreaLight, LightSource, Object, Spotlight},
+};
 use glam::DVec3;
 use std::rc::Rc;
 use std::sync::Arc;

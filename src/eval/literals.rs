@@ -3,7 +3,7 @@
 
 use super::value::{Array, Value};
 use super::{EvalResult, Evaluator, ARRAY_SIZE_LIMIT};
-use crate::scene::Colour;
+use crate::math::Colour;
 use crate::syntax::ast::{
     ArrayElement, ArrayInit, ArrayLiteral, ColourComponent, ColourLiteral, ColourType, Item,
 };

@@ -10,8 +10,12 @@ use super::stream::Stream;
 use super::texture_maps::AppearanceMap;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
-use crate::scene::{Colour, Media, Pigment, PigmentMap, Scattering, ScatteringKind, Transform};
 use crate::syntax::ast::{BlockHead, Item};
+use crate::{
+    math::{Colour, Transform},
+    scene::{Media, Scattering, ScatteringKind},
+    texture::{Pigment, PigmentMap},
+};
 use std::rc::Rc;
 
 /// The largest `samples`, `intervals` and `aa_level` accepted (POV-Ray's own limits are

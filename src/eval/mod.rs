@@ -36,12 +36,13 @@ pub use value::{Array, Value, Vector};
 
 use crate::diag::{did_you_mean, Diagnostic, FileId, SourceMap, Span, TraceEntry};
 use crate::hash::FastHash;
-use crate::scene::{
-    Atmosphere, Camera, Colour, GlobalSettings, LightSource, Object, Scene, Shape, Texture,
-    Transform,
-};
 use crate::syntax::ast::Item;
 use crate::syntax::symbol::Symbol;
+use crate::{
+    math::{Colour, Transform},
+    scene::{Atmosphere, Camera, GlobalSettings, LightSource, Object, Scene, Shape},
+    texture::Texture,
+};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
@@ -597,7 +598,7 @@ impl Evaluator {
     }
 
     fn finish_scene(&mut self) -> Scene {
-        let waves = crate::pattern::WaveSources::new(self.settings.number_of_waves);
+        let waves = crate::texture::pattern::WaveSources::new(self.settings.number_of_waves);
         self.settings.wave_sources.fix(waves);
         let wavelengths = self.settings.irid_wavelength;
         self.settings.scene_irid_wavelengths.fix(wavelengths);

@@ -6,8 +6,12 @@ use super::texture_maps::{change_top_layer, layered, top_layer_finish};
 use super::value::{MaterialValue, Value};
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{CsgOperation, Interior, LightGroup, Object, Shape, Texture, Transform};
 use crate::syntax::ast::{Block, Item};
+use crate::{
+    math::Transform,
+    scene::{CsgOperation, Interior, LightGroup, Object, Shape},
+    texture::Texture,
+};
 use glam::{DAffine3, DMat3, DVec3};
 use std::rc::Rc;
 use std::sync::Arc;

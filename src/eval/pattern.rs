@@ -2,7 +2,7 @@
 //! `normal`, `texture` and `density` blocks, and `warp { }` blocks.
 //!
 //! In: a keyword (or block) already taken from the owner's item stream. Out: a
-//! [`PatternSpec`] or a modification of one. Holds: the owner (appearance.rs) parses maps,
+//! [`Pattern`] or a modification of one. Holds: the owner (appearance.rs) parses maps,
 //! block lists and transforms; everything specific to one pattern is parsed here. A
 //! pattern without its own noise generator gets the global one in force when it is parsed
 //! (patterns without their own follow the scene's last one, read when evaluated); `ripples` and `waves`
@@ -17,12 +17,12 @@ use super::{EvalResult, Evaluator};
 use crate::diag::Span;
 use crate::geometry::World;
 use crate::noise::NoiseGenerator;
-use crate::pattern::{
-    default_colour_map, Altitude, BlackHole, Colouring, Crackle, DensityFile, Fractal, FractalKind,
-    MagnetType, Mapping, MappingKind, NoiseChoice, PatternKind, PatternSpec, Pavement,
-    PavementPolygon, Repeat, Slope, Warp, WaveShape,
-};
 use crate::syntax::ast::{Block, BlockHead, Expr, Item};
+use crate::texture::pattern::{
+    default_colour_map, Altitude, BlackHole, Colouring, Crackle, DensityFile, Fractal, FractalKind,
+    MagnetType, Mapping, MappingKind, NoiseChoice, Pattern, PatternKind, Pavement, PavementPolygon,
+    Repeat, Slope, Warp, WaveShape,
+};
 
 /// Largest fractal iteration count accepted (POV-Ray allows up to 2^32 − 1; more than this
 /// would only make a render hang).
@@ -37,7 +37,7 @@ impl Evaluator {
         word: &str,
         span: Span,
         stream: &mut Stream,
-    ) -> EvalResult<Option<PatternSpec>> {
+    ) -> EvalResult<Option<Pattern>> {
         let kind = match word {
             "agate" => PatternKind::Agate { agate_turb: 1.0 },
             "aoi" => PatternKind::Aoi,
@@ -137,9 +137,9 @@ impl Evaluator {
         span: Span,
         stream: &mut Stream,
         owner: &str,
-    ) -> EvalResult<Option<PatternSpec>> {
+    ) -> EvalResult<Option<Pattern>> {
         let spec = self.pattern_keyword(word, span, stream)?;
-        if let Some(PatternSpec {
+        if let Some(Pattern {
             kind: PatternKind::Facets { .. },
             ..
         }) = spec
@@ -160,7 +160,7 @@ impl Evaluator {
     pub(crate) fn block_pattern(
         &mut self,
         item: &Item,
-    ) -> EvalResult<Option<(PatternSpec, Option<Stream>)>> {
+    ) -> EvalResult<Option<(Pattern, Option<Stream>)>> {
         if let Item::Expr(Expr::Function(literal)) = item {
             let function = self.compile_function(literal)?;
             return Ok(Some((
@@ -281,7 +281,7 @@ impl Evaluator {
         word: &str,
         span: Span,
         stream: &mut Stream,
-        pattern: &mut PatternSpec,
+        pattern: &mut Pattern,
     ) -> EvalResult<bool> {
         match word {
             "turbulence" => pattern.turbulence.amount = self.expect_amount(stream)?,
@@ -320,7 +320,7 @@ impl Evaluator {
         word: &str,
         span: Span,
         stream: &mut Stream,
-        pattern: &mut PatternSpec,
+        pattern: &mut Pattern,
     ) -> EvalResult<bool> {
         let owner = match word {
             "agate_turb" => "agate",
@@ -437,7 +437,7 @@ impl Evaluator {
     pub(crate) fn pattern_block(
         &mut self,
         block: &Block,
-        pattern: &mut PatternSpec,
+        pattern: &mut Pattern,
     ) -> EvalResult<bool> {
         if !matches!(&block.head, BlockHead::Word(w) if &**w == "warp") {
             return Ok(false);
@@ -620,9 +620,11 @@ impl Evaluator {
             }
             "number_of_tiles" => pavement.tiles = number.trunc().clamp(0.0, 255.0) as u8,
             "pattern" => pavement.pattern = number.trunc().clamp(0.0, 255.0) as u8,
-            "form" => pavement.form = crate::pattern::pavement_corner_setting(number, 4),
-            "exterior" => pavement.exterior = crate::pattern::pavement_corner_setting(number, 3),
-            _ => pavement.interior = crate::pattern::pavement_corner_setting(number, 3),
+            "form" => pavement.form = crate::texture::pattern::pavement_corner_setting(number, 4),
+            "exterior" => {
+                pavement.exterior = crate::texture::pattern::pavement_corner_setting(number, 3)
+            }
+            _ => pavement.interior = crate::texture::pattern::pavement_corner_setting(number, 3),
         }
         let max_tiles = pavement.polygon.max_tiles();
         if !(1..=max_tiles).contains(&pavement.tiles) {
@@ -761,8 +763,8 @@ impl Evaluator {
     }
 
     /// A new pattern of `kind` following the scene's global noise generator.
-    pub(crate) fn new_pattern(&self, kind: PatternKind) -> PatternSpec {
-        let mut pattern = PatternSpec::new(kind);
+    pub(crate) fn new_pattern(&self, kind: PatternKind) -> Pattern {
+        let mut pattern = Pattern::new(kind);
         pattern.use_scene_noise_generator(&self.settings.scene_noise_generator);
         pattern
     }
@@ -796,11 +798,11 @@ impl Evaluator {
     /// `global_settings { number_of_waves N }`: how many wave sources the scene's `ripples`
     /// and `waves` patterns use. As povray, N is truncated and a value
     /// below 1 becomes 1 with a warning; durer also limits it to
-    /// [`crate::pattern::MAX_WAVE_COUNT`] (with a warning).
+    /// [`crate::texture::pattern::MAX_WAVE_COUNT`] (with a warning).
     pub(crate) fn number_of_waves(&mut self, stream: &mut Stream) -> EvalResult<()> {
         let (value, span) = self.expect_value(stream, "a number of waves")?;
         let requested = self.to_float(value, span)?.trunc();
-        let limit = crate::pattern::MAX_WAVE_COUNT;
+        let limit = crate::texture::pattern::MAX_WAVE_COUNT;
         let count = if requested.is_nan() || requested < 1.0 {
             self.warn(span, "number_of_waves must be greater than 0; 1 is used");
             1

@@ -12,7 +12,7 @@ use crate::diag::Span;
 use crate::syntax::ast::{Argument, Call, Expr, Item};
 use std::rc::Rc;
 
-pub use crate::function::spline::{Spline, SplineKind};
+pub use crate::texture::function::spline::{Spline, SplineKind};
 
 impl Evaluator {
     /// Evaluates the body of a `spline { ... }` block.

@@ -10,10 +10,11 @@ use super::stream::Stream;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::Span;
-use crate::scene::{
-    BlendMap, CompoundTexture, Normal, NormalSource, Pigment, SlopeEntry, Texture, Transform,
-};
 use crate::syntax::ast::{Block, BlockHead, Item};
+use crate::{
+    math::Transform,
+    texture::{BlendMap, CompoundTexture, Normal, NormalSource, Pigment, SlopeEntry, Texture},
+};
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -667,7 +668,7 @@ pub(crate) fn change_top_layer(texture: &mut Texture, change: impl FnOnce(&mut T
 }
 
 /// The finish of the layer [`change_top_layer`] changes.
-pub(crate) fn top_layer_finish(texture: &Texture) -> &crate::scene::Finish {
+pub(crate) fn top_layer_finish(texture: &Texture) -> &crate::texture::finish::Finish {
     &top_layer(texture).finish
 }
 

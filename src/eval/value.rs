@@ -1,9 +1,11 @@
 //! Runtime values of the scene language.
 
-use crate::scene::{
-    Camera, Colour, Finish, Interior, LightSource, Normal, Object, Pigment, Texture, Transform,
-};
 use crate::syntax::ast::{FunctionLiteral, MacroDefinition};
+use crate::{
+    math::{Colour, Transform},
+    scene::{Camera, Interior, LightSource, Object},
+    texture::{finish::Finish, Normal, Pigment, Texture},
+};
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -75,7 +77,7 @@ pub struct UserFunction {
     /// Compiled when the literal was evaluated, so its identifiers mean what they meant there
     /// (as in POV-Ray); the diagnostic when it could not be compiled, reported where the
     /// function is used.
-    pub compiled: Result<Arc<crate::function::Function>, Box<crate::diag::Diagnostic>>,
+    pub compiled: Result<Arc<crate::texture::function::Function>, Box<crate::diag::Diagnostic>>,
 }
 
 /// A vector with 2 to 5 components.

@@ -8,8 +8,11 @@ use super::texture_maps::APPEARANCE_BLOCKS;
 use super::value::Value;
 use super::{EvalResult, Evaluator};
 use crate::diag::did_you_mean;
-use crate::scene::{Camera, CylinderKind, Projection, Transform};
 use crate::syntax::ast::{Block, BlockHead, Item};
+use crate::{
+    math::Transform,
+    scene::{Camera, CylinderKind, Projection},
+};
 use glam::DVec3;
 use std::rc::Rc;
 use std::sync::Arc;

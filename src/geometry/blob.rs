@@ -461,7 +461,7 @@ impl Blob {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::{BlobComponent, Transform};
+    use crate::{math::Transform, scene::BlobComponent};
 
     fn sphere(centre: DVec3, radius: f64, strength: f64) -> BlobComponent {
         BlobComponent {

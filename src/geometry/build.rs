@@ -19,7 +19,11 @@ use super::uv::texture_uses_uv;
 use super::Material;
 use crate::accel::Aabb;
 use crate::hash::FastHash;
-use crate::scene::{CsgOperation, Interior, Mesh, Object, Shape, Texture, Transform};
+use crate::{
+    math::Transform,
+    scene::{CsgOperation, Interior, Mesh, Object, Shape},
+    texture::Texture,
+};
 use glam::DAffine3;
 use std::borrow::Cow;
 use std::collections::HashMap;

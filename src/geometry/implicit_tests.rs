@@ -6,11 +6,11 @@ use super::isosurface::Isosurface;
 use super::roots::Roots;
 use super::sphere_sweep::SphereSweep;
 use super::test_support::assert_crossings_flip_inside;
-use crate::function::{Binary, Function, Internal, Node};
 use crate::scene::{
     Container, HeightField as HeightFieldSpec, Isosurface as IsosurfaceSpec,
     SphereSweep as SphereSweepSpec, SweepSpline,
 };
+use crate::texture::function::{Binary, Function, Internal, Node};
 use glam::DVec3;
 use std::sync::Arc;
 

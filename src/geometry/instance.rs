@@ -16,7 +16,10 @@ use super::polygon::interpolated_normal;
 use super::uv::{barycentric, corner_weighted};
 use super::{HitDetails, Ray};
 use crate::accel::{Aabb, Bvh};
-use crate::scene::{Mesh, Transform, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
+use crate::{
+    math::Transform,
+    scene::{Mesh, DEFAULT_TRIANGLE_UVS, FLAT_FACE},
+};
 use glam::{DAffine3, DVec2, DVec3};
 use std::sync::Arc;
 

@@ -14,8 +14,8 @@
 
 use super::roots::{Roots, MAX_ROOTS};
 use crate::accel::Aabb;
-use crate::function::Function;
 use crate::scene::{Container, Isosurface as IsosurfaceSpec};
+use crate::texture::function::Function;
 use glam::DVec3;
 use std::sync::Arc;
 

@@ -30,7 +30,10 @@ use super::torus::{Torus, TorusShape};
 use super::uv::{barycentric, corner_weighted, shape_uv};
 use super::{HitDetails, Ray};
 use crate::accel::Aabb;
-use crate::scene::{Mesh, MeshTriangle, Shape, Transform};
+use crate::{
+    math::Transform,
+    scene::{Mesh, MeshTriangle, Shape},
+};
 use glam::{DAffine3, DVec2, DVec3};
 use std::sync::Arc;
 

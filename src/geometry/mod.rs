@@ -49,7 +49,7 @@ pub use roots::MAX_ROOTS as MAX_CROSSINGS;
 pub use spindle::lemon_smallest_inner_radius;
 pub use world::World;
 
-use crate::scene::{Interior, Texture};
+use crate::{scene::Interior, texture::Texture};
 use glam::{DVec2, DVec3};
 use std::sync::Arc;
 

@@ -131,14 +131,14 @@ fn mesh_instances_share_geometry_and_keep_their_transforms() {
         normals: None,
     }]));
     let mut near = Object::new(Shape::Mesh(Arc::clone(&mesh)));
-    near.set_transform(crate::scene::Transform::translation(DVec3::new(
+    near.set_transform(crate::math::Transform::translation(DVec3::new(
         0.0, 0.0, 1.0,
     )));
     let mut far = Object::new(Shape::Mesh(Arc::clone(&mesh)));
     far.set_transform(
-        crate::scene::Transform::scaling(DVec3::new(2.0, 2.0, 2.0))
+        crate::math::Transform::scaling(DVec3::new(2.0, 2.0, 2.0))
             .unwrap()
-            .then(&crate::scene::Transform::translation(DVec3::new(
+            .then(&crate::math::Transform::translation(DVec3::new(
                 0.0, 0.0, 3.0,
             ))),
     );
@@ -168,7 +168,10 @@ fn mesh_instances_share_geometry_and_keep_their_transforms() {
 /// slots 1, 2, 1 (two marked textures), with a uv-mapped texture of its own.
 fn textured_triangle_mesh() -> Arc<Mesh> {
     use super::test_support::marked_texture;
-    use crate::scene::{Colour, Pigment, Texture};
+    use crate::{
+        math::Colour,
+        texture::{Pigment, Texture},
+    };
     let mut mesh = Mesh::from_triangles(&[MeshTriangle {
         corners: [
             DVec3::new(-1.0, -1.0, 0.0),
@@ -214,9 +217,7 @@ fn mesh_textures_are_shared_between_placements() {
     let mesh = textured_triangle_mesh();
     let placed = |z: f64| {
         let mut object = Object::new(Shape::Mesh(Arc::clone(&mesh)));
-        object.set_transform(crate::scene::Transform::translation(DVec3::new(
-            0.0, 0.0, z,
-        )));
+        object.set_transform(crate::math::Transform::translation(DVec3::new(0.0, 0.0, z)));
         object
     };
     let in_csg = csg(

@@ -18,8 +18,8 @@
 use super::isosurface::line_in_container;
 use super::roots::Roots;
 use crate::accel::Aabb;
-use crate::function::Function;
 use crate::scene::{Container, Parametric as ParametricSpec};
+use crate::texture::function::Function;
 use glam::{DVec2, DVec3};
 use std::sync::Arc;
 
@@ -457,7 +457,7 @@ fn container_bounds(container: &Container) -> Aabb {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::function::{Binary, Node};
+    use crate::texture::function::{Binary, Node};
 
     /// The plane sheet (u, v, 0.5 u) over the uv square [-1, 1]².
     fn sheet() -> ParametricSurface {

@@ -6,7 +6,7 @@ use super::leaf::Leaf;
 use super::roots::Roots;
 use super::test_support::Random;
 use super::Ray;
-use crate::scene::{Shape, Transform};
+use crate::{math::Transform, scene::Shape};
 use glam::{DAffine3, DVec3};
 
 /// How far before and after a crossing the inside test is probed.

@@ -5,7 +5,11 @@
 //! Holds: everything is deterministic for a given seed.
 
 use super::{Ray, SurfaceHit, World};
-use crate::scene::{Colour, CsgOperation, Object, Pigment, Scene, Shape, Texture, Transform};
+use crate::{
+    math::{Colour, Transform},
+    scene::{CsgOperation, Object, Scene, Shape},
+    texture::{Pigment, Texture},
+};
 use glam::DVec3;
 use std::sync::Arc;
 

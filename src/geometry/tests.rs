@@ -4,9 +4,13 @@
 use super::test_support::{all_hits, csg, mark_of, marked, random_csg, random_shape, scene_of};
 use super::test_support::{marked_texture, Random};
 use super::*;
-use crate::scene::{Colour, Transform};
-use crate::scene::{
-    CsgOperation, Interior, Object, Pattern, PatternKind, Pigment, PigmentMap, Shape,
+use crate::math::{Colour, Transform};
+use crate::{
+    scene::{CsgOperation, Interior, Object, Shape},
+    texture::{
+        pattern::{Pattern, PatternKind},
+        Pigment, PigmentMap,
+    },
 };
 use glam::DAffine3;
 

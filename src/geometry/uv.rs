@@ -9,7 +9,9 @@
 
 use super::leaf::LocalShape;
 use crate::accel::Aabb;
-use crate::scene::{BlendMap, CompoundTexture, Normal, NormalSource, Pigment, PigmentMap, Texture};
+use crate::texture::{
+    BlendMap, CompoundTexture, Normal, NormalSource, Pigment, PigmentMap, Texture,
+};
 use glam::{DVec2, DVec3};
 use std::f64::consts::{PI, TAU};
 

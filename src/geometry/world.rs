@@ -81,6 +81,13 @@ impl Primitive {
     }
 }
 
+/// The `object` pattern's view of a built world: inside any of its objects.
+impl crate::texture::pattern::Solid for World {
+    fn contains(&self, point: DVec3) -> bool {
+        self.inside(point)
+    }
+}
+
 impl World {
     /// Prepares every object of `scene` for ray queries.
     pub fn build(scene: &Scene) -> World {

@@ -47,9 +47,12 @@
 //!   `C · p · (1 − filter · w · (1 − R)) + w · R` (measured, 16-bit renders).
 
 use super::antialias::unit_hash;
-use super::pattern::{colour_map_lookup, pigment_colour};
 use crate::noise::NoiseGenerator;
-use crate::scene::{Atmosphere, Colour, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
+use crate::texture::pigment::{colour_map_lookup, pigment_colour};
+use crate::{
+    math::Colour,
+    scene::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere},
+};
 use glam::DVec3;
 
 /// Colours a ray gets from the atmosphere.
@@ -337,7 +340,7 @@ fn legacy_sky_colour(sky: &SkySphere, direction: DVec3, background: DVec3) -> DV
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::Transform;
+    use crate::math::Transform;
 
     fn fog(kind: FogKind, colour: Colour) -> Fog {
         Fog {
@@ -419,8 +422,8 @@ mod tests {
     fn sky_layers_show_through() {
         let sky = SkySphere {
             pigments: vec![
-                crate::scene::Pigment::Solid(Colour::rgb(0.0, 0.0, 1.0)),
-                crate::scene::Pigment::Solid(Colour::rgbft(1.0, 0.0, 0.0, 0.0, 0.5)),
+                crate::texture::Pigment::Solid(Colour::rgb(0.0, 0.0, 1.0)),
+                crate::texture::Pigment::Solid(Colour::rgbft(1.0, 0.0, 0.0, 0.0, 0.5)),
             ],
             emission: DVec3::ONE,
             transform: Transform::IDENTITY,
@@ -434,8 +437,8 @@ mod tests {
     /// layer hides the background.
     #[test]
     fn legacy_sky_filter_layers_stack_as_measured() {
-        let grey_filter = crate::scene::Pigment::Solid(Colour::rgbft(0.5, 0.5, 0.5, 0.5, 0.0));
-        let grey_transmit = crate::scene::Pigment::Solid(Colour::rgbft(0.5, 0.5, 0.5, 0.0, 0.5));
+        let grey_filter = crate::texture::Pigment::Solid(Colour::rgbft(0.5, 0.5, 0.5, 0.5, 0.0));
+        let grey_transmit = crate::texture::Pigment::Solid(Colour::rgbft(0.5, 0.5, 0.5, 0.0, 0.5));
         let background = DVec3::new(0.2, 0.4, 0.6);
         let sky = |pigments| SkySphere {
             pigments,

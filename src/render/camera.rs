@@ -46,9 +46,12 @@
 //! pattern evaluated at the image point (u, v, 0); the camera's transformations do not move
 //! the pattern.
 
-use super::normal::perturbed_normal;
 use crate::geometry::Ray;
-use crate::scene::{Camera, CylinderKind, Normal, Projection};
+use crate::texture::normal::perturbed_normal;
+use crate::{
+    scene::{Camera, CylinderKind, Projection},
+    texture::Normal,
+};
 use glam::{DVec2, DVec3};
 use std::f64::consts::PI;
 

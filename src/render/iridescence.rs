@@ -15,7 +15,7 @@
 //! the interference colour of a lit plane; textures/pigments/irid.pov then matches exactly).
 
 use crate::noise::{turbulence, TurbulenceShape};
-use crate::scene::Irid;
+use crate::texture::finish::Irid;
 use glam::DVec3;
 use std::f64::consts::TAU;
 

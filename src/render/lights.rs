@@ -33,12 +33,15 @@
 use super::area_light::AreaArray;
 use super::atmosphere::fog_transmittance;
 use super::media::transmittance;
-use super::normal::perturbed_normal;
-use super::pattern::hit_surface;
 use super::reflection::interior_fade;
 use super::texture::surface_pigment;
 use crate::geometry::{Material, Ray, SurfaceHit, World};
-use crate::scene::{Colour, Fog, LightPhotons, LightSource, Media, Scene, Spotlight};
+use crate::texture::normal::perturbed_normal;
+use crate::texture::pigment::hit_surface;
+use crate::{
+    math::Colour,
+    scene::{Fog, LightPhotons, LightSource, Media, Scene, Spotlight},
+};
 use glam::DVec3;
 
 /// A light ready for rendering: the source and what its shadow tests need.

@@ -40,9 +40,9 @@
 
 use super::antialias::mix64;
 use super::lights::{incoming, light_filter, SceneLight};
-use super::pattern::pigment_colour;
 use crate::geometry::World;
 use crate::scene::{LightGroup, Media, ScatteringKind};
+use crate::texture::pigment::pigment_colour;
 use glam::DVec3;
 
 /// How far a ray that hits nothing runs through atmospheric media (measured).

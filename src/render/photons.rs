@@ -55,13 +55,13 @@
 
 use super::antialias::unit_hash;
 use super::lights::{fade_factor, incoming};
-use super::pattern::hit_surface;
 use super::reflection::{interior_fade, reflection_colour};
 use super::shading::mirror;
 use super::texture::surface_pigment;
 use super::trace::{refract, sanitise_ior, SURFACE_EPSILON};
 use crate::geometry::{Ray, World};
 use crate::scene::{LightSource, PhotonDensity, PhotonSettings, Scene};
+use crate::texture::pigment::hit_surface;
 use glam::DVec3;
 use std::cell::{Cell, RefCell};
 use std::f64::consts::{PI, TAU};

@@ -22,7 +22,7 @@
 //!   and a total internal reflection, not the finish reflection nor the surface's light.
 
 use super::shading::highlight_tint;
-use crate::scene::{Finish, Interior};
+use crate::{scene::Interior, texture::finish::Finish};
 use glam::DVec3;
 
 /// `fade_power` from which POV-Ray fades exponentially.

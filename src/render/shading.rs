@@ -21,7 +21,7 @@ use super::area_light::{point_random, AreaArray, Sampled};
 use super::iridescence::{irid_thickness, iridescence};
 use super::lights::{incoming, light_filter, Incoming, SceneLight};
 use crate::geometry::World;
-use crate::scene::{Colour, Finish, LightGroup};
+use crate::{math::Colour, scene::LightGroup, texture::finish::Finish};
 use glam::DVec3;
 use std::f64::consts::FRAC_PI_2;
 use std::ops::{Add, Div};

@@ -2,9 +2,14 @@
 //! produce (3×3 renders with `povray +W3 +H3 -GA`), and determinism across thread counts.
 
 use super::*;
-use crate::scene::{
-    Camera, Colour, Finish, GlobalSettings, Interior, LightSource, Object, Pattern, PatternKind,
-    Pigment, PigmentMap, Shape, Texture, Transform,
+use crate::{
+    math::{Colour, Transform},
+    scene::{Camera, GlobalSettings, Interior, LightSource, Object, Shape},
+    texture::{
+        finish::Finish,
+        pattern::{Pattern, PatternKind},
+        Pigment, PigmentMap, Texture,
+    },
 };
 use glam::DVec3;
 use std::sync::atomic::{AtomicU32, Ordering};

@@ -19,13 +19,16 @@
 //!   the surface's (measured: `texture_map { [0 T] [1 V] }`, T a `slope` map and V bumpy,
 //!   gives T a bumpy slope boundary; with the entries swapped T's boundary stays smooth).
 
-use super::image_map::material_choice;
 use super::lights::transmission;
-use super::normal::perturbed_normal_at;
-use super::pattern::{blend_position, block_index, pigment_colour_at};
 use crate::geometry::SurfaceHit;
-use crate::pattern::SurfaceContext;
-use crate::scene::{BlendMap, Colour, CompoundTexture, Normal, Pigment, Texture};
+use crate::texture::image_map::material_choice;
+use crate::texture::normal::perturbed_normal_at;
+use crate::texture::pattern::SurfaceContext;
+use crate::texture::pigment::{blend_position, block_index, pigment_colour_at};
+use crate::{
+    math::Colour,
+    texture::{BlendMap, CompoundTexture, Normal, Pigment, Texture},
+};
 use glam::DVec3;
 use std::cell::Cell;
 
@@ -60,7 +63,7 @@ impl Place<'_> {
     /// The surface a map's `pattern` sees: the surface itself, or for a surface-dependent
     /// pattern after a plain texture with a `normal` was visited, the surface with that
     /// texture's perturbed normal.
-    fn surface_for(&self, pattern: &crate::scene::Pattern) -> SurfaceContext {
+    fn surface_for(&self, pattern: &crate::texture::pattern::Pattern) -> SurfaceContext {
         match self.last_normal.get() {
             Some(normal) if pattern.depends_on_surface() => SurfaceContext {
                 normal: perturbed_normal_at(normal, self.hit.point, self.hit.uv, self.surface),

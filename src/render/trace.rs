@@ -44,15 +44,15 @@ use super::dispersion::Bands;
 use super::encoding::is_legacy_scene;
 use super::lights::{prepare_lights, transmission, SceneLight};
 use super::media::{ActiveMedia, MediaShader, Stretch};
-use super::normal::perturbed_normal_at;
-use super::pattern::hit_surface;
 use super::photons::PhotonMap;
 use super::radiosity::{Gathered, Radiosity};
 use super::reflection::{apply_exponent, interior_fade, reflection_colour};
 use super::shading::{local_light, mirror, SurfaceSample};
 use super::texture::{for_each_component, pigment_at_hit};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
-use crate::scene::{Scene, Texture};
+use crate::texture::normal::perturbed_normal_at;
+use crate::texture::pigment::hit_surface;
+use crate::{scene::Scene, texture::Texture};
 use glam::DVec3;
 use std::cell::Cell;
 

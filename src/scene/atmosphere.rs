@@ -3,8 +3,11 @@
 //! In: nothing (data definition). Out: [`Atmosphere`] and its parts. Holds: values are final
 //! (defaults filled in, transformations folded in); angles in degrees.
 
-use super::{Colour, Pigment, Transform};
 use crate::noise::TurbulenceShape;
+use crate::{
+    math::{Colour, Transform},
+    texture::Pigment,
+};
 use glam::DVec3;
 
 /// Everything between the camera and the objects, and what lies beyond them.

@@ -3,8 +3,8 @@
 //! In: nothing (data definition). Out: [`Camera`], [`Projection`], [`FocalBlur`]. Holds:
 //! vectors are final (look_at, angle, sky and transformations applied); angles in degrees.
 
-use super::texture::Normal;
 use super::uv_faces::UvFaces;
+use crate::texture::Normal;
 use glam::DVec3;
 use std::sync::Arc;
 

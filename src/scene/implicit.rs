@@ -4,7 +4,7 @@
 //! In: nothing (data definitions). Out: [`Isosurface`], [`HeightField`], [`SphereSweep`].
 //! Holds: every value is final, with POV-Ray's defaults filled in.
 
-use crate::function::Function;
+use crate::texture::function::Function;
 use glam::DVec3;
 use std::sync::Arc;
 

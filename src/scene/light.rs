@@ -4,7 +4,8 @@
 //! Holds: positions and directions in world space (in the carrying object's space for the
 //! lights an object holds, `Object::lights`).
 
-use super::{Object, Transform};
+use super::Object;
+use crate::math::Transform;
 use glam::DVec3;
 use std::sync::Arc;
 

@@ -5,7 +5,7 @@
 //! (defaults filled in, counts clamped to usable ranges); density pigments are in the space
 //! of whatever holds the media (world space once the scene is built).
 
-use super::{Pigment, Transform};
+use crate::{math::Transform, texture::Pigment};
 use glam::DVec3;
 
 /// One `media { }` block.

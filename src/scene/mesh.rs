@@ -5,7 +5,7 @@
 //! lists (`face_normals`, `face_uvs`, `face_textures`) are either empty or hold one entry per
 //! face, so a mesh without normals, uv coordinates or textures costs nothing for them.
 
-use super::Texture;
+use crate::texture::Texture;
 use glam::{DVec2, DVec3};
 use std::sync::Arc;
 

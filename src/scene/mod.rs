@@ -5,9 +5,8 @@
 
 mod atmosphere;
 mod camera;
-mod colour;
-mod finish;
 mod implicit;
+mod interior;
 mod julia;
 mod light;
 mod light_group;
@@ -17,8 +16,6 @@ mod parametric;
 mod photons;
 mod radiosity;
 mod spindle;
-mod texture;
-mod transform;
 mod uv_faces;
 
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
@@ -26,9 +23,8 @@ pub use camera::{
     Camera, CameraFace, CylinderKind, FocalBlur, MeshCamera, MeshDistribution, Projection,
     DEFAULT_ANGLE,
 };
-pub use colour::Colour;
-pub use finish::{Finish, Interior, Irid, SceneIridWavelengths, DEFAULT_IRID_WAVELENGTHS};
 pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
+pub use interior::Interior;
 pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, LightSource, Spotlight};
 pub use light_group::{separate_light_groups, LightGroup};
@@ -38,13 +34,11 @@ pub use parametric::Parametric;
 pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, PhotonSettings};
 pub use radiosity::RadiositySettings;
 pub use spindle::Lemon;
-pub use texture::{
-    BlendMap, CompoundTexture, ImageGamma, ImageMap, ImageProjection, Normal, NormalSource,
-    Pattern, PatternKind, Pigment, PigmentMap, SlopeEntry, Texture,
-};
-pub use transform::Transform;
 pub use uv_faces::{UvFace, UvFaces, UvHit};
 
+use crate::math::{Colour, Transform};
+use crate::texture::finish::SceneIridWavelengths;
+use crate::texture::Texture;
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -95,7 +89,7 @@ pub struct GlobalSettings {
     pub number_of_waves: usize,
     /// The wave sources every `ripples` and `waves` pattern of the scene shares (fixed
     /// from `number_of_waves` when parsing ends).
-    pub wave_sources: crate::pattern::SceneWaveSources,
+    pub wave_sources: crate::texture::pattern::SceneWaveSources,
     /// The `radiosity { }` block, when given: indirect diffuse light is gathered, and in
     /// 3.7 scenes every finish's ambient term counts as zero.
     pub radiosity: Option<RadiositySettings>,
@@ -114,10 +108,10 @@ impl Default for GlobalSettings {
             ambient_light: DVec3::ONE,
             noise_generator: crate::noise::NoiseGenerator::default(),
             scene_noise_generator: crate::noise::SceneNoiseGenerator::for_scene(),
-            irid_wavelength: finish::DEFAULT_IRID_WAVELENGTHS,
+            irid_wavelength: crate::texture::finish::DEFAULT_IRID_WAVELENGTHS,
             scene_irid_wavelengths: SceneIridWavelengths::for_scene(),
             number_of_waves: 10,
-            wave_sources: crate::pattern::SceneWaveSources::default(),
+            wave_sources: crate::texture::pattern::SceneWaveSources::default(),
             radiosity: None,
             photons: None,
         }

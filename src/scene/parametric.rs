@@ -4,7 +4,7 @@
 //! POV-Ray's defaults filled in.
 
 use super::Container;
-use crate::function::Function;
+use crate::texture::function::Function;
 use glam::DVec2;
 use std::sync::Arc;
 

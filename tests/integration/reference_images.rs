@@ -10,7 +10,8 @@
 //!
 //! Failing renders, the reference and a diff image (red: pixel over the threshold) are
 //! written to `target/reference-failures/`. Set `DURER_REFERENCE_FILTER=sphere` to run only
-//! scenes whose name contains `sphere`.
+//! scenes whose name contains `sphere`, and `DURER_REFERENCE_KEEP=DIR` to keep every durer
+//! render in `DIR` (to check that a change leaves every image byte-identical).
 
 use std::fmt::Write as _;
 use std::fs;
@@ -315,6 +316,11 @@ fn check_scene(
             )
         })?
         .to_rgb8();
+    if let Some(keep) = std::env::var_os("DURER_REFERENCE_KEEP") {
+        // Best effort, like the failure images: a debugging aid.
+        let _ = fs::create_dir_all(&keep);
+        let _ = fs::copy(&output, Path::new(&keep).join(format!("{name}.png")));
+    }
 
     let save_failure = |diff: Option<RgbImage>| {
         // Best effort: a debugging aid must not hide the real failure.

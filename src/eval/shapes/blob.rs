@@ -6,8 +6,11 @@
 
 use super::super::stream::Stream;
 use super::super::{EvalResult, Evaluator};
-use crate::scene::{Blob, BlobComponent, BlobKind, Shape, Transform};
 use crate::syntax::ast::{BlockHead, Item};
+use crate::{
+    math::Transform,
+    scene::{Blob, BlobComponent, BlobKind, Shape},
+};
 use std::sync::Arc;
 
 impl Evaluator {

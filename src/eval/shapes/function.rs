@@ -1,5 +1,5 @@
 //! Compiling user functions (`function { .. }`, `function(a, b) { .. }`, and the pattern,
-//! pigment, transform and spline functions) into the render-time form of [`crate::function`],
+//! pigment, transform and spline functions) into the render-time form of [`crate::texture::function`],
 //! and calling them from scene code.
 //!
 //! In: a function literal and the evaluator's current declarations. Out: an
@@ -13,14 +13,14 @@
 use crate::eval::stream::Stream;
 use crate::eval::value::{UserFunction, Value, Vector};
 use crate::eval::{EvalResult, Evaluator};
-use crate::function::{
-    Binary, Body, Component, Function, Internal, Node, Output, Unary, MAX_PARAMETERS,
-};
-use crate::scene::Pigment;
 use crate::syntax::ast::{
     Argument, BinaryOp, BlockHead, Call, Expr, FunctionBody, FunctionLiteral, Item, UnaryOp,
 };
 use crate::syntax::symbol::Symbol;
+use crate::texture::function::{
+    Binary, Body, Component, Function, Internal, Node, Output, Unary, MAX_PARAMETERS,
+};
+use crate::texture::Pigment;
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -614,7 +614,7 @@ impl Evaluator {
         let arguments = &arguments[..compiled.arity()];
         Ok(match compiled.output() {
             Output::Float => Value::Float(compiled.eval(arguments)),
-            Output::Colour => Value::Colour(crate::scene::Colour::from_array(
+            Output::Colour => Value::Colour(crate::math::Colour::from_array(
                 compiled.eval_vector(arguments),
             )),
             Output::Vector(len) => {

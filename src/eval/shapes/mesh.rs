@@ -11,8 +11,11 @@ use super::super::value::Value;
 use super::super::{EvalResult, Evaluator};
 use super::{block_word, LIST_LIMIT};
 use crate::diag::Span;
-use crate::scene::{Mesh, Shape, Texture, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 use crate::syntax::ast::{Block, Item};
+use crate::{
+    scene::{Mesh, Shape, DEFAULT_TRIANGLE_UVS, FLAT_FACE},
+    texture::Texture,
+};
 use glam::{DVec2, DVec3};
 use std::collections::HashMap;
 use std::sync::Arc;

@@ -16,8 +16,11 @@
 //! - `average`: the weighted mean of the entries' colours (weights divided by their sum).
 
 use super::image_map::image_colour;
-use crate::pattern::SurfaceContext;
-use crate::scene::{Colour, Pattern, Pigment, PigmentMap};
+use crate::texture::pattern::SurfaceContext;
+use crate::{
+    math::Colour,
+    texture::{pattern::Pattern, Pigment, PigmentMap},
+};
 use glam::DVec3;
 
 /// How far nested pigments (a block of a checker holding another checker...) are followed.
@@ -234,8 +237,11 @@ pub fn colour_map_lookup(entries: &[(f64, Colour)], value: f64) -> Colour {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::pattern::{checker_block, gradient_value};
-    use crate::scene::{Pattern, PatternKind, Transform};
+    use crate::texture::pattern::{checker_block, gradient_value};
+    use crate::{
+        math::Transform,
+        texture::pattern::{Pattern, PatternKind},
+    };
 
     fn checker(a: Colour, b: Colour) -> Pigment {
         Pigment::Pattern {

@@ -218,7 +218,7 @@ pub fn brick_block(point: DVec3, size: DVec3, mortar: f64) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::pattern::{Wave, WaveShape};
+    use crate::texture::pattern::{Wave, WaveShape};
 
     /// The points POV-Ray's values below were printed at.
     fn probe(i: usize) -> DVec3 {
@@ -285,7 +285,7 @@ mod tests {
     fn square_tiles_match_povray() {
         // POV-Ray's `tiling 1` through a black-to-white map.
         let ramp = Wave::new(WaveShape::Ramp);
-        let square_tiles = |p| crate::pattern::tiling::tiling_value(1, p);
+        let square_tiles = |p| crate::texture::pattern::tiling::tiling_value(1, p);
         let value = |x, z| ramp.apply(square_tiles(DVec3::new(x, 0.0, z)));
         assert!((value(-0.5, 0.5) - 0.0).abs() < 1e-9);
         assert!((value(-0.7, 0.5) - 0.4).abs() < 1e-9);

@@ -145,10 +145,10 @@ mod tests {
 
     #[test]
     fn perturbations_are_finite() {
-        let wave = Wave::new(super::super::WaveShape::Ramp);
+        let wave = Wave::new(crate::texture::pattern::WaveShape::Ramp);
         let generator = NoiseGenerator::default();
         let p = DVec3::new(0.3, -2.0, 5.5);
-        let sources = super::super::waves::WaveSources::default();
+        let sources = crate::texture::pattern::waves::WaveSources::default();
         let sources = sources.as_slice();
         assert!(ripples(p, &wave, sources).is_finite());
         assert!(waves(p, &wave, sources).is_finite());

@@ -4,7 +4,7 @@
 //! (`.red`, `.gray`, `.hf` ..) that pick one of their components inside other functions.
 //!
 //! In: a point `x, y, z` (a spline's parameter `t`). Out: up to five components, evaluated by
-//! the pattern and pigment code the renderer uses ([`crate::render::pattern::pigment_colour`]).
+//! the pattern and pigment code the renderer uses ([`crate::texture::pigment::pigment_colour`]).
 //! Holds: pure and allocation-free per call, like every pattern and pigment.
 //!
 //! Measured against POV-Ray 3.7 (`#debug` of calls at chosen points):
@@ -20,8 +20,11 @@
 
 use super::spline::Spline;
 use super::Node;
-use crate::pattern::PatternKind;
-use crate::scene::{Pattern, Pigment, PigmentMap, Transform};
+use crate::texture::pattern::PatternKind;
+use crate::{
+    math::Transform,
+    texture::{pattern::Pattern, Pigment, PigmentMap},
+};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -108,7 +111,7 @@ impl Body {
                 [value, 0.0, 0.0, 0.0, 0.0]
             }
             Body::Pigment(pigment) => {
-                crate::render::pattern::pigment_colour(pigment, point).to_array()
+                crate::texture::pigment::pigment_colour(pigment, point).to_array()
             }
             Body::Transform(transform) => {
                 let moved = transform.point_to_outer(point);
@@ -203,7 +206,7 @@ impl Component {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::Colour;
+    use crate::math::Colour;
 
     #[test]
     fn members_pick_components() {

@@ -277,8 +277,8 @@ mod tests {
     }
 
     /// The patterns of `known_answers.txt` (see scripts/probe-patterns.py), by name.
-    fn probed_pattern(name: &str) -> crate::pattern::PatternSpec {
-        use crate::pattern::{PatternKind, PatternSpec};
+    fn probed_pattern(name: &str) -> crate::texture::pattern::Pattern {
+        use crate::texture::pattern::{Pattern, PatternKind};
         let crackle = |form: DVec3, metric: f64, offset: f64, solid: bool| {
             PatternKind::Crackle(Crackle {
                 form,
@@ -288,40 +288,34 @@ mod tests {
             })
         };
         let with_turbulence = |kind: PatternKind, amount: DVec3, shape: TurbulenceShape| {
-            let mut spec = PatternSpec::new(kind);
+            let mut spec = Pattern::new(kind);
             spec.turbulence = ClassicTurbulence { amount, shape };
             spec
         };
         let with_wave = |kind: PatternKind, frequency: f64, phase: f64| {
-            let mut spec = PatternSpec::new(kind);
+            let mut spec = Pattern::new(kind);
             spec.wave.frequency = frequency;
             spec.wave.phase = phase;
             spec
         };
         let default_shape = TurbulenceShape::default();
         match name {
-            "bozo" => PatternSpec::new(PatternKind::Bozo),
-            "dents" => PatternSpec::new(PatternKind::Dents),
-            "granite" => PatternSpec::new(PatternKind::Granite),
-            "wrinkles" => PatternSpec::new(PatternKind::Wrinkles),
-            "agate" => PatternSpec::new(PatternKind::Agate { agate_turb: 1.0 }),
-            "agate_turb" => PatternSpec::new(PatternKind::Agate { agate_turb: 0.4 }),
-            "waves" => PatternSpec::new(PatternKind::Waves(Default::default())),
-            "ripples" => PatternSpec::new(PatternKind::Ripples(Default::default())),
-            "cells" => PatternSpec::new(PatternKind::Cells),
-            "crackle" => PatternSpec::new(PatternKind::Crackle(Crackle::default())),
+            "bozo" => Pattern::new(PatternKind::Bozo),
+            "dents" => Pattern::new(PatternKind::Dents),
+            "granite" => Pattern::new(PatternKind::Granite),
+            "wrinkles" => Pattern::new(PatternKind::Wrinkles),
+            "agate" => Pattern::new(PatternKind::Agate { agate_turb: 1.0 }),
+            "agate_turb" => Pattern::new(PatternKind::Agate { agate_turb: 0.4 }),
+            "waves" => Pattern::new(PatternKind::Waves(Default::default())),
+            "ripples" => Pattern::new(PatternKind::Ripples(Default::default())),
+            "cells" => Pattern::new(PatternKind::Cells),
+            "crackle" => Pattern::new(PatternKind::Crackle(Crackle::default())),
             "crackle_form_metric" => {
-                PatternSpec::new(crackle(DVec3::new(1.0, 0.0, 0.0), 1.0, 0.0, false))
+                Pattern::new(crackle(DVec3::new(1.0, 0.0, 0.0), 1.0, 0.0, false))
             }
-            "crackle_metric3" => {
-                PatternSpec::new(crackle(DVec3::new(-1.0, 1.0, 0.5), 3.0, 0.0, false))
-            }
-            "crackle_solid" => {
-                PatternSpec::new(crackle(DVec3::new(-1.0, 1.0, 0.0), 2.0, 0.1, true))
-            }
-            "crackle_offset" => {
-                PatternSpec::new(crackle(DVec3::new(-1.0, 1.0, 0.0), 2.0, 0.3, false))
-            }
+            "crackle_metric3" => Pattern::new(crackle(DVec3::new(-1.0, 1.0, 0.5), 3.0, 0.0, false)),
+            "crackle_solid" => Pattern::new(crackle(DVec3::new(-1.0, 1.0, 0.0), 2.0, 0.1, true)),
+            "crackle_offset" => Pattern::new(crackle(DVec3::new(-1.0, 1.0, 0.0), 2.0, 0.3, false)),
             "marble_turbulence" => {
                 with_turbulence(PatternKind::Marble, DVec3::splat(0.8), default_shape)
             }
@@ -346,9 +340,8 @@ mod tests {
                 with_turbulence(PatternKind::Spiral1(2.0), DVec3::splat(0.3), default_shape)
             }
             "crackle_solid_generator1" => {
-                let mut spec =
-                    PatternSpec::new(crackle(DVec3::new(-1.0, 1.0, 0.0), 2.0, 0.0, true));
-                spec.noise = crate::pattern::NoiseChoice::Own(NoiseGenerator::Original);
+                let mut spec = Pattern::new(crackle(DVec3::new(-1.0, 1.0, 0.0), 2.0, 0.0, true));
+                spec.noise = crate::texture::pattern::NoiseChoice::Own(NoiseGenerator::Original);
                 spec
             }
             "ripples_frequency_phase" => {

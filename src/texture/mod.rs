@@ -1,16 +1,28 @@
-//! Appearance: textures, pigments, normals, their maps, layered and patterned textures, and
-//! image maps.
+//! The texture layer: the recursive appearance family of POV-Ray's language — textures,
+//! pigments, normals, finishes, patterns, functions and image maps — and their evaluation.
 //!
-//! In: nothing (data definitions). Out: [`Texture`], [`Pigment`], [`Normal`] and the types
-//! they hold. Holds: every nested pigment, normal or texture carries its own complete
-//! transform (outer space to its pattern space); [`Texture::transform`] and friends compose a
-//! transformation into all of them at once, which is how POV-Ray transforms the entries of
-//! maps together with the map.
+//! In: a point in pattern space (and, for surface patterns, a [`pattern::SurfaceContext`]).
+//! Out: colours ([`pigment`]), perturbed normals ([`normal`]), pattern values
+//! ([`pattern`]), function values ([`function`]), image lookups ([`image_map`]).
+//! Holds: pure data and pure functions of a point; nothing here knows about rays, lights
+//! or the world (the object pattern sees a solid only through [`pattern::Solid`]).
+//!
+//! This file holds the data: every nested map entry carries its complete pattern
+//! transform, so a transformation applied to a whole pigment, normal or texture is composed
+//! into all of them at once, which is how POV-Ray transforms the entries of maps together
+//! with the map.
 
-use super::{Colour, Finish, Transform};
+pub mod finish;
+pub mod function;
+pub mod image_map;
+pub mod normal;
+pub mod pattern;
+pub mod pigment;
+
+use crate::math::{Colour, Transform};
+use finish::Finish;
+use pattern::Pattern;
 use std::sync::Arc;
-
-pub use crate::pattern::{PatternKind, PatternSpec as Pattern};
 
 /// Surface appearance: pigment, normal perturbation and finish, or a combination of whole
 /// textures.

@@ -2,8 +2,8 @@
 //! with POV-Ray's modifiers (turbulence, warps, frequency, phase, wave shapes).
 //!
 //! In: a point already mapped into pattern space by the owning pigment/normal/texture's
-//! transform. Out: the pattern value ([`PatternSpec::value`]) or, for block patterns such as
-//! `checker`, the block index ([`PatternSpec::block`]). Holds: pure and allocation-free per
+//! transform. Out: the pattern value ([`Pattern::value`]) or, for block patterns such as
+//! `checker`, the block index ([`Pattern::block`]). Holds: pure and allocation-free per
 //! call; non-finite input gives 0.
 //!
 //! Order of evaluation, measured against POV-Ray 3.7: warps and the transformations written
@@ -31,8 +31,8 @@ mod waves;
 
 use glam::DVec3;
 
+use crate::math::Transform;
 use crate::noise::{vector_turbulence, NoiseGenerator, SceneNoiseGenerator, TurbulenceShape};
-use crate::scene::Transform;
 
 pub use default_maps::{default_colour_map, DefaultColourMap};
 pub use density_file::DensityFile;
@@ -45,9 +45,18 @@ pub use warp::{BlackHole, Mapping, MappingKind, Repeat, Warp};
 pub use wave::{Wave, WaveShape};
 pub use waves::{SceneWaveSources, WaveSources, MAX_WAVE_COUNT};
 
+/// A solid the `object` pattern asks whether a point is inside.
+///
+/// The texture layer knows no geometry: the evaluator builds the object's render form
+/// (the geometry layer's `World` implements this) and hands it over as a trait object.
+pub trait Solid: Send + Sync + std::fmt::Debug {
+    /// True when `point` (in pattern space) is inside the solid.
+    fn contains(&self, point: DVec3) -> bool;
+}
+
 /// A pattern with its modifiers.
 #[derive(Clone, Debug)]
-pub struct PatternSpec {
+pub struct Pattern {
     /// Which pattern.
     pub kind: PatternKind,
     /// Frequency, phase and wave shape.
@@ -90,7 +99,7 @@ pub struct PlacedWarp {
 pub enum PatternKind {
     /// `function { .. }`: a user function of x, y, z, its value used as is (the wave shape
     /// then wraps it into [0, 1] as for every pattern).
-    Function(std::sync::Arc<crate::function::Function>),
+    Function(std::sync::Arc<crate::texture::function::Function>),
     /// Banded like marble with its own turbulence (`agate_turb`, default 1).
     Agate {
         /// The built-in turbulence's amount.
@@ -171,10 +180,10 @@ pub enum PatternKind {
     Aoi,
     /// `pigment_pattern { .. }`: the grey level 0.297 R + 0.589 G + 0.114 B of a pigment
     /// (measured; filter and transmit do not count).
-    PigmentPattern(std::sync::Arc<crate::scene::Pigment>),
+    PigmentPattern(std::sync::Arc<crate::texture::Pigment>),
     /// `object { .. }`: block 1 inside the object, block 0 outside (the geometry is built
-    /// once, when the pattern is parsed).
-    Object(std::sync::Arc<crate::geometry::World>),
+    /// once, when the pattern is parsed, by the layer that knows geometry).
+    Object(std::sync::Arc<dyn Solid>),
     /// 1 at the origin falling to 0 at radius 1.
     Spherical,
     /// A screw around the z axis with a number of arms (the integer part is used).
@@ -195,12 +204,12 @@ pub enum PatternKind {
     /// Sharp 1/f noise.
     Wrinkles,
     /// `image_pattern { .. }`: the grey level (or transparency) of an image's pixels.
-    ImagePattern(std::sync::Arc<crate::scene::ImageMap>),
+    ImagePattern(std::sync::Arc<crate::texture::ImageMap>),
 }
 
-impl PatternSpec {
+impl Pattern {
     /// The pattern with POV-Ray's default modifiers.
-    pub fn new(kind: PatternKind) -> PatternSpec {
+    pub fn new(kind: PatternKind) -> Pattern {
         let shape = match kind {
             PatternKind::Marble
             | PatternKind::Wood
@@ -208,7 +217,7 @@ impl PatternSpec {
             | PatternKind::Spiral2(_) => WaveShape::Triangle,
             _ => WaveShape::Ramp,
         };
-        PatternSpec {
+        Pattern {
             kind,
             wave: Wave::new(shape),
             turbulence: ClassicTurbulence {
@@ -311,7 +320,7 @@ impl PatternSpec {
             PatternKind::Square => geometric::square_block(p),
             PatternKind::Triangular => geometric::triangular_block(p),
             PatternKind::Cubic => geometric::cubic_block(p),
-            PatternKind::Object(world) => usize::from(world.inside(p)),
+            PatternKind::Object(solid) => usize::from(solid.contains(p)),
             _ => 0,
         }
     }
@@ -469,7 +478,7 @@ impl PatternSpec {
             PatternKind::Aoi => surface::angle_of_incidence(surface.normal, surface.ray_direction),
             PatternKind::PigmentPattern(pigment) => {
                 let [red, green, blue, _, _] =
-                    crate::render::pattern::pigment_colour_at(pigment, p, surface).to_array();
+                    crate::texture::pigment::pigment_colour_at(pigment, p, surface).to_array();
                 0.297 * red + 0.589 * green + 0.114 * blue
             }
             PatternKind::Spherical => geometric::spherical(p),
@@ -483,7 +492,7 @@ impl PatternSpec {
             PatternKind::Waves(sources) => noise_based::waves(p, &self.wave, sources.as_slice()),
             PatternKind::Wood => noise_based::wood(p, turbulence, generator),
             PatternKind::Wrinkles => noise_based::wrinkles(p, generator),
-            PatternKind::ImagePattern(image) => crate::render::image_map::image_value(image, p),
+            PatternKind::ImagePattern(image) => crate::texture::image_map::image_value(image, p),
             PatternKind::Checker
             | PatternKind::Brick { .. }
             | PatternKind::Hexagon
@@ -504,8 +513,8 @@ pub fn gradient_value(point: DVec3, direction: DVec3) -> f64 {
 mod tests {
     use super::*;
 
-    fn gradient_x() -> PatternSpec {
-        PatternSpec::new(PatternKind::Gradient(DVec3::X))
+    fn gradient_x() -> Pattern {
+        Pattern::new(PatternKind::Gradient(DVec3::X))
     }
 
     #[test]
@@ -598,7 +607,7 @@ mod tests {
             DVec3::new(f64::INFINITY, 0.0, 0.0),
         ];
         for kind in kinds {
-            let mut pattern = PatternSpec::new(kind);
+            let mut pattern = Pattern::new(kind);
             pattern.wave.frequency = 1e300;
             pattern.turbulence.amount = DVec3::splat(1e300);
             pattern.add_warp(Warp::Mapping(Mapping {
@@ -623,11 +632,8 @@ mod tests {
 
     #[test]
     fn block_patterns_report_their_counts() {
-        assert_eq!(
-            PatternSpec::new(PatternKind::Hexagon).block_count(),
-            Some(3)
-        );
-        assert_eq!(PatternSpec::new(PatternKind::Onion).block_count(), None);
+        assert_eq!(Pattern::new(PatternKind::Hexagon).block_count(), Some(3));
+        assert_eq!(Pattern::new(PatternKind::Onion).block_count(), None);
         assert_eq!(gradient_x().value(DVec3::splat(f64::NAN)), 0.0);
     }
 }

@@ -19,7 +19,10 @@
 //! is bilinear between the four nearest pixel centres; `interpolate 4` weights those four by
 //! the inverse square of the distance to each centre (in pixels).
 
-use crate::scene::{Colour, ImageMap, ImageProjection};
+use crate::{
+    math::Colour,
+    texture::{ImageMap, ImageProjection},
+};
 use glam::DVec3;
 use std::f64::consts::TAU;
 

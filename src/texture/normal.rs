@@ -39,9 +39,9 @@
 //!   -x exactly like `gradient x 1`, however the object is turned).
 
 use super::image_map::bump_map_tilt;
-use super::pattern::{blend_position, block_index};
-use crate::pattern::SurfaceContext;
-use crate::scene::{BlendMap, Normal, NormalSource, SlopeEntry};
+use super::pigment::{blend_position, block_index};
+use crate::texture::pattern::SurfaceContext;
+use crate::texture::{BlendMap, Normal, NormalSource, SlopeEntry};
 use glam::{DVec2, DVec3};
 
 /// Factor between the pattern's slope and the tilt of the normal (measured).
@@ -241,7 +241,10 @@ fn slope_map_height(entries: &[SlopeEntry], value: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::{Pattern, PatternKind, Transform};
+    use crate::{
+        math::Transform,
+        texture::pattern::{Pattern, PatternKind},
+    };
 
     fn gradient_normal(direction: DVec3, amount: f64) -> Normal {
         let mut normal = Normal::new(NormalSource::Pattern {
