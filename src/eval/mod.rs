@@ -3,51 +3,26 @@
 //! In: a scene file path and options. Out: the [`Scene`] plus warnings, or the diagnostic
 //! that stopped evaluation. Holds: each file is parsed once (includes are cached); macro
 //! bodies are evaluated from their AST at each call; every limit ends in a diagnostic.
+//!
+//! Two parts, each owning its state: [`language`] (the language runtime: values, scopes,
+//! sources, item streams and directives, macros, expressions, built-ins, data files, the
+//! call trace — state in `language::Runtime`) and [`assembly`] (the blocks that become
+//! scene data, and the scene being built — state in `assembly::SceneAssembly`). The
+//! runtime never imports assembly; it reaches it only through [`Evaluator::eval_block`].
 
-mod appearance;
-mod argument_directives;
-mod atmosphere;
-mod builtins;
-mod c_format;
-mod camera;
-mod datetime;
-mod expr;
-mod files;
-mod finish;
-mod image_map;
-mod light;
-mod literals;
-mod macros;
-mod media;
-mod objects;
-mod pattern;
-mod photons;
-mod radiosity;
-mod scopes;
-mod shapes;
-mod splines;
-mod stream;
-mod texture_maps;
-mod token_macro;
-mod value;
-mod view;
+mod assembly;
+mod language;
 
-pub use value::{Array, Value, Vector};
+pub use language::value::{Array, Value, Vector};
 
-use crate::diag::{did_you_mean, Diagnostic, FileId, SourceMap, Span, TraceEntry};
-use crate::hash::FastHash;
+use crate::diag::{Diagnostic, SourceMap};
+use crate::scene::Scene;
 use crate::syntax::ast::Item;
-use crate::syntax::symbol::Symbol;
-use crate::{
-    math::{Colour, Transform},
-    scene::{Atmosphere, Camera, GlobalSettings, LightSource, Object, Scene, Shape},
-    texture::Texture,
-};
-use std::collections::HashMap;
+use assembly::SceneAssembly;
+use language::stream::Stream;
+use language::Runtime;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
-use std::sync::Arc;
-use stream::Stream;
 
 /// Deepest nesting of macro calls, includes and blocks before evaluation stops.
 pub const NESTING_LIMIT: usize = 20_000;
@@ -106,9 +81,12 @@ pub(crate) type EvalResult<T> = Result<T, Box<Diagnostic>>;
 pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
     let mut evaluator = Evaluator::new(options.clone());
     let result = evaluator.run_main(path);
-    let mut diagnostics = std::mem::take(&mut evaluator.warnings);
+    let mut diagnostics = std::mem::take(&mut evaluator.runtime.warnings);
     let scene = match result {
-        Ok(()) => Some(evaluator.finish_scene()),
+        Ok(()) => Some(evaluator.scene.finish(
+            evaluator.runtime.version,
+            evaluator.runtime.version_declared,
+        )),
         Err(d) => {
             diagnostics.push(*d);
             None
@@ -117,425 +95,41 @@ pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
     Evaluated {
         scene,
         diagnostics,
-        sources: evaluator.sources,
+        sources: evaluator.runtime.sources,
     }
 }
 
-/// durer's own small standard library, used when an include file is found nowhere else
-/// (for example on a machine without POV-Ray installed).
-const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
-    ("colors.inc", include_str!("stdlib/colors.inc")),
-    ("consts.inc", include_str!("stdlib/consts.inc")),
-    ("finish.inc", include_str!("stdlib/finish.inc")),
-    ("glass.inc", include_str!("stdlib/glass.inc")),
-    ("glass_old.inc", include_str!("stdlib/glass_old.inc")),
-    ("golds.inc", include_str!("stdlib/golds.inc")),
-    ("metals.inc", include_str!("stdlib/metals.inc")),
-    ("skies.inc", include_str!("stdlib/skies.inc")),
-    ("textures.inc", include_str!("stdlib/textures.inc")),
-    ("woodmaps.inc", include_str!("stdlib/woodmaps.inc")),
-    ("woods.inc", include_str!("stdlib/woods.inc")),
-    ("stones.inc", include_str!("stdlib/stones.inc")),
-    ("stones1.inc", include_str!("stdlib/stones1.inc")),
-    ("stones2.inc", include_str!("stdlib/stones2.inc")),
-    ("functions.inc", include_str!("stdlib/functions.inc")),
-    ("math.inc", include_str!("stdlib/math.inc")),
-    ("transforms.inc", include_str!("stdlib/transforms.inc")),
-    ("strings.inc", include_str!("stdlib/strings.inc")),
-    ("rand.inc", include_str!("stdlib/rand.inc")),
-    ("arrays.inc", include_str!("stdlib/arrays.inc")),
-    ("shapes.inc", include_str!("stdlib/shapes.inc")),
-    ("shapes_old.inc", include_str!("stdlib/shapes_old.inc")),
-    ("shapes2.inc", include_str!("stdlib/shapes2.inc")),
-    ("shapesq.inc", include_str!("stdlib/shapesq.inc")),
-    ("ior.inc", include_str!("stdlib/ior.inc")),
-    ("debug.inc", include_str!("stdlib/debug.inc")),
-    ("stdinc.inc", include_str!("stdlib/stdinc.inc")),
-    ("stdcam.inc", include_str!("stdlib/stdcam.inc")),
-    ("sunpos.inc", include_str!("stdlib/sunpos.inc")),
-    ("screen.inc", include_str!("stdlib/screen.inc")),
-    ("stage1.inc", include_str!("stdlib/stage1.inc")),
-    ("stoneold.inc", include_str!("stdlib/stoneold.inc")),
-    ("stars.inc", include_str!("stdlib/stars.inc")),
-    ("rad_def.inc", include_str!("stdlib/rad_def.inc")),
-    ("logo.inc", include_str!("stdlib/logo.inc")),
-    ("chars.inc", include_str!("stdlib/chars.inc")),
-    ("shapes3.inc", include_str!("stdlib/shapes3.inc")),
-    ("makegrass.inc", include_str!("stdlib/makegrass.inc")),
-    ("meshmaker.inc", include_str!("stdlib/meshmaker.inc")),
-];
-
-/// Folder name under which embedded include files appear in diagnostics.
-const EMBEDDED_FOLDER: &str = "<durer standard library>";
-
-/// What an entry of the live call trace entered.
-#[derive(Clone, Debug)]
-pub(crate) enum Entering {
-    /// A call of the named macro.
-    Macro(Symbol),
-    /// An include of the named file.
-    File(Rc<str>),
-}
-
-/// One entry of the live call trace: kept cheap (no text is formatted per macro call) and
-/// turned into a [`TraceEntry`] only when a diagnostic needs it.
-#[derive(Clone, Debug)]
-pub(crate) struct Entered {
-    pub(crate) what: Entering,
-    /// Where it was entered from.
-    pub(crate) span: Span,
-}
-
-impl Entered {
-    fn to_trace(&self) -> TraceEntry {
-        let what = match &self.what {
-            Entering::Macro(name) => format!("macro `{name}`"),
-            Entering::File(name) => format!("file `{name}`"),
-        };
-        TraceEntry {
-            what,
-            span: self.span,
-        }
-    }
-}
-
-/// One symbol table: the global one, an include file's or a macro call's.
-pub(crate) type Scope = HashMap<Symbol, Value, FastHash>;
-
+/// The evaluator: the language runtime and the scene it assembles. Block readers across
+/// `language/` and `assembly/` are `impl Evaluator` blocks; each reaches the state it needs
+/// through one of the two parts.
 pub(crate) struct Evaluator {
-    pub(crate) options: EvalOptions,
-    pub(crate) sources: SourceMap,
-    pub(crate) scopes: scopes::ScopeStack,
-    parsed: HashMap<PathBuf, (FileId, Rc<[Item]>)>,
-    pub(crate) scene_folder: PathBuf,
-    /// The scene file's name, for `input_file_name`.
-    pub(crate) input_file_name: String,
-    pub(crate) trace: Vec<Entered>,
-    pub(crate) warnings: Vec<Diagnostic>,
-    pub(crate) nesting: usize,
-    pub(crate) version: f64,
-    version_declared: bool,
-    pub(crate) default_texture: Texture,
-    default_texture_set: bool,
-    camera: Option<Camera>,
-    lights: Vec<LightSource>,
-    /// How many `light_group`s have been evaluated (the next group's id).
-    pub(crate) light_groups: u32,
-    /// Set once a light is placed inside an object: until then no object needs searching for
-    /// the lights it carries.
-    pub(crate) objects_carry_lights: bool,
-    objects: Vec<Object>,
-    background: Colour,
-    atmosphere: Atmosphere,
-    pub(crate) settings: GlobalSettings,
-    warned_once: std::collections::HashSet<String>,
-    /// States of the random streams made by `seed`, indexed by stream number.
-    pub(crate) random_streams: Vec<u32>,
-    /// Geometry prepared for `trace` and the extent functions, by object address.
-    pub(crate) query_worlds: HashMap<usize, (Arc<Object>, Rc<crate::geometry::World>)>,
-    /// Data files opened by `#fopen`; closed ones are `None`.
-    pub(crate) files: Vec<Option<files::DataFile>>,
-    /// Text macro bodies parsed once for all calls (see `token_macro`).
-    pub(crate) text_macro_cache: token_macro::TextMacroCache,
-    /// Running calls with directives among their arguments (see `argument_directives`).
-    pub(crate) directive_cursors: Vec<argument_directives::DirectiveCursor>,
+    /// Values, scopes, sources, macros, data files and the call trace.
+    pub(crate) runtime: Runtime,
+    /// Camera, lights, objects, atmosphere and settings added so far.
+    pub(crate) scene: SceneAssembly,
 }
 
 impl Evaluator {
-    fn new(options: EvalOptions) -> Evaluator {
+    /// A fresh evaluator for one scene file.
+    pub(crate) fn new(options: EvalOptions) -> Evaluator {
         Evaluator {
-            options,
-            sources: SourceMap::new(),
-            scopes: scopes::ScopeStack::new(),
-            parsed: HashMap::new(),
-            scene_folder: PathBuf::from("."),
-            input_file_name: String::new(),
-            trace: Vec::new(),
-            warnings: Vec::new(),
-            nesting: 0,
-            version: 3.7,
-            version_declared: false,
-            default_texture: Texture::default(),
-            default_texture_set: false,
-            camera: None,
-            lights: Vec::new(),
-            light_groups: 0,
-            objects_carry_lights: false,
-            objects: Vec::new(),
-            background: Colour::BLACK,
-            atmosphere: Atmosphere::default(),
-            settings: GlobalSettings::default(),
-            warned_once: Default::default(),
-            random_streams: Vec::new(),
-            files: Vec::new(),
-            query_worlds: HashMap::new(),
-            text_macro_cache: Default::default(),
-            directive_cursors: Vec::new(),
-        }
-    }
-
-    /// An error at `span` carrying the current macro/include trace.
-    pub(crate) fn error(&self, span: Span, message: impl Into<String>) -> Diagnostic {
-        let mut d = Diagnostic::error(span, message);
-        d.trace = self.trace_for_diagnostic();
-        d
-    }
-
-    /// Records a warning (each distinct message once).
-    pub(crate) fn warn(&mut self, span: Span, message: impl Into<String>) {
-        let message = message.into();
-        if self.warned_once.insert(message.clone()) {
-            let mut d = Diagnostic::warning(span, message);
-            d.trace = self.trace_for_diagnostic();
-            self.warnings.push(d);
+            runtime: Runtime::new(options),
+            scene: SceneAssembly::new(),
         }
     }
 
     fn run_main(&mut self, path: &Path) -> EvalResult<()> {
-        self.scene_folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        self.input_file_name = path
+        self.runtime.scene_folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        self.runtime.input_file_name = path
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
-        let items = self.load_file(path, None)?;
+        let items = self.runtime.load_file(path, None)?;
         let mut stream = Stream::new(items);
         while let Some(item) = self.next_item(&mut stream)? {
             self.scene_item(item)?;
         }
         Ok(())
-    }
-
-    /// Drops the cached parse of a file the scene is rewriting, so that a later `#include` of
-    /// it (strings.inc's `Parse_String`) reads the new text.
-    pub(crate) fn forget_parsed(&mut self, path: &Path) {
-        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
-        self.parsed.remove(&key);
-    }
-
-    /// Reads and parses a file once; later loads reuse the AST.
-    fn load_file(&mut self, path: &Path, from: Option<Span>) -> EvalResult<Rc<[Item]>> {
-        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
-        if let Some((_, items)) = self.parsed.get(&key) {
-            return Ok(items.clone());
-        }
-        let (file, text) = self.read_source(path, from)?;
-        let items = crate::syntax::parse(&text, file).map_err(|mut d| {
-            d.trace = self.trace_for_diagnostic();
-            d
-        })?;
-        self.parsed.insert(key, (file, items.clone()));
-        Ok(items)
-    }
-
-    /// Reads a file (or the embedded file standing for it) and adds it to the sources.
-    pub(crate) fn read_source(
-        &mut self,
-        path: &Path,
-        from: Option<Span>,
-    ) -> EvalResult<(FileId, Arc<str>)> {
-        let embedded = path
-            .strip_prefix(EMBEDDED_FOLDER)
-            .ok()
-            .and_then(|name| EMBEDDED_INCLUDES.iter().find(|(n, _)| Path::new(n) == name))
-            .map(|(_, text)| text.as_bytes().to_vec());
-        let bytes = match embedded {
-            Some(bytes) => Ok(bytes),
-            None => std::fs::read(path),
-        };
-        let bytes = bytes.map_err(|e| {
-            let span = from.unwrap_or_default();
-            let mut d = self.error(span, format!("cannot read `{}`: {e}", path.display()));
-            if from.is_none() {
-                d.span = Span {
-                    file: u32::MAX,
-                    start: 0,
-                    end: 0,
-                };
-            }
-            Box::new(d)
-        })?;
-        let text: Arc<str> = Arc::from(String::from_utf8_lossy(&bytes).into_owned());
-        let file = self.sources.add(path, text.clone());
-        Ok((file, text))
-    }
-
-    /// Finds an include file: the scene's folder, `-L` folders, `DURER_INCLUDE_PATH`,
-    /// then POV-Ray's installed include folder.
-    /// Finds a file on the include search path, or reports `what` (such as "include file")
-    /// as not found at `span` with `label`, listing the folders searched.
-    pub(crate) fn find_file(
-        &self,
-        name: &str,
-        span: Span,
-        what: &str,
-        label: &str,
-    ) -> EvalResult<PathBuf> {
-        self.find_include(name).map_err(|folders| {
-            let searched: Vec<String> = folders.iter().map(|f| f.display().to_string()).collect();
-            self.error(span, format!("cannot find {what} `{name}`"))
-                .with_label(label.to_string())
-                .with_help(format!("searched: {}", searched.join(", ")))
-                .into()
-        })
-    }
-
-    pub(crate) fn find_include(&self, name: &str) -> Result<PathBuf, Vec<PathBuf>> {
-        let direct = Path::new(name);
-        if direct.is_absolute() {
-            return if direct.is_file() {
-                Ok(direct.to_path_buf())
-            } else {
-                Err(vec![])
-            };
-        }
-        let mut folders = vec![self.scene_folder.clone()];
-        folders.extend(self.options.include_paths.iter().cloned());
-        if let Some(paths) = std::env::var_os("DURER_INCLUDE_PATH") {
-            folders.extend(std::env::split_paths(&paths));
-        }
-        if self.options.search_installed_povray {
-            for installed in [
-                "/usr/share/povray-3.7/include",
-                "/usr/local/share/povray-3.7/include",
-            ] {
-                folders.push(PathBuf::from(installed));
-            }
-        }
-        for folder in &folders {
-            let candidate = folder.join(name);
-            if candidate.is_file() {
-                return Ok(candidate);
-            }
-        }
-        if EMBEDDED_INCLUDES.iter().any(|(n, _)| *n == name) {
-            return Ok(Path::new(EMBEDDED_FOLDER).join(name));
-        }
-        Err(folders)
-    }
-
-    /// Runs `#include`: parses the file once and streams its items in a new local scope.
-    pub(crate) fn include(
-        &mut self,
-        name: &str,
-        span: Span,
-        stream: &mut Stream,
-    ) -> EvalResult<()> {
-        let path = self.find_file(name, span, "include file", "included here")?;
-        self.enter_nesting(span)?;
-        self.trace.push(Entered {
-            what: Entering::File(Rc::from(name)),
-            span,
-        });
-        let items = match self.load_file(&path, Some(span)) {
-            Ok(items) => items,
-            Err(e) => {
-                self.trace.pop();
-                self.nesting -= 1;
-                return Err(e);
-            }
-        };
-        self.scopes.push(Scope::default());
-        stream.push_include(items);
-        Ok(())
-    }
-
-    pub(crate) fn enter_nesting(&mut self, span: Span) -> EvalResult<()> {
-        if self.nesting >= NESTING_LIMIT {
-            return Err(self
-                .error(span, format!("nesting deeper than {NESTING_LIMIT} levels"))
-                .with_label("this call or include goes too deep")
-                .with_help("a recursive macro probably never reaches its base case")
-                .into());
-        }
-        self.nesting += 1;
-        Ok(())
-    }
-
-    /// The call trace for a diagnostic, innermost first.
-    pub(crate) fn trace_for_diagnostic(&self) -> Vec<TraceEntry> {
-        self.trace.iter().rev().map(Entered::to_trace).collect()
-    }
-
-    /// Looks an identifier up, innermost scope first, following references.
-    #[inline]
-    pub(crate) fn lookup(&self, name: Symbol) -> Option<&Value> {
-        match self.scopes.innermost_binding(name)?.1 {
-            Value::Reference { scope, name } => self.lookup_from(*scope, *name),
-            other => Some(other),
-        }
-    }
-
-    /// Looks an identifier up in scope `top` and the scopes outside it, following references.
-    pub(crate) fn lookup_from(&self, top: usize, name: Symbol) -> Option<&Value> {
-        let (mut top, mut name) = (top, name);
-        loop {
-            let (index, value) = self.scopes.binding_at_or_below(name, top)?;
-            match value {
-                Value::Reference {
-                    scope,
-                    name: target,
-                } if *scope < index => {
-                    top = *scope;
-                    name = *target;
-                }
-                Value::Reference { .. } => return None,
-                other => return Some(other),
-            }
-        }
-    }
-
-    /// Where `#declare name` writes: the innermost existing version (following references),
-    /// or the global scope for a new name.
-    pub(crate) fn declare_slot(&self, name: Symbol) -> (usize, Symbol) {
-        self.slot_from(self.scopes.len() - 1, name)
-    }
-
-    /// Where `#local name` writes: the innermost scope, except that a macro parameter passed
-    /// an identifier writes through to the caller's variable, as in POV-Ray.
-    pub(crate) fn local_slot(&self, name: Symbol) -> (usize, Symbol) {
-        let innermost = self.scopes.len() - 1;
-        match self.scopes.get(innermost, name) {
-            Some(Value::Reference {
-                scope,
-                name: target,
-            }) if *scope < innermost => self.slot_from(*scope, *target),
-            _ => (innermost, name),
-        }
-    }
-
-    /// The innermost existing version of `name` in scope `top` or outside it, following
-    /// references; the global scope when there is none.
-    fn slot_from(&self, top: usize, name: Symbol) -> (usize, Symbol) {
-        let mut top = top;
-        let mut name = name;
-        loop {
-            match self.scopes.binding_at_or_below(name, top) {
-                Some((i, value)) => match value {
-                    Value::Reference {
-                        scope,
-                        name: target,
-                    } if *scope < i => {
-                        top = *scope;
-                        name = *target;
-                    }
-                    _ => return (i, name),
-                },
-                None => return (0, name),
-            }
-        }
-    }
-
-    /// An "undefined identifier" error with a did-you-mean over visible names and keywords.
-    pub(crate) fn undefined(&self, name: &str, span: Span) -> Diagnostic {
-        let mut d = self
-            .error(span, format!("undefined identifier `{name}`"))
-            .with_label("not declared");
-        let visible = self.scopes.names();
-        let keywords = crate::syntax::keywords::ALL.iter().copied();
-        if let Some(similar) = did_you_mean(name, visible.chain(keywords)) {
-            d = d.with_help(format!("did you mean `{similar}`?"));
-        }
-        d
     }
 
     /// Handles one item at the top level of the scene.
@@ -546,6 +140,7 @@ impl Evaluator {
             Item::Expr(expr) => self.eval_expr(expr)?,
             Item::Keyword(word, span) => {
                 return Err(self
+                    .runtime
                     .error(
                         *span,
                         format!("`{word}` cannot stand at the top level of a scene"),
@@ -556,33 +151,24 @@ impl Evaluator {
             Item::Comma(_) => return Ok(()),
             Item::MapEntry(..) | Item::Directive(_) => {
                 return Err(self
+                    .runtime
                     .error(span, "expected an object, camera, light or directive")
                     .into())
             }
         };
         match value {
-            Value::Object(object) => {
-                let mut object = Arc::unwrap_or_clone(object);
-                if object.texture.is_none() && self.default_texture_set {
-                    object.texture = Some(Arc::new(self.default_texture.clone()));
-                }
-                // Both walk the whole object tree: skip them while there is nothing to find.
-                if self.light_groups > 0 {
-                    crate::scene::separate_light_groups(&mut object, &mut self.light_groups);
-                }
-                if self.objects_carry_lights {
-                    self.add_carried_lights(&object, &Transform::IDENTITY);
-                }
-                self.objects.push(object);
+            Value::Object(object) => self.scene.add_object(object),
+            Value::Camera(camera) => self.scene.set_camera(Rc::unwrap_or_clone(camera)),
+            Value::Light(light) => self.scene.add_light(Rc::unwrap_or_clone(light)),
+            Value::Atmospheric(effect) => self.scene.add_atmospheric_effect(&effect),
+            Value::Media(media) => self.scene.atmosphere.media.push(Rc::unwrap_or_clone(media)),
+            Value::Colour(colour) if matches!(item, Item::Block(_)) => {
+                self.scene.background = colour
             }
-            Value::Camera(camera) => self.camera = Some(Rc::unwrap_or_clone(camera)),
-            Value::Light(light) => self.add_light(Rc::unwrap_or_clone(light)),
-            Value::Atmospheric(effect) => self.add_atmospheric_effect(&effect),
-            Value::Media(media) => self.atmosphere.media.push(Rc::unwrap_or_clone(media)),
-            Value::Colour(colour) if matches!(item, Item::Block(_)) => self.background = colour,
             Value::Nothing => {} // settings blocks and left-out features
             other => {
                 return Err(self
+                    .runtime
                     .error(
                         span,
                         format!(
@@ -595,74 +181,5 @@ impl Evaluator {
             }
         }
         Ok(())
-    }
-
-    fn finish_scene(&mut self) -> Scene {
-        let waves = crate::texture::pattern::WaveSources::new(self.settings.number_of_waves);
-        self.settings.wave_sources.fix(waves);
-        let wavelengths = self.settings.irid_wavelength;
-        self.settings.scene_irid_wavelengths.fix(wavelengths);
-        let mut settings = self.settings.clone();
-        settings.language_version = self.version;
-        settings.version_declared = self.version_declared;
-        if settings.radiosity.is_some() && self.version >= 3.7 {
-            // POV-Ray 3.7 replaces the ambient term by radiosity (legacy scenes keep it).
-            settings.ambient_light = glam::DVec3::ZERO;
-        }
-        Scene {
-            camera: self.camera.clone().unwrap_or_default(),
-            lights: std::mem::take(&mut self.lights),
-            objects: std::mem::take(&mut self.objects),
-            background: self.background,
-            atmosphere: std::mem::take(&mut self.atmosphere),
-            settings,
-        }
-    }
-
-    /// Adds a fog or rainbow layer, or sets the sky sphere (the last one wins).
-    fn add_atmospheric_effect(&mut self, effect: &atmosphere::AtmosphericEffect) {
-        match effect {
-            atmosphere::AtmosphericEffect::Fog(fog) => self.atmosphere.fogs.push(fog.clone()),
-            atmosphere::AtmosphericEffect::SkySphere(sky) => {
-                self.atmosphere.sky_sphere = Some(sky.clone())
-            }
-            atmosphere::AtmosphericEffect::Rainbow(rainbow) => {
-                self.atmosphere.rainbows.push(rainbow.clone())
-            }
-        }
-    }
-
-    /// Adds a light to the scene, and its `looks_like` object to the objects.
-    /// Adds the lights written inside `object` and its CSG children, moved into world
-    /// space (`outer` maps the object's parent space to world space).
-    fn add_carried_lights(&mut self, object: &Object, outer: &Transform) {
-        let to_world = object.transform().then(outer);
-        for light in object.lights.iter().flat_map(|lights| lights.iter()) {
-            self.add_light(light.transformed(&to_world));
-        }
-        if let Shape::Csg { children, .. } = &object.shape {
-            for child in children {
-                self.add_carried_lights(child, &to_world);
-            }
-        }
-    }
-
-    pub(crate) fn add_light(&mut self, light: LightSource) {
-        if let Some(shape) = &light.looks_like {
-            self.objects.push((**shape).clone());
-        }
-        self.lights.push(light);
-    }
-
-    pub(crate) fn set_version(&mut self, version: f64) {
-        if !self.version_declared {
-            self.version_declared = true;
-        }
-        self.version = version;
-    }
-
-    pub(crate) fn set_default_texture(&mut self, texture: Texture) {
-        self.default_texture = texture;
-        self.default_texture_set = true;
     }
 }

@@ -68,7 +68,7 @@ fn every_standard_include_file_loads() {
 
 /// Names declared by durer's embedded colors.inc.
 fn embedded_colour_names() -> Vec<String> {
-    let text = include_str!("../../src/eval/stdlib/colors.inc");
+    let text = include_str!("../../src/eval/language/stdlib/colors.inc");
     text.lines()
         .filter_map(|l| l.strip_prefix("#declare "))
         .filter_map(|l| l.split_whitespace().next())
@@ -180,59 +180,80 @@ fn embedded_colours_have_povray_values() {
 const EMBEDDED_FILES: &[(&str, &str)] = &[
     (
         "consts.inc",
-        include_str!("../../src/eval/stdlib/consts.inc"),
+        include_str!("../../src/eval/language/stdlib/consts.inc"),
     ),
     (
         "finish.inc",
-        include_str!("../../src/eval/stdlib/finish.inc"),
+        include_str!("../../src/eval/language/stdlib/finish.inc"),
     ),
-    ("glass.inc", include_str!("../../src/eval/stdlib/glass.inc")),
+    (
+        "glass.inc",
+        include_str!("../../src/eval/language/stdlib/glass.inc"),
+    ),
     (
         "glass_old.inc",
-        include_str!("../../src/eval/stdlib/glass_old.inc"),
+        include_str!("../../src/eval/language/stdlib/glass_old.inc"),
     ),
-    ("golds.inc", include_str!("../../src/eval/stdlib/golds.inc")),
+    (
+        "golds.inc",
+        include_str!("../../src/eval/language/stdlib/golds.inc"),
+    ),
     (
         "metals.inc",
-        include_str!("../../src/eval/stdlib/metals.inc"),
+        include_str!("../../src/eval/language/stdlib/metals.inc"),
     ),
-    ("skies.inc", include_str!("../../src/eval/stdlib/skies.inc")),
+    (
+        "skies.inc",
+        include_str!("../../src/eval/language/stdlib/skies.inc"),
+    ),
     (
         "textures.inc",
-        include_str!("../../src/eval/stdlib/textures.inc"),
+        include_str!("../../src/eval/language/stdlib/textures.inc"),
     ),
     (
         "woodmaps.inc",
-        include_str!("../../src/eval/stdlib/woodmaps.inc"),
+        include_str!("../../src/eval/language/stdlib/woodmaps.inc"),
     ),
-    ("woods.inc", include_str!("../../src/eval/stdlib/woods.inc")),
+    (
+        "woods.inc",
+        include_str!("../../src/eval/language/stdlib/woods.inc"),
+    ),
     (
         "stones1.inc",
-        include_str!("../../src/eval/stdlib/stones1.inc"),
+        include_str!("../../src/eval/language/stdlib/stones1.inc"),
     ),
     (
         "stones2.inc",
-        include_str!("../../src/eval/stdlib/stones2.inc"),
+        include_str!("../../src/eval/language/stdlib/stones2.inc"),
     ),
-    ("ior.inc", include_str!("../../src/eval/stdlib/ior.inc")),
+    (
+        "ior.inc",
+        include_str!("../../src/eval/language/stdlib/ior.inc"),
+    ),
     (
         "stdinc.inc",
-        include_str!("../../src/eval/stdlib/stdinc.inc"),
+        include_str!("../../src/eval/language/stdlib/stdinc.inc"),
     ),
     (
         "stdcam.inc",
-        include_str!("../../src/eval/stdlib/stdcam.inc"),
+        include_str!("../../src/eval/language/stdlib/stdcam.inc"),
     ),
     (
         "stoneold.inc",
-        include_str!("../../src/eval/stdlib/stoneold.inc"),
+        include_str!("../../src/eval/language/stdlib/stoneold.inc"),
     ),
-    ("stars.inc", include_str!("../../src/eval/stdlib/stars.inc")),
+    (
+        "stars.inc",
+        include_str!("../../src/eval/language/stdlib/stars.inc"),
+    ),
     (
         "rad_def.inc",
-        include_str!("../../src/eval/stdlib/rad_def.inc"),
+        include_str!("../../src/eval/language/stdlib/rad_def.inc"),
     ),
-    ("logo.inc", include_str!("../../src/eval/stdlib/logo.inc")),
+    (
+        "logo.inc",
+        include_str!("../../src/eval/language/stdlib/logo.inc"),
+    ),
 ];
 
 /// What a declared identifier holds, by the keyword starting its value; `None` for
@@ -560,30 +581,39 @@ fn embedded_stones_inc_loads_both_halves() {
 const EMBEDDED_LIBRARIES: &[(&str, &str)] = &[
     (
         "functions.inc",
-        include_str!("../../src/eval/stdlib/functions.inc"),
+        include_str!("../../src/eval/language/stdlib/functions.inc"),
     ),
-    ("math.inc", include_str!("../../src/eval/stdlib/math.inc")),
+    (
+        "math.inc",
+        include_str!("../../src/eval/language/stdlib/math.inc"),
+    ),
     (
         "transforms.inc",
-        include_str!("../../src/eval/stdlib/transforms.inc"),
+        include_str!("../../src/eval/language/stdlib/transforms.inc"),
     ),
     (
         "strings.inc",
-        include_str!("../../src/eval/stdlib/strings.inc"),
+        include_str!("../../src/eval/language/stdlib/strings.inc"),
     ),
-    ("rand.inc", include_str!("../../src/eval/stdlib/rand.inc")),
+    (
+        "rand.inc",
+        include_str!("../../src/eval/language/stdlib/rand.inc"),
+    ),
     (
         "arrays.inc",
-        include_str!("../../src/eval/stdlib/arrays.inc"),
+        include_str!("../../src/eval/language/stdlib/arrays.inc"),
     ),
-    ("debug.inc", include_str!("../../src/eval/stdlib/debug.inc")),
+    (
+        "debug.inc",
+        include_str!("../../src/eval/language/stdlib/debug.inc"),
+    ),
     (
         "sunpos.inc",
-        include_str!("../../src/eval/stdlib/sunpos.inc"),
+        include_str!("../../src/eval/language/stdlib/sunpos.inc"),
     ),
     (
         "screen.inc",
-        include_str!("../../src/eval/stdlib/screen.inc"),
+        include_str!("../../src/eval/language/stdlib/screen.inc"),
     ),
 ];
 
@@ -714,24 +744,27 @@ fn embedded_arrays_write_povray_density_files() {
 const SHAPE_FILES: &[(&str, &str)] = &[
     (
         "shapes_old.inc",
-        include_str!("../../src/eval/stdlib/shapes_old.inc"),
+        include_str!("../../src/eval/language/stdlib/shapes_old.inc"),
     ),
     (
         "shapes.inc",
-        include_str!("../../src/eval/stdlib/shapes.inc"),
+        include_str!("../../src/eval/language/stdlib/shapes.inc"),
     ),
     (
         "shapes2.inc",
-        include_str!("../../src/eval/stdlib/shapes2.inc"),
+        include_str!("../../src/eval/language/stdlib/shapes2.inc"),
     ),
     (
         "shapesq.inc",
-        include_str!("../../src/eval/stdlib/shapesq.inc"),
+        include_str!("../../src/eval/language/stdlib/shapesq.inc"),
     ),
-    ("chars.inc", include_str!("../../src/eval/stdlib/chars.inc")),
+    (
+        "chars.inc",
+        include_str!("../../src/eval/language/stdlib/chars.inc"),
+    ),
     (
         "shapes3.inc",
-        include_str!("../../src/eval/stdlib/shapes3.inc"),
+        include_str!("../../src/eval/language/stdlib/shapes3.inc"),
     ),
 ];
 

@@ -1,0 +1,437 @@
+//! The language runtime: values, scopes, item streams and directives, macros, expressions,
+//! built-in functions, data files and the call trace.
+//!
+//! In: parsed items (from `syntax`). Out: values ([`value::Value`]) and a stream of items
+//! with every directive run and macro expanded. Holds: knows nothing of cameras, lights or
+//! objects except as values; a block expression becomes a value through the one hook
+//! [`crate::eval::Evaluator::eval_block`], which scene assembly provides.
+
+pub(crate) mod argument_directives;
+pub(crate) mod builtins;
+pub(crate) mod c_format;
+pub(crate) mod datetime;
+pub(crate) mod expr;
+pub(crate) mod files;
+pub(crate) mod function_compiler;
+pub(crate) mod literals;
+pub(crate) mod macros;
+pub(crate) mod reading;
+pub(crate) mod scopes;
+pub(crate) mod splines;
+pub(crate) mod stream;
+pub(crate) mod token_macro;
+pub(crate) mod value;
+
+use super::{EvalOptions, EvalResult, NESTING_LIMIT};
+use crate::diag::{did_you_mean, Diagnostic, FileId, SourceMap, Span, TraceEntry};
+use crate::hash::FastHash;
+use crate::syntax::ast::Item;
+use crate::syntax::symbol::Symbol;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+use std::sync::Arc;
+use stream::Stream;
+use value::Value;
+
+/// durer's own small standard library, used when an include file is found nowhere else
+/// (for example on a machine without POV-Ray installed).
+pub(crate) const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
+    ("colors.inc", include_str!("stdlib/colors.inc")),
+    ("consts.inc", include_str!("stdlib/consts.inc")),
+    ("finish.inc", include_str!("stdlib/finish.inc")),
+    ("glass.inc", include_str!("stdlib/glass.inc")),
+    ("glass_old.inc", include_str!("stdlib/glass_old.inc")),
+    ("golds.inc", include_str!("stdlib/golds.inc")),
+    ("metals.inc", include_str!("stdlib/metals.inc")),
+    ("skies.inc", include_str!("stdlib/skies.inc")),
+    ("textures.inc", include_str!("stdlib/textures.inc")),
+    ("woodmaps.inc", include_str!("stdlib/woodmaps.inc")),
+    ("woods.inc", include_str!("stdlib/woods.inc")),
+    ("stones.inc", include_str!("stdlib/stones.inc")),
+    ("stones1.inc", include_str!("stdlib/stones1.inc")),
+    ("stones2.inc", include_str!("stdlib/stones2.inc")),
+    ("functions.inc", include_str!("stdlib/functions.inc")),
+    ("math.inc", include_str!("stdlib/math.inc")),
+    ("transforms.inc", include_str!("stdlib/transforms.inc")),
+    ("strings.inc", include_str!("stdlib/strings.inc")),
+    ("rand.inc", include_str!("stdlib/rand.inc")),
+    ("arrays.inc", include_str!("stdlib/arrays.inc")),
+    ("shapes.inc", include_str!("stdlib/shapes.inc")),
+    ("shapes_old.inc", include_str!("stdlib/shapes_old.inc")),
+    ("shapes2.inc", include_str!("stdlib/shapes2.inc")),
+    ("shapesq.inc", include_str!("stdlib/shapesq.inc")),
+    ("ior.inc", include_str!("stdlib/ior.inc")),
+    ("debug.inc", include_str!("stdlib/debug.inc")),
+    ("stdinc.inc", include_str!("stdlib/stdinc.inc")),
+    ("stdcam.inc", include_str!("stdlib/stdcam.inc")),
+    ("sunpos.inc", include_str!("stdlib/sunpos.inc")),
+    ("screen.inc", include_str!("stdlib/screen.inc")),
+    ("stage1.inc", include_str!("stdlib/stage1.inc")),
+    ("stoneold.inc", include_str!("stdlib/stoneold.inc")),
+    ("stars.inc", include_str!("stdlib/stars.inc")),
+    ("rad_def.inc", include_str!("stdlib/rad_def.inc")),
+    ("logo.inc", include_str!("stdlib/logo.inc")),
+    ("chars.inc", include_str!("stdlib/chars.inc")),
+    ("shapes3.inc", include_str!("stdlib/shapes3.inc")),
+    ("makegrass.inc", include_str!("stdlib/makegrass.inc")),
+    ("meshmaker.inc", include_str!("stdlib/meshmaker.inc")),
+];
+
+/// Folder name under which embedded include files appear in diagnostics.
+pub(crate) const EMBEDDED_FOLDER: &str = "<durer standard library>";
+
+/// What an entry of the live call trace entered.
+#[derive(Clone, Debug)]
+pub(crate) enum Entering {
+    /// A call of the named macro.
+    Macro(Symbol),
+    /// An include of the named file.
+    File(Rc<str>),
+}
+
+/// One entry of the live call trace: kept cheap (no text is formatted per macro call) and
+/// turned into a [`TraceEntry`] only when a diagnostic needs it.
+#[derive(Clone, Debug)]
+pub(crate) struct Entered {
+    pub(crate) what: Entering,
+    /// Where it was entered from.
+    pub(crate) span: Span,
+}
+
+impl Entered {
+    pub(crate) fn to_trace(&self) -> TraceEntry {
+        let what = match &self.what {
+            Entering::Macro(name) => format!("macro `{name}`"),
+            Entering::File(name) => format!("file `{name}`"),
+        };
+        TraceEntry {
+            what,
+            span: self.span,
+        }
+    }
+}
+
+/// One symbol table: the global one, an include file's or a macro call's.
+pub(crate) type Scope = HashMap<Symbol, Value, FastHash>;
+
+/// The language runtime's state: what a scene file's evaluation knows apart from the scene
+/// it builds.
+pub(crate) struct Runtime {
+    /// Include paths, image size, clock and the other options from outside.
+    pub(crate) options: EvalOptions,
+    /// The text of every file read, for diagnostics.
+    pub(crate) sources: SourceMap,
+    /// The symbol tables: global, then one per include file and macro call.
+    pub(crate) scopes: scopes::ScopeStack,
+    /// Each file parsed once, by canonical path.
+    parsed: HashMap<PathBuf, (FileId, Rc<[Item]>)>,
+    /// The scene file's folder (first on the include path; data files live there).
+    pub(crate) scene_folder: PathBuf,
+    /// The scene file's name, for `input_file_name`.
+    pub(crate) input_file_name: String,
+    /// The live call trace: macro calls and includes entered, outermost first.
+    pub(crate) trace: Vec<Entered>,
+    /// Warnings so far, each distinct message once.
+    pub(crate) warnings: Vec<Diagnostic>,
+    warned_once: std::collections::HashSet<String>,
+    /// Current depth of macro calls, includes and blocks (bounded by [`NESTING_LIMIT`]).
+    pub(crate) nesting: usize,
+    /// The `#version` in force.
+    pub(crate) version: f64,
+    /// Whether the scene declared a `#version` at all.
+    pub(crate) version_declared: bool,
+    /// States of the random streams made by `seed`, indexed by stream number.
+    pub(crate) random_streams: Vec<u32>,
+    /// Geometry prepared for `trace` and the extent functions, by object address.
+    pub(crate) query_worlds:
+        HashMap<usize, (Arc<crate::scene::Object>, Rc<crate::geometry::World>)>,
+    /// Data files opened by `#fopen`; closed ones are `None`.
+    pub(crate) files: Vec<Option<files::DataFile>>,
+    /// Text macro bodies parsed once for all calls (see `token_macro`).
+    pub(crate) text_macro_cache: token_macro::TextMacroCache,
+    /// Running calls with directives among their arguments (see `argument_directives`).
+    pub(crate) directive_cursors: Vec<argument_directives::DirectiveCursor>,
+}
+
+impl Runtime {
+    /// A fresh runtime: empty global scope, nothing read yet, version 3.7.
+    pub(crate) fn new(options: EvalOptions) -> Runtime {
+        Runtime {
+            options,
+            sources: SourceMap::new(),
+            scopes: scopes::ScopeStack::new(),
+            parsed: HashMap::new(),
+            scene_folder: PathBuf::from("."),
+            input_file_name: String::new(),
+            trace: Vec::new(),
+            warnings: Vec::new(),
+            warned_once: Default::default(),
+            nesting: 0,
+            version: 3.7,
+            version_declared: false,
+            random_streams: Vec::new(),
+            query_worlds: HashMap::new(),
+            files: Vec::new(),
+            text_macro_cache: Default::default(),
+            directive_cursors: Vec::new(),
+        }
+    }
+
+    /// An error at `span` carrying the current macro/include trace.
+    pub(crate) fn error(&self, span: Span, message: impl Into<String>) -> Diagnostic {
+        let mut d = Diagnostic::error(span, message);
+        d.trace = self.trace_for_diagnostic();
+        d
+    }
+
+    /// Records a warning (each distinct message once).
+    pub(crate) fn warn(&mut self, span: Span, message: impl Into<String>) {
+        let message = message.into();
+        if self.warned_once.insert(message.clone()) {
+            let mut d = Diagnostic::warning(span, message);
+            d.trace = self.trace_for_diagnostic();
+            self.warnings.push(d);
+        }
+    }
+
+    /// Drops the cached parse of a file the scene is rewriting, so that a later `#include` of
+    /// it (strings.inc's `Parse_String`) reads the new text.
+    pub(crate) fn forget_parsed(&mut self, path: &Path) {
+        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        self.parsed.remove(&key);
+    }
+
+    /// Reads and parses a file once; later loads reuse the AST.
+    pub(crate) fn load_file(&mut self, path: &Path, from: Option<Span>) -> EvalResult<Rc<[Item]>> {
+        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        if let Some((_, items)) = self.parsed.get(&key) {
+            return Ok(items.clone());
+        }
+        let (file, text) = self.read_source(path, from)?;
+        let items = crate::syntax::parse(&text, file).map_err(|mut d| {
+            d.trace = self.trace_for_diagnostic();
+            d
+        })?;
+        self.parsed.insert(key, (file, items.clone()));
+        Ok(items)
+    }
+
+    /// Reads a file (or the embedded file standing for it) and adds it to the sources.
+    pub(crate) fn read_source(
+        &mut self,
+        path: &Path,
+        from: Option<Span>,
+    ) -> EvalResult<(FileId, Arc<str>)> {
+        let embedded = path
+            .strip_prefix(EMBEDDED_FOLDER)
+            .ok()
+            .and_then(|name| EMBEDDED_INCLUDES.iter().find(|(n, _)| Path::new(n) == name))
+            .map(|(_, text)| text.as_bytes().to_vec());
+        let bytes = match embedded {
+            Some(bytes) => Ok(bytes),
+            None => std::fs::read(path),
+        };
+        let bytes = bytes.map_err(|e| {
+            let span = from.unwrap_or_default();
+            let mut d = self.error(span, format!("cannot read `{}`: {e}", path.display()));
+            if from.is_none() {
+                d.span = Span {
+                    file: u32::MAX,
+                    start: 0,
+                    end: 0,
+                };
+            }
+            Box::new(d)
+        })?;
+        let text: Arc<str> = Arc::from(String::from_utf8_lossy(&bytes).into_owned());
+        let file = self.sources.add(path, text.clone());
+        Ok((file, text))
+    }
+
+    /// Finds an include file: the scene's folder, `-L` folders, `DURER_INCLUDE_PATH`,
+    /// then POV-Ray's installed include folder.
+    /// Finds a file on the include search path, or reports `what` (such as "include file")
+    /// as not found at `span` with `label`, listing the folders searched.
+    pub(crate) fn find_file(
+        &self,
+        name: &str,
+        span: Span,
+        what: &str,
+        label: &str,
+    ) -> EvalResult<PathBuf> {
+        self.find_include(name).map_err(|folders| {
+            let searched: Vec<String> = folders.iter().map(|f| f.display().to_string()).collect();
+            self.error(span, format!("cannot find {what} `{name}`"))
+                .with_label(label.to_string())
+                .with_help(format!("searched: {}", searched.join(", ")))
+                .into()
+        })
+    }
+
+    pub(crate) fn find_include(&self, name: &str) -> Result<PathBuf, Vec<PathBuf>> {
+        let direct = Path::new(name);
+        if direct.is_absolute() {
+            return if direct.is_file() {
+                Ok(direct.to_path_buf())
+            } else {
+                Err(vec![])
+            };
+        }
+        let mut folders = vec![self.scene_folder.clone()];
+        folders.extend(self.options.include_paths.iter().cloned());
+        if let Some(paths) = std::env::var_os("DURER_INCLUDE_PATH") {
+            folders.extend(std::env::split_paths(&paths));
+        }
+        if self.options.search_installed_povray {
+            for installed in [
+                "/usr/share/povray-3.7/include",
+                "/usr/local/share/povray-3.7/include",
+            ] {
+                folders.push(PathBuf::from(installed));
+            }
+        }
+        for folder in &folders {
+            let candidate = folder.join(name);
+            if candidate.is_file() {
+                return Ok(candidate);
+            }
+        }
+        if EMBEDDED_INCLUDES.iter().any(|(n, _)| *n == name) {
+            return Ok(Path::new(EMBEDDED_FOLDER).join(name));
+        }
+        Err(folders)
+    }
+
+    /// Runs `#include`: parses the file once and streams its items in a new local scope.
+    pub(crate) fn include(
+        &mut self,
+        name: &str,
+        span: Span,
+        stream: &mut Stream,
+    ) -> EvalResult<()> {
+        let path = self.find_file(name, span, "include file", "included here")?;
+        self.enter_nesting(span)?;
+        self.trace.push(Entered {
+            what: Entering::File(Rc::from(name)),
+            span,
+        });
+        let items = match self.load_file(&path, Some(span)) {
+            Ok(items) => items,
+            Err(e) => {
+                self.trace.pop();
+                self.nesting -= 1;
+                return Err(e);
+            }
+        };
+        self.scopes.push(Scope::default());
+        stream.push_include(items);
+        Ok(())
+    }
+
+    pub(crate) fn enter_nesting(&mut self, span: Span) -> EvalResult<()> {
+        if self.nesting >= NESTING_LIMIT {
+            return Err(self
+                .error(span, format!("nesting deeper than {NESTING_LIMIT} levels"))
+                .with_label("this call or include goes too deep")
+                .with_help("a recursive macro probably never reaches its base case")
+                .into());
+        }
+        self.nesting += 1;
+        Ok(())
+    }
+
+    /// The call trace for a diagnostic, innermost first.
+    pub(crate) fn trace_for_diagnostic(&self) -> Vec<TraceEntry> {
+        self.trace.iter().rev().map(Entered::to_trace).collect()
+    }
+
+    /// Looks an identifier up, innermost scope first, following references.
+    #[inline]
+    pub(crate) fn lookup(&self, name: Symbol) -> Option<&Value> {
+        match self.scopes.innermost_binding(name)?.1 {
+            Value::Reference { scope, name } => self.lookup_from(*scope, *name),
+            other => Some(other),
+        }
+    }
+
+    /// Looks an identifier up in scope `top` and the scopes outside it, following references.
+    pub(crate) fn lookup_from(&self, top: usize, name: Symbol) -> Option<&Value> {
+        let (mut top, mut name) = (top, name);
+        loop {
+            let (index, value) = self.scopes.binding_at_or_below(name, top)?;
+            match value {
+                Value::Reference {
+                    scope,
+                    name: target,
+                } if *scope < index => {
+                    top = *scope;
+                    name = *target;
+                }
+                Value::Reference { .. } => return None,
+                other => return Some(other),
+            }
+        }
+    }
+
+    /// Where `#declare name` writes: the innermost existing version (following references),
+    /// or the global scope for a new name.
+    pub(crate) fn declare_slot(&self, name: Symbol) -> (usize, Symbol) {
+        self.slot_from(self.scopes.len() - 1, name)
+    }
+
+    /// Where `#local name` writes: the innermost scope, except that a macro parameter passed
+    /// an identifier writes through to the caller's variable, as in POV-Ray.
+    pub(crate) fn local_slot(&self, name: Symbol) -> (usize, Symbol) {
+        let innermost = self.scopes.len() - 1;
+        match self.scopes.get(innermost, name) {
+            Some(Value::Reference {
+                scope,
+                name: target,
+            }) if *scope < innermost => self.slot_from(*scope, *target),
+            _ => (innermost, name),
+        }
+    }
+
+    /// The innermost existing version of `name` in scope `top` or outside it, following
+    /// references; the global scope when there is none.
+    fn slot_from(&self, top: usize, name: Symbol) -> (usize, Symbol) {
+        let mut top = top;
+        let mut name = name;
+        loop {
+            match self.scopes.binding_at_or_below(name, top) {
+                Some((i, value)) => match value {
+                    Value::Reference {
+                        scope,
+                        name: target,
+                    } if *scope < i => {
+                        top = *scope;
+                        name = *target;
+                    }
+                    _ => return (i, name),
+                },
+                None => return (0, name),
+            }
+        }
+    }
+
+    /// An "undefined identifier" error with a did-you-mean over visible names and keywords.
+    pub(crate) fn undefined(&self, name: &str, span: Span) -> Diagnostic {
+        let mut d = self
+            .error(span, format!("undefined identifier `{name}`"))
+            .with_label("not declared");
+        let visible = self.scopes.names();
+        let keywords = crate::syntax::keywords::ALL.iter().copied();
+        if let Some(similar) = did_you_mean(name, visible.chain(keywords)) {
+            d = d.with_help(format!("did you mean `{similar}`?"));
+        }
+        d
+    }
+
+    pub(crate) fn set_version(&mut self, version: f64) {
+        if !self.version_declared {
+            self.version_declared = true;
+        }
+        self.version = version;
+    }
+}
