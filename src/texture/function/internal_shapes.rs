@@ -5,7 +5,7 @@
 //! recovered from values povray 3.7 prints with `#debug` (the manual names the parameters but
 //! gives no formulas). Holds: pure functions, no allocation.
 
-use super::internal::Internal;
+use super::internal_table::Internal;
 use std::f64::consts::PI;
 
 /// The largest magnitude the "field strength" functions return: povray clips their values to

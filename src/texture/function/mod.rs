@@ -12,10 +12,11 @@
 pub mod internal;
 mod internal_fractals;
 mod internal_shapes;
+pub mod internal_table;
 pub mod spline;
 mod vector;
 
-pub use internal::Internal;
+pub use internal_table::Internal;
 pub use vector::{Body, Component, Output};
 
 use std::sync::Arc;
