@@ -3,8 +3,8 @@
 
 For every pattern in PATTERNS, evaluates `function { pattern { SPEC } }` at seeded random
 points in one povray run (+W1 +H1, values printed with #debug) and writes
-src/pattern/known_answers.txt, one line per point: `NAME x y z value`. The unit tests in
-src/pattern/noise_based.rs build the same patterns and compare.
+src/texture/pattern/known_answers.txt, one line per point: `NAME x y z value`. The unit tests in
+src/texture/pattern/noise_based.rs build the same patterns and compare.
 
 usage: scripts/probe-patterns.py [--count N] [--output PATH] [--only NAME]
 """
@@ -16,7 +16,7 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-DEFAULT_OUTPUT = os.path.join(HERE, "..", "src", "pattern", "known_answers.txt")
+DEFAULT_OUTPUT = os.path.join(HERE, "..", "src", "texture", "pattern", "known_answers.txt")
 
 # Name (as the Rust tests know it) and the pattern block povray evaluates.
 PATTERNS = [

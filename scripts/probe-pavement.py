@@ -5,13 +5,13 @@
 1-5, every pattern) finds which lattice edges are tile borders (a border edge's midpoint
 has the value 1), finds the smallest block of lattice cells the paving repeats over and
 prints the SQUARE_PAVINGS, TRIANGLE_PAVINGS and HEXAGON_PAVINGS tables of
-src/pattern/pavement.rs. Squares: per cell, bit 0 its bottom edge, bit 1 its left edge.
+src/texture/pattern/pavement.rs. Squares: per cell, bit 0 its bottom edge, bit 1 its left edge.
 Triangles: the lattice points are P(i, j) = (i + j/2, j √3/2); per point, bit 0 the edge
 to P(i+1, j), bit 1 the edge to P(i, j+1), bit 2 the edge from P(i+1, j) to P(i, j+1).
 Hexagons use the triangle lattice (each hexagon is the six triangles around a point).
 
 `answers`: evaluates every paving at seeded random points under random form / exterior /
-interior settings and writes src/pattern/pavement_answers.txt, one line per point:
+interior settings and writes src/texture/pattern/pavement_answers.txt, one line per point:
 `sides tiles pattern form exterior interior x z value`; the unit tests in pavement.rs
 compare against it.
 
@@ -28,7 +28,7 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-DEFAULT_OUTPUT = os.path.join(HERE, "..", "src", "pattern", "pavement_answers.txt")
+DEFAULT_OUTPUT = os.path.join(HERE, "..", "src", "texture", "pattern", "pavement_answers.txt")
 
 # Patterns per number of tiles (manual, "Pavement Pattern"), by number of sides.
 PATTERN_COUNTS = {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Measure the wave sources of POV-Ray 3.7's ripples and waves patterns, black-box.
 
-Checks, against povray, the model src/pattern/waves.rs implements (needs numpy):
+Checks, against povray, the model src/texture/pattern/waves.rs implements (needs numpy):
 
 1. centres: source i is POV-Ray's vector noise at <i, 0, 0>, normalised (read through
    povray's own `vturbulence(2, 0.5, 1, <i, 0, 0>)`); ripples values at random points

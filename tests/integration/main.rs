@@ -1,5 +1,6 @@
 //! Integration tests: language cases, diagnostics and the command line.
 
+mod architecture;
 mod cli;
 mod diagnostics;
 mod includes;
