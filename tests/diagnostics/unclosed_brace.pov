@@ -1,3 +1,6 @@
+// error: 4:8 unclosed `{`
+// error-text: this `{` is never closed
+
 sphere { <0, 0, 0>, 1
   pigment { rgb 1 }
 
