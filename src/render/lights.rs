@@ -1,8 +1,10 @@
-//! Light arriving at a surface point: distance fading, spotlight cones and shadows.
+//! Light leaving a source for a surface point: distance fading, spotlight cones and
+//! cylinder beams, before anything blocks it.
 //!
-//! In: a [`LightSource`], a world point and the [`World`]. Out: the light's colour as it
-//! arrives at the point (black when blocked). Holds: no allocation; shadow rays run
-//! straight (refraction is ignored, as POV-Ray does without photons).
+//! In: a [`LightSource`] and a world point (and the [`Scene`], whose lights are prepared
+//! once). Out: [`Incoming`], the direction, colour and shadow-ray length of the light as it
+//! arrives at the point, before shadows (see [`super::shadows`]). Holds: no allocation per
+//! point.
 //!
 //! Rules measured against POV-Ray 3.7 renders (16-bit output, errors below 2e-5):
 //! - fading: with `fade_distance` d₀ > 0 and `fade_power` p > 0 the light is multiplied by
@@ -11,16 +13,6 @@
 //!   cr = cos(radius), cf = cos(falloff) (cf raised to cr when falloff < radius): zero when
 //!   c < cf; `c^tightness` when c ≥ cr; between, `c^tightness · s²(3 − 2s)` with
 //!   s = (c − cf)/(cr − cf). A negative radius acts through its cosine.
-//! - shadows (see [`super::photons`] for photon targets): every surface between the point
-//!   and the light that is not `no_shadow` multiplies the light by
-//!   `filter · pigment + transmit` of its pigment at the crossing (no clamping; so a
-//!   sphere of `rgbf <0.8,0.5,0.2,1>` passes 0.64, 0.25, 0.04); an opaque surface gives
-//!   zero. The number of surfaces is not limited by
-//!   `max_trace_level`. `shadowless` lights are never blocked. Surfaces closer than 1e-3 to
-//!   the lit point are ignored. Interiors with `fade_distance` and a positive `fade_power`
-//!   (unlike camera rays, which fade with 0 too) fade the light over the length the shadow
-//!   ray runs inside them; interiors with `caustics` brighten it at each
-//!   crossing (fake caustics, see [`fake_caustics`]).
 //! - parallel lights: shadow rays run along the light's direction up to the plane through
 //!   the light perpendicular to it; points beyond that plane are lit but never shadowed.
 //!   Cylinder lights do the same along their axis (their shadows do not spread; measured
@@ -30,18 +22,8 @@
 //! - area lights: see [`super::area_light`]; the diffuse and highlight directions are the
 //!   centre's unless `area_illumination` is on.
 
-use super::area_light::AreaArray;
-use super::atmosphere::fog_transmittance;
-use super::media::transmittance;
-use super::reflection::interior_fade;
-use super::texture::surface_pigment;
-use crate::geometry::{Material, Ray, SurfaceHit, World};
-use crate::texture::normal::perturbed_normal;
-use crate::texture::pigment::hit_surface;
-use crate::{
-    math::Colour,
-    scene::{Fog, LightPhotons, LightSource, Media, Scene, Spotlight},
-};
+use crate::geometry::World;
+use crate::scene::{Fog, LightPhotons, LightSource, Media, Scene, Spotlight};
 use glam::DVec3;
 
 /// A light ready for rendering: the source and what its shadow tests need.
@@ -85,90 +67,6 @@ pub fn prepare_lights(scene: &Scene) -> Vec<SceneLight> {
         })
         .collect()
 }
-
-/// What part of the light `arriving` at `point` gets there past shadows and through a
-/// `projected_through` object; over the whole array of an area light when `array` is given.
-pub fn light_filter(
-    light: &SceneLight,
-    world: &World,
-    point: DVec3,
-    arriving: &Incoming,
-    array: Option<&AreaArray>,
-) -> DVec3 {
-    let Some(array) = array else {
-        return filter_along(
-            light,
-            world,
-            point,
-            arriving.direction,
-            arriving.distance,
-            arriving.can_be_shadowed,
-        );
-    };
-    array.average(&mut |position: DVec3| {
-        let offset = position - point;
-        let distance = offset.length();
-        match offset.try_normalize() {
-            Some(direction) => filter_along(
-                light,
-                world,
-                point,
-                direction,
-                distance,
-                arriving.can_be_shadowed,
-            ),
-            None => DVec3::ONE,
-        }
-    })
-}
-
-/// The light passing from `distance` away along `direction` to `point`: zero when a
-/// `projected_through` object is not crossed; shadows count only up to that object.
-fn filter_along(
-    light: &SceneLight,
-    world: &World,
-    point: DVec3,
-    direction: DVec3,
-    distance: f64,
-    can_be_shadowed: bool,
-) -> DVec3 {
-    let mut limit = distance;
-    if let Some(through) = &light.projected_through {
-        let ray = Ray {
-            origin: point,
-            direction,
-        };
-        match through.first_hit(&ray, SHADOW_EPSILON, distance) {
-            Some(hit) => limit = hit.distance,
-            None => return DVec3::ZERO,
-        }
-    }
-    let mut filter = if can_be_shadowed {
-        shadow_filter(world, point, direction, limit, light.photon_targets_block)
-    } else {
-        DVec3::ONE
-    };
-    if !light.attenuating_media.is_empty() && filter != DVec3::ZERO {
-        filter *= transmittance(
-            &light.attenuating_media,
-            point,
-            direction,
-            (0.0, limit),
-            false,
-        );
-    }
-    for fog in &light.attenuating_fogs {
-        filter *= fog_transmittance(fog, point, direction, limit);
-    }
-    filter
-}
-
-/// Shadow rays ignore surfaces closer than this to the lit point (measured in POV-Ray 3.7
-/// with thin boxes and small spheres just off a lit plane: hits below 1e-3 do not shadow).
-const SHADOW_EPSILON: f64 = 1e-3;
-
-/// At most this many transparent surfaces are followed along one shadow ray.
-const MAX_SHADOW_SURFACES: u32 = 10_000;
 
 /// Light from one source arriving at a surface point, before shadows.
 #[derive(Clone, Copy, Debug)]
@@ -283,138 +181,6 @@ pub fn cylinder_factor(spot: &Spotlight, position: DVec3, point: DVec3) -> f64 {
     factor
 }
 
-/// The part of a light that passes a surface with this pigment: `filter · rgb + transmit`.
-pub fn transmission(pigment: Colour) -> DVec3 {
-    pigment.rgb_vec() * pigment.filter + DVec3::splat(pigment.transmit)
-}
-
-/// What fraction of the light from `distance` away along `direction` reaches `point`.
-///
-/// Light also fades through objects whose interior has `fade_distance` and a positive
-/// `fade_power`, over the length between entering and leaving them (from the lit point when
-/// it is inside). With `photon_targets_block` (the light's photons block), photon targets
-/// that refract the light's photons are opaque.
-pub fn shadow_filter(
-    world: &World,
-    point: DVec3,
-    direction: DVec3,
-    distance: f64,
-    photon_targets_block: Option<LightPhotons>,
-) -> DVec3 {
-    let ray = Ray {
-        origin: point,
-        direction,
-    };
-    let mut filter = DVec3::ONE;
-    let mut start = SHADOW_EPSILON;
-    // Surfaces through the light itself do not shadow it (POV-Ray lights cornell.pov's walls
-    // from lights lying in its ceiling's plane), whatever the rounding of their distance.
-    let distance = distance - SHADOW_EPSILON;
-    // The last object entered along the ray and where.
-    let mut entered: Option<(u32, f64)> = None;
-    for _ in 0..MAX_SHADOW_SURFACES {
-        let Some(hit) = world.first_shadow_hit(&ray, start, distance) else {
-            return filter;
-        };
-        let Some(material) = world.materials.get(hit.material as usize) else {
-            return DVec3::ZERO;
-        };
-        if photon_targets_block.is_some_and(|light| material.photons.refracts_for(&light))
-            && !material.no_image
-            && material.photons.target().is_some()
-            && !material.photons.pass_through()
-        {
-            return DVec3::ZERO;
-        }
-        filter *= hit_transmission(world, &hit, direction);
-        if material.interior.caustics > 0.0 {
-            filter *= fake_caustics(material, &hit, direction);
-        }
-        if direction.dot(hit.normal) < 0.0 {
-            entered = Some((hit.material, hit.distance));
-        } else {
-            let (since, from_outside) = match entered {
-                Some((id, at)) if id == hit.material => (at, true),
-                Some(_) => (hit.distance, true),
-                None => (0.0, false),
-            };
-            // Shadow rays fade only with a positive `fade_power`; camera rays also fade with
-            // 0 (measured).
-            if material.interior.fade_power > 0.0 {
-                if let Some(kept) = interior_fade(&material.interior, hit.distance - since) {
-                    filter *= kept;
-                }
-            }
-            // Absorbing and scattering media inside the object cast shadows.
-            if !material.interior.media.is_empty() {
-                filter *= transmittance(
-                    &material.interior.media,
-                    point,
-                    direction,
-                    (since, hit.distance),
-                    from_outside,
-                );
-            }
-            entered = None;
-        }
-        if !filter.is_finite() || filter.abs().max_element() < 1e-12 {
-            return DVec3::ZERO;
-        }
-        start = hit.distance + SHADOW_EPSILON;
-    }
-    DVec3::ZERO
-}
-
-/// The part of the light along `direction` that passes the surface at `hit`: through its
-/// pigment there (uv-mapped pigments at the hit's uv coordinates), blended over the corner
-/// textures of a mesh triangle whose corners differ.
-fn hit_transmission(world: &World, hit: &SurfaceHit, direction: DVec3) -> DVec3 {
-    let surface = hit_surface(hit.point, direction, hit.normal);
-    let through = |material: u32| {
-        world
-            .materials
-            .get(material as usize)
-            .map_or(DVec3::ZERO, |material| {
-                let texture = material.texture_facing(direction, hit.normal);
-                transmission(surface_pigment(texture, hit, &surface))
-            })
-    };
-    match &hit.corner_blend {
-        Some(blend) => blend
-            .materials
-            .iter()
-            .zip(blend.weights)
-            .map(|(&material, weight)| through(material) * weight.max(0.0))
-            .sum(),
-        None => through(hit.material),
-    }
-}
-
-/// The exponent of fake caustics per unit of `caustics` (measured: see [`fake_caustics`]).
-const CAUSTICS_EXPONENT: f64 = 45.0;
-
-/// How much brighter light gets crossing a surface with interior `caustics` c:
-/// `1 + |cos a|^(45 c)`, a the angle between the shadow ray and the (perturbed) surface
-/// normal, turned towards the lit point before a `normal { }` perturbs it (with the
-/// other side, bumps under a light straight above come out darker than POV-Ray's; this
-/// way they match exactly). Measured in POV-Ray 3.7 with tilted discs, boxes and spheres
-/// under a light straight above: 1.502 at 10 degrees with c = 1 (0.842, 0.709, 0.252, 0.064 more for c =
-/// 0.25, 0.5, 2, 4), 1.0016 at 30 degrees, 2 when the ray runs along the normal; every
-/// crossed surface multiplies, filter and transmit alike.
-fn fake_caustics(material: &Material, hit: &SurfaceHit, direction: DVec3) -> f64 {
-    let mut normal = hit.normal;
-    if let Some(perturbation) = &material.texture.normal {
-        let facing = if direction.dot(normal) < 0.0 {
-            normal
-        } else {
-            -normal
-        };
-        normal = perturbed_normal(perturbation, hit.point, hit.uv, facing);
-    }
-    let cosine = direction.dot(normal).abs().min(1.0);
-    1.0 + cosine.powf(CAUSTICS_EXPONENT * material.interior.caustics)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -496,12 +262,5 @@ mod tests {
             ..light
         };
         assert_eq!(fade_factor(&unfaded, 100.0), 1.0);
-    }
-
-    #[test]
-    fn transmission_of_pigments() {
-        let t = transmission(Colour::rgbft(0.8, 0.5, 0.2, 0.5, 0.3));
-        assert!((t - DVec3::new(0.7, 0.55, 0.4)).length() < 1e-15);
-        assert_eq!(transmission(Colour::rgb(0.8, 0.5, 0.2)), DVec3::ZERO);
     }
 }

@@ -5,7 +5,8 @@
 //! plus the scene's atmospheric media outside non-hollow objects), the lights and the
 //! world for shadow tests. Out: what the stretch lets through of the light behind it and
 //! what it adds. Holds: no allocation; sample positions are fixed or hashed from the ray,
-//! so results do not depend on thread count.
+//! so results do not depend on thread count. Shadow rays through media: see
+//! [`super::extinction`].
 //!
 //! Rules measured against POV-Ray 3.7 (16-bit renders of boxes of media seen head-on):
 //! - each sample gives a light (emission plus scattered light, both times the density)
@@ -39,17 +40,15 @@
 //!   0.7994 (1 + c²); Henyey-Greenstein (1 − g²) / (1 + g² − 2 g c)^1.5.
 
 use super::antialias::mix64;
-use super::lights::{incoming, light_filter, SceneLight};
+use super::extinction::{density_at, exp_neg, DEFAULT_MEDIA, MAX_INTERVAL_SAMPLES};
+use super::lights::{incoming, SceneLight};
+use super::shadows::light_filter;
 use crate::geometry::World;
 use crate::scene::{LightGroup, Media, ScatteringKind};
-use crate::texture::pigment::pigment_colour;
 use glam::DVec3;
 
 /// How far a ray that hits nothing runs through atmospheric media (measured).
 pub const UNBOUNDED_MEDIA_LENGTH: f64 = 2e10;
-
-/// Stand-in settings for an empty list of media.
-static DEFAULT_MEDIA: std::sync::LazyLock<Media> = std::sync::LazyLock::new(Media::default);
 
 /// At most this many media blocks act together along one stretch of a ray.
 pub const MAX_ACTIVE_MEDIA: usize = 16;
@@ -460,13 +459,6 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
     [Some((-b - root) / (2.0 * a)), Some((-b + root) / (2.0 * a))]
 }
 
-/// At most this many samples are taken along one ray's shadow stretch by methods 1 and 2.
-const MAX_EVEN_SAMPLES: u32 = 100_000;
-
-/// At most this many samples are taken in one interval (methods 1 and 2), on viewing and
-/// shadow rays alike; a larger `samples` (the parser takes up to 10,000) is cut to it.
-const MAX_INTERVAL_SAMPLES: usize = 256;
-
 /// Running mean and variance of sample lights (Welford's method), per channel.
 #[derive(Default)]
 struct Spread {
@@ -597,81 +589,6 @@ impl Refinement<'_, '_> {
     }
 }
 
-/// What `media` let through along the ray from `origin` along unit `direction` between
-/// distances `start` and `end` (for shadow rays: the light's dimming on its way).
-///
-/// Measured in POV-Ray 3.7 (step and ramp densities in an absorbing box crossed by the
-/// shadow rays of a scattering slab): method 3 takes the pieces of viewing rays (N =
-/// max(2, ⌊n/2⌋ + 1) pieces of weight L/N whose samples lie L/(N + 1) apart) without
-/// subdividing them, except that the first piece's starting sample is taken at the
-/// stretch's far end when the ray `entered` the container at `start` (for a ray starting
-/// inside, the pieces are those of viewing rays); methods 1 and 2 sample the middles of
-/// `intervals · samples` equal pieces. Both are exact for constant densities.
-pub fn transmittance(
-    media: &[Media],
-    origin: DVec3,
-    direction: DVec3,
-    (start, end): (f64, f64),
-    entered: bool,
-) -> DVec3 {
-    let length = end - start;
-    if !(length > 0.0 && length.is_finite() && media.iter().any(Media::extinguishes)) {
-        return DVec3::ONE;
-    }
-    let extinction_at = |t: f64| {
-        let at = origin + direction * t;
-        media
-            .iter()
-            .filter(|m| m.extinguishes())
-            .map(|item| extinction_of(item) * density_at(item, at))
-            .sum::<DVec3>()
-    };
-    let ruling = media.first().unwrap_or(&DEFAULT_MEDIA);
-    let (method, samples) = (ruling.method, ruling.samples.0);
-    let mut depth = DVec3::ZERO;
-    if method == 3 {
-        let pieces = (samples / 2 + 1).max(2);
-        let spacing = length / f64::from(pieces + 1);
-        let weight = length / f64::from(pieces);
-        let mut at_start = extinction_at(if entered { end } else { start });
-        for piece in 0..pieces {
-            let from = start + f64::from(piece) * spacing;
-            let middle = extinction_at(from + 0.5 * spacing);
-            let at_end = extinction_at(from + spacing);
-            depth += (at_start + middle + at_end) * (weight / 3.0);
-            at_start = at_end;
-        }
-    } else {
-        let count = ruling
-            .intervals
-            .saturating_mul(samples.min(MAX_INTERVAL_SAMPLES as u32))
-            .clamp(1, MAX_EVEN_SAMPLES);
-        let step = length / f64::from(count);
-        for index in 0..count {
-            depth += extinction_at(start + (f64::from(index) + 0.5) * step) * step;
-        }
-    }
-    exp_neg(depth)
-}
-
-/// Absorption plus scattering extinction of `media` at density 1.
-fn extinction_of(media: &Media) -> DVec3 {
-    let scattering = media
-        .scattering
-        .as_ref()
-        .map_or(DVec3::ZERO, |s| s.colour * s.extinction);
-    media.absorption + scattering
-}
-
-/// The (colour) density of `media` at `point`: its densities multiplied.
-fn density_at(media: &Media, point: DVec3) -> DVec3 {
-    let mut density = DVec3::ONE;
-    for pigment in &media.densities {
-        density *= pigment_colour(pigment, point).rgb_vec();
-    }
-    density
-}
-
 /// The phase function for the cosine `c` between the ray and the direction to the light.
 fn phase(kind: ScatteringKind, c: f64) -> f64 {
     let forward = 0.5 * (1.0 + c);
@@ -685,11 +602,6 @@ fn phase(kind: ScatteringKind, c: f64) -> f64 {
             (1.0 - g * g) / denominator.powf(1.5)
         }
     }
-}
-
-/// `exp(−x)` per channel.
-fn exp_neg(x: DVec3) -> DVec3 {
-    DVec3::new((-x.x).exp(), (-x.y).exp(), (-x.z).exp())
 }
 
 /// A hash of the stretch's ray, for jitter.

@@ -8,11 +8,13 @@
 //! end as black pixels).
 //!
 //! Each module states the POV-Ray rules it implements and the renders they were measured
-//! from: [`camera`] (pixel to ray), [`pattern`] (pigments and their maps), [`normal`]
-//! (normal perturbation), [`texture`] (layered and patterned textures), [`image_map`],
-//! [`lights`] (fading, spotlights, shadows), [`shading`] (ambient, diffuse, highlights),
+//! from: [`camera`] (pixel to ray), [`surface`] (layered and patterned textures at a hit),
+//! [`lights`] (fading, spotlights), [`shadows`] (shadow rays), [`extinction`] (media
+//! dimming shadow rays), [`media`] (media along viewing rays), [`shading`] (ambient,
+//! diffuse, highlights), [`optics`] (reflection, refraction, fading inside objects),
 //! [`trace`] (transparency, refraction, reflection, trace levels), [`encoding`] (gamma and
-//! rounding to bytes) and [`output`] (PNG file).
+//! rounding to bytes) and [`output`] (PNG file). Pigments, normals and image maps are
+//! [`crate::texture`]'s.
 
 pub mod antialias;
 pub mod area_light;
@@ -20,18 +22,20 @@ pub mod atmosphere;
 pub mod camera;
 pub mod dispersion;
 pub mod encoding;
+pub mod extinction;
 pub mod focal_blur;
 pub mod iridescence;
 pub mod lights;
 pub mod media;
 pub mod mesh_camera;
+pub mod optics;
 pub mod output;
 pub mod photons;
 pub mod radiosity;
 pub mod radiosity_index;
-pub mod reflection;
 pub mod shading;
-pub mod texture;
+pub mod shadows;
+pub mod surface;
 pub mod trace;
 
 #[cfg(test)]

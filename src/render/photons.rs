@@ -55,10 +55,10 @@
 
 use super::antialias::unit_hash;
 use super::lights::{fade_factor, incoming};
-use super::reflection::{interior_fade, reflection_colour};
-use super::shading::mirror;
-use super::texture::surface_pigment;
-use super::trace::{refract, sanitise_ior, SURFACE_EPSILON};
+use super::optics::{
+    interior_fade, mirror, reflection_colour, refract, sanitise_ior, SURFACE_EPSILON,
+};
+use super::surface::surface_pigment;
 use crate::geometry::{Ray, World};
 use crate::scene::{LightSource, PhotonDensity, PhotonSettings, Scene};
 use crate::texture::pigment::hit_surface;
@@ -700,7 +700,7 @@ impl Shooter<'_> {
                 .clamp(DVec3::ZERO, DVec3::ONE);
         let mut reflection = if reflects { reflectance } else { DVec3::ZERO };
         if refracts {
-            let mut pass = super::lights::transmission(pigment).clamp(DVec3::ZERO, DVec3::ONE);
+            let mut pass = super::optics::transmission(pigment).clamp(DVec3::ZERO, DVec3::ONE);
             if texture.finish.conserve_energy {
                 // What the surface reflects does not pass (as for camera rays).
                 pass *= DVec3::ONE - reflectance;

@@ -19,11 +19,12 @@
 
 use super::area_light::{point_random, AreaArray, Sampled};
 use super::iridescence::{irid_thickness, iridescence};
-use super::lights::{incoming, light_filter, Incoming, SceneLight};
+use super::lights::{incoming, Incoming, SceneLight};
+use super::optics::{highlight_tint, mirror};
+use super::shadows::light_filter;
 use crate::geometry::World;
 use crate::{math::Colour, scene::LightGroup, texture::finish::Finish};
 use glam::DVec3;
-use std::f64::consts::FRAC_PI_2;
 use std::ops::{Add, Div};
 
 /// Salt of the random numbers behind `crand`.
@@ -259,52 +260,4 @@ fn lit_by(
         }
     }
     lit
-}
-
-/// `direction` mirrored about the plane with unit normal `normal`.
-pub fn mirror(direction: DVec3, normal: DVec3) -> DVec3 {
-    direction - 2.0 * direction.dot(normal) * normal
-}
-
-/// The factor `metallic` applies to highlight colours for light at this incidence.
-pub(crate) fn highlight_tint(metallic: f64, cos_incidence: f64, pigment: DVec3) -> DVec3 {
-    if metallic == 0.0 {
-        return DVec3::ONE;
-    }
-    let x = cos_incidence.clamp(-1.0, 1.0).acos() / FRAC_PI_2;
-    let fresnel = (0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903).clamp(0.0, 1.0);
-    DVec3::ONE + metallic * (1.0 - fresnel) * (pigment - DVec3::ONE)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn metallic_tint_matches_povray_samples() {
-        // Ratio of the metallic to the plain phong highlight read from POV-Ray 3.7 renders
-        // of pigment <0.9, 0.5, 0.2>, at N·L = 0.764 (metallic 1) and 0.9952 (metallic 0.5).
-        let pigment = DVec3::new(0.9, 0.5, 0.2);
-        let tint = highlight_tint(1.0, 0.7639342218884229, pigment);
-        assert!(
-            (tint - DVec3::new(0.90204395, 0.51025608, 0.21641104))
-                .abs()
-                .max_element()
-                < 1e-4
-        );
-        let tint = highlight_tint(0.5, 0.9951868832137065, pigment);
-        assert!(
-            (tint - DVec3::new(0.95006992, 0.750368, 0.60057197))
-                .abs()
-                .max_element()
-                < 1e-4
-        );
-        assert_eq!(highlight_tint(0.0, 0.5, pigment), DVec3::ONE);
-    }
-
-    #[test]
-    fn mirror_reverses_normal_component() {
-        let reflected = mirror(DVec3::new(1.0, -1.0, 0.0), DVec3::Y);
-        assert_eq!(reflected, DVec3::new(1.0, 1.0, 0.0));
-    }
 }

@@ -42,13 +42,16 @@
 use super::atmosphere::AtmosphereShader;
 use super::dispersion::Bands;
 use super::encoding::is_legacy_scene;
-use super::lights::{prepare_lights, transmission, SceneLight};
+use super::lights::{prepare_lights, SceneLight};
 use super::media::{ActiveMedia, MediaShader, Stretch};
+use super::optics::{
+    apply_exponent, interior_fade, mirror, reflection_colour, refract, sanitise_ior, transmission,
+    SURFACE_EPSILON,
+};
 use super::photons::PhotonMap;
 use super::radiosity::{Gathered, Radiosity};
-use super::reflection::{apply_exponent, interior_fade, reflection_colour};
-use super::shading::{local_light, mirror, SurfaceSample};
-use super::texture::{for_each_component, pigment_at_hit};
+use super::shading::{local_light, SurfaceSample};
+use super::surface::{for_each_component, pigment_at_hit};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
 use crate::texture::normal::perturbed_normal_at;
 use crate::texture::pigment::hit_surface;
@@ -56,27 +59,22 @@ use crate::{scene::Scene, texture::Texture};
 use glam::DVec3;
 use std::cell::Cell;
 
-/// Camera, reflected and transmitted rays ignore surfaces closer than this to their start
-/// (measured: POV-Ray 3.7 ignores planes, discs, triangles, boxes and spheres nearer than
-/// 1e-4 to the camera or to the surface a secondary ray leaves).
-pub const SURFACE_EPSILON: f64 = 1e-4;
-
 /// POV-Ray's upper limit for `max_trace_level`.
 const TRACE_LEVEL_LIMIT: u32 = 256;
 
 /// At most this many surfaces are passed without bending along one ray.
 const MAX_CONTINUATIONS: u32 = 100_000;
 
-/// How many nested media a ray remembers; deeper nesting forgets the outermost.
-const MEDIA_DEPTH: usize = 16;
+/// How many nested objects a ray remembers; deeper nesting forgets the outermost.
+const INTERIOR_STACK_DEPTH: usize = 16;
 
 /// Weights of red, green and blue in POV-Ray's grey value of a colour.
 const GREY_WEIGHTS: DVec3 = DVec3::new(0.297, 0.589, 0.114);
 
 /// The objects (by material) a ray is inside, innermost last, with their indices of refraction.
 #[derive(Clone, Copy, Debug)]
-pub struct Media {
-    entries: [(u32, f64); MEDIA_DEPTH],
+pub struct InteriorStack {
+    entries: [(u32, f64); INTERIOR_STACK_DEPTH],
     len: usize,
     /// For a ray of one dispersion band: the exponent applied to `dispersion`.
     band: Option<f64>,
@@ -87,10 +85,10 @@ pub struct Media {
     radiosity_depth: u32,
 }
 
-impl Media {
+impl InteriorStack {
     /// A ray in empty space (index of refraction 1).
-    pub const OUTSIDE: Media = Media {
-        entries: [(0, 1.0); MEDIA_DEPTH],
+    pub const OUTSIDE: InteriorStack = InteriorStack {
+        entries: [(0, 1.0); INTERIOR_STACK_DEPTH],
         len: 0,
         band: None,
         in_solid: false,
@@ -115,49 +113,49 @@ impl Media {
         self.entries[..self.len].iter().map(|entry| entry.0)
     }
 
-    /// The media after entering an object with this material and index.
-    fn entered(&self, material: u32, ior: f64) -> Media {
-        let mut media = *self;
-        if media.len == MEDIA_DEPTH {
-            media.entries.copy_within(1.., 0);
-            media.len -= 1;
+    /// The stack after entering an object with this material and index.
+    fn entered(&self, material: u32, ior: f64) -> InteriorStack {
+        let mut stack = *self;
+        if stack.len == INTERIOR_STACK_DEPTH {
+            stack.entries.copy_within(1.., 0);
+            stack.len -= 1;
         }
-        media.entries[media.len] = (material, ior);
-        media.len += 1;
-        media
+        stack.entries[stack.len] = (material, ior);
+        stack.len += 1;
+        stack
     }
 
-    /// The media after leaving an object with this material (unchanged when the ray was not
+    /// The stack after leaving an object with this material (unchanged when the ray was not
     /// known to be inside it, e.g. a camera inside an object).
-    fn left(&self, material: u32) -> Media {
-        let mut media = *self;
-        if let Some(at) = media.entries[..media.len]
+    fn left(&self, material: u32) -> InteriorStack {
+        let mut stack = *self;
+        if let Some(at) = stack.entries[..stack.len]
             .iter()
             .rposition(|entry| entry.0 == material)
         {
-            media.entries.copy_within(at + 1..media.len, at);
-            media.len -= 1;
+            stack.entries.copy_within(at + 1..stack.len, at);
+            stack.len -= 1;
         }
-        media
+        stack
     }
 }
 
-/// The media of a ray starting at `point`: inside every object around it, outermost first
+/// The stack of a ray starting at `point`: inside every object around it, outermost first
 /// (measured: a camera inside a hollow sphere of media sees the media from its first step).
-fn media_around(world: &World, point: DVec3) -> Media {
-    let start = Media {
+fn interiors_around(world: &World, point: DVec3) -> InteriorStack {
+    let start = InteriorStack {
         in_solid: world.inside_solid(point),
-        ..Media::OUTSIDE
+        ..InteriorStack::OUTSIDE
     };
     world
         .materials_around(point)
         .into_iter()
-        .fold(start, |media, id| {
+        .fold(start, |stack, id| {
             let ior = world
                 .materials
                 .get(id as usize)
                 .map_or(1.0, |material| sanitise_ior(material.interior.ior));
-            media.entered(id, ior)
+            stack.entered(id, ior)
         })
 }
 
@@ -181,7 +179,7 @@ pub struct Tracer<'a> {
     /// What camera rays start in: the objects around the camera (their media fill the
     /// rays from the start, their index of refraction bends them), flagged when one of
     /// them is not hollow (camera rays then see no fog or media).
-    camera_media: Media,
+    camera_interiors: InteriorStack,
     /// Radiosity's `media on`: gathering rays see media.
     gathering_sees_media: bool,
     /// Some object is `no_radiosity` (radiosity's gathering rays must skip it).
@@ -234,7 +232,7 @@ impl<'a> Tracer<'a> {
                 .map_or(f64::INFINITY, |m| m.reach()),
             any_media: !scene.atmosphere.media.is_empty()
                 || world.materials.iter().any(|m| !m.interior.media.is_empty()),
-            camera_media: media_around(world, scene.camera.location),
+            camera_interiors: interiors_around(world, scene.camera.location),
             gathering_sees_media: settings.radiosity.as_ref().is_some_and(|r| r.use_media),
             any_no_radiosity: world.materials.iter().any(|m| m.no_radiosity),
             radiosity: settings
@@ -251,18 +249,24 @@ impl<'a> Tracer<'a> {
     }
 
     /// Indirect light arriving at a surface point from the hemisphere around `normal`,
-    /// for a ray `media` describes at trace `level` (zero without radiosity).
-    fn indirect_light(&self, point: DVec3, normal: DVec3, level: u32, media: &Media) -> DVec3 {
+    /// for a ray `inside` describes at trace `level` (zero without radiosity).
+    fn indirect_light(
+        &self,
+        point: DVec3,
+        normal: DVec3,
+        level: u32,
+        inside: &InteriorStack,
+    ) -> DVec3 {
         let Some(radiosity) = &self.radiosity else {
             return DVec3::ZERO;
         };
-        let depth = media.radiosity_depth;
+        let depth = inside.radiosity_depth;
         if !radiosity.lights_depth(depth) || level >= self.max_trace_level {
             return DVec3::ZERO;
         }
-        let gathering = Media {
+        let gathering = InteriorStack {
             radiosity_depth: depth + 1,
-            ..Media::OUTSIDE
+            ..InteriorStack::OUTSIDE
         };
         radiosity.irradiance(point, normal, depth, &|direction| {
             let ray = Ray {
@@ -286,7 +290,7 @@ impl<'a> Tracer<'a> {
             *ray,
             1,
             RayWeight::CAMERA,
-            &self.camera_media,
+            &self.camera_interiors,
             RayKind::Camera,
         );
         if colour.is_finite() {
@@ -296,16 +300,17 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    /// The colour seen along `ray`, a ray of trace `level` and ADC `weight` inside `media`.
+    /// The colour seen along `ray`, a ray of trace `level` and ADC `weight` inside the
+    /// objects of `inside`.
     fn trace(
         &self,
         ray: Ray,
         level: u32,
         weight: RayWeight,
-        media: &Media,
+        inside: &InteriorStack,
         kind: RayKind,
     ) -> DVec3 {
-        self.trace_measuring(ray, level, weight, media, kind).0
+        self.trace_measuring(ray, level, weight, inside, kind).0
     }
 
     /// [`Self::trace`]'s colour and the distance to the first surface the ray meets
@@ -315,12 +320,12 @@ impl<'a> Tracer<'a> {
         ray: Ray,
         level: u32,
         weight: RayWeight,
-        media: &Media,
+        inside: &InteriorStack,
         kind: RayKind,
     ) -> (DVec3, f64) {
         // Distance to the first surface met, once one is met.
         let mut first_distance = f64::INFINITY;
-        let mut media = *media;
+        let mut inside = *inside;
         let mut weight = weight;
         let mut min_distance = SURFACE_EPSILON;
         // Product of the transmission of the surfaces passed so far without bending.
@@ -335,7 +340,7 @@ impl<'a> Tracer<'a> {
                 let start = ray.origin + ray.direction * segment_start;
                 let end = hit.as_ref().map_or(f64::INFINITY, |hit| hit.distance);
                 // Fog does not fill non-hollow objects.
-                if self.all_hollow(&media) {
+                if self.all_hollow(&inside) {
                     let (keep, add) =
                         self.atmosphere
                             .along(start, ray.direction, end - segment_start);
@@ -346,9 +351,9 @@ impl<'a> Tracer<'a> {
             }
             // Radiosity's gathering rays see media only with its `media on` (POV-Ray's
             // default is off).
-            if self.any_media && (media.radiosity_depth == 0 || self.gathering_sees_media) {
+            if self.any_media && (inside.radiosity_depth == 0 || self.gathering_sees_media) {
                 let end = hit.as_ref().map_or(f64::INFINITY, |hit| hit.distance);
-                let (keep, add) = self.media_along(&ray, &media, travelled, end);
+                let (keep, add) = self.media_along(&ray, &inside, travelled, end);
                 colour += carried * add;
                 carried *= keep;
             }
@@ -368,7 +373,7 @@ impl<'a> Tracer<'a> {
             // that came through the surface fades; the surface's own light and its finish
             // reflection do not (measured through thick glass slabs).
             let mut fade = DVec3::ONE;
-            if media
+            if inside
                 .materials_innermost_first()
                 .any(|id| id == hit.material)
             {
@@ -380,7 +385,7 @@ impl<'a> Tracer<'a> {
             let indirect = Cell::new(None);
             let caustics = Cell::new(None);
             let surface = self.shade(
-                &ray, &hit, material, level, weight, &media, &indirect, &caustics,
+                &ray, &hit, material, level, weight, &inside, &indirect, &caustics,
             );
             colour += carried * (surface.colour + fade * surface.through);
             let Some(continued) = surface.continued else {
@@ -388,7 +393,7 @@ impl<'a> Tracer<'a> {
             };
             carried *= fade * continued.filter;
             weight = continued.weight;
-            media = continued.media;
+            inside = continued.inside;
             // The same ray is searched again beyond this hit, which avoids drift along it.
             min_distance = hit.distance + SURFACE_EPSILON;
         }
@@ -396,7 +401,7 @@ impl<'a> Tracer<'a> {
     }
 
     /// Whether every object of `inside` is hollow (so fog and media fill it).
-    fn all_hollow(&self, inside: &Media) -> bool {
+    fn all_hollow(&self, inside: &InteriorStack) -> bool {
         !inside.in_solid
             && inside.materials_innermost_first().all(|id| {
                 self.world
@@ -411,7 +416,13 @@ impl<'a> Tracer<'a> {
     /// non-hollow object (measured: a non-hollow box shows none of its own media, nor of a
     /// hollow box inside it, nor does a hollow media sphere inside a non-hollow plane that
     /// holds the camera).
-    fn media_along(&self, ray: &Ray, inside: &Media, start: f64, end: f64) -> (DVec3, DVec3) {
+    fn media_along(
+        &self,
+        ray: &Ray,
+        inside: &InteriorStack,
+        start: f64,
+        end: f64,
+    ) -> (DVec3, DVec3) {
         if !self.all_hollow(inside) {
             return (DVec3::ONE, DVec3::ZERO);
         }
@@ -477,7 +488,7 @@ impl<'a> Tracer<'a> {
         material: &Material,
         level: u32,
         weight: RayWeight,
-        media: &Media,
+        inside: &InteriorStack,
         indirect: &Cell<Option<DVec3>>,
         caustics: &Cell<Option<DVec3>>,
     ) -> Shaded {
@@ -503,7 +514,7 @@ impl<'a> Tracer<'a> {
                     corner_material,
                     level,
                     weight,
-                    media,
+                    inside,
                     indirect,
                     caustics,
                 );
@@ -514,7 +525,7 @@ impl<'a> Tracer<'a> {
         let texture = material.texture_facing(ray.direction, hit.normal);
         if texture.compound.is_none() {
             return self.shade_plain(
-                ray, hit, material, texture, true, level, weight, media, indirect, caustics,
+                ray, hit, material, texture, true, level, weight, inside, indirect, caustics,
             );
         }
         let mut total = Shaded {
@@ -532,7 +543,7 @@ impl<'a> Tracer<'a> {
                 passes_light,
                 level,
                 weight,
-                media,
+                inside,
                 indirect,
                 caustics,
             );
@@ -555,7 +566,7 @@ impl<'a> Tracer<'a> {
         passes_light: bool,
         level: u32,
         weight: RayWeight,
-        media: &Media,
+        inside: &InteriorStack,
         indirect: &Cell<Option<DVec3>>,
         caustics: &Cell<Option<DVec3>>,
     ) -> Shaded {
@@ -585,7 +596,7 @@ impl<'a> Tracer<'a> {
                 surface.normal
             };
             let light = indirect.get().unwrap_or_else(|| {
-                let light = self.indirect_light(hit.point, oriented, level, media);
+                let light = self.indirect_light(hit.point, oriented, level, inside);
                 indirect.set(Some(light));
                 light
             });
@@ -618,13 +629,13 @@ impl<'a> Tracer<'a> {
         // The indices of refraction on both sides, for refraction and Fresnel reflection.
         let interior = &material.interior;
         let mut ior = sanitise_ior(interior.ior);
-        if let Some(offset) = media.band {
+        if let Some(offset) = inside.band {
             ior = sanitise_ior(ior * interior.dispersion.powf(offset));
         }
         let (ratio, beyond) = if entering {
-            (media.ior() / ior, media.entered(hit.material, ior))
+            (inside.ior() / ior, inside.entered(hit.material, ior))
         } else {
-            let beyond = media.left(hit.material);
+            let beyond = inside.left(hit.material);
             (ior / beyond.ior(), beyond)
         };
         let finish = &texture.finish;
@@ -660,10 +671,10 @@ impl<'a> Tracer<'a> {
                 shaded.continued = Some(Continued {
                     filter: pass,
                     weight: pass_weight,
-                    media: beyond,
+                    inside: beyond,
                 });
-            } else if entering && media.band.is_none() && disperses(interior) {
-                match self.dispersed(ray, hit, normal, media, ior, level, pass_weight) {
+            } else if entering && inside.band.is_none() && disperses(interior) {
+                match self.dispersed(ray, hit, normal, inside, ior, level, pass_weight) {
                     Some(seen) => shaded.through += pass * seen,
                     None => {
                         reflection = DVec3::ONE;
@@ -696,7 +707,7 @@ impl<'a> Tracer<'a> {
                     reflected,
                     level + 1,
                     reflection_weight,
-                    media,
+                    inside,
                     RayKind::Reflected,
                 );
                 let mirrored = reflection * apply_exponent(seen, finish.reflection_exponent);
@@ -738,22 +749,22 @@ impl Tracer<'_> {
         ray: &Ray,
         hit: &SurfaceHit,
         normal: DVec3,
-        media: &Media,
+        inside: &InteriorStack,
         ior: f64,
         level: u32,
         weight: RayWeight,
     ) -> Option<DVec3> {
         let interior = &self.world.materials.get(hit.material as usize)?.interior;
         let count = interior.dispersion_samples.max(2);
-        refract(ray.direction, normal, media.ior() / ior)?;
+        refract(ray.direction, normal, inside.ior() / ior)?;
         let bands = Bands::new(count);
         let mut total = DVec3::ZERO;
         for index in 0..count {
             let (offset, colour) = bands.band(index);
             let band_ior = sanitise_ior(ior * interior.dispersion.powf(offset));
-            let mut beyond = media.entered(hit.material, band_ior);
+            let mut beyond = inside.entered(hit.material, band_ior);
             beyond.band = Some(offset);
-            let Some(bent) = refract(ray.direction, normal, media.ior() / band_ior) else {
+            let Some(bent) = refract(ray.direction, normal, inside.ior() / band_ior) else {
                 continue;
             };
             let through = Ray {
@@ -813,7 +824,7 @@ impl Shaded {
             let continued = self.continued.get_or_insert(Continued {
                 filter: DVec3::ZERO,
                 weight: RayWeight(0.0),
-                media: part.media,
+                inside: part.inside,
             });
             continued.filter += share * part.filter;
             continued.weight = RayWeight(continued.weight.0.max(part.weight.0));
@@ -827,28 +838,8 @@ struct Continued {
     filter: DVec3,
     /// The weight of the continuing ray.
     weight: RayWeight,
-    /// The media the ray is in beyond the surface.
-    media: Media,
-}
-
-/// An index of refraction usable in Snell's law (non-positive or NaN values become 1).
-pub(super) fn sanitise_ior(ior: f64) -> f64 {
-    if ior > 0.0 && ior.is_finite() {
-        ior
-    } else {
-        1.0
-    }
-}
-
-/// The refracted direction for a unit `direction` meeting a surface whose unit `normal`
-/// faces it, with index ratio `ratio` = n₁/n₂; `None` on total internal reflection.
-pub fn refract(direction: DVec3, normal: DVec3, ratio: f64) -> Option<DVec3> {
-    let cos_in = -direction.dot(normal);
-    let k = 1.0 - ratio * ratio * (1.0 - cos_in * cos_in);
-    if k < 0.0 {
-        return None;
-    }
-    (ratio * direction + (ratio * cos_in - k.sqrt()) * normal).try_normalize()
+    /// The objects the ray is inside beyond the surface.
+    inside: InteriorStack,
 }
 
 #[cfg(test)]
@@ -856,41 +847,19 @@ mod tests {
     use super::*;
 
     #[test]
-    fn snell_at_a_flat_interface() {
-        // 30 degrees incidence from air into glass of index 1.5.
-        let incidence = 30f64.to_radians();
-        let direction = DVec3::new(incidence.sin(), -incidence.cos(), 0.0);
-        let bent = refract(direction, DVec3::Y, 1.0 / 1.5).unwrap();
-        let sin_out = bent.x;
-        assert!((sin_out - incidence.sin() / 1.5).abs() < 1e-15);
-        assert!(bent.y < 0.0);
-        // Leaving glass at 60 degrees is beyond the critical angle of 41.8 degrees.
-        let steep = DVec3::new(60f64.to_radians().sin(), -60f64.to_radians().cos(), 0.0);
-        assert!(refract(steep, DVec3::Y, 1.5).is_none());
-        assert_eq!(refract(DVec3::NEG_Y, DVec3::Y, 1.5), Some(DVec3::NEG_Y));
-    }
-
-    #[test]
-    fn media_stack_tracks_entering_and_leaving() {
-        let glass = Media::OUTSIDE.entered(3, 1.5);
+    fn interior_stack_tracks_entering_and_leaving() {
+        let glass = InteriorStack::OUTSIDE.entered(3, 1.5);
         assert_eq!(glass.ior(), 1.5);
         let water_in_glass = glass.entered(7, 1.33);
         assert_eq!(water_in_glass.ior(), 1.33);
         assert_eq!(water_in_glass.left(7).ior(), 1.5);
         assert_eq!(water_in_glass.left(3).ior(), 1.33);
         // Leaving something never entered (camera inside) changes nothing.
-        assert_eq!(Media::OUTSIDE.left(9).ior(), 1.0);
-        let mut deep = Media::OUTSIDE;
+        assert_eq!(InteriorStack::OUTSIDE.left(9).ior(), 1.0);
+        let mut deep = InteriorStack::OUTSIDE;
         for index in 0..40 {
             deep = deep.entered(index, f64::from(index));
         }
         assert_eq!(deep.ior(), 39.0);
-    }
-
-    #[test]
-    fn odd_ior_values_are_tamed() {
-        assert_eq!(sanitise_ior(f64::NAN), 1.0);
-        assert_eq!(sanitise_ior(-2.0), 1.0);
-        assert_eq!(sanitise_ior(1.5), 1.5);
     }
 }

@@ -1,4 +1,5 @@
-//! Compound textures: which plain textures a point shows, and with what weight.
+//! The texture at a surface hit: which plain textures a compound texture shows there, and
+//! with what weight.
 //!
 //! In: a [`Texture`] whose transforms map world space to pattern space, and a surface hit.
 //! Out: calls to a visitor with each plain texture (one without `compound`), the colour
@@ -19,7 +20,7 @@
 //!   the surface's (measured: `texture_map { [0 T] [1 V] }`, T a `slope` map and V bumpy,
 //!   gives T a bumpy slope boundary; with the entries swapped T's boundary stays smooth).
 
-use super::lights::transmission;
+use super::optics::transmission;
 use crate::geometry::SurfaceHit;
 use crate::texture::image_map::material_choice;
 use crate::texture::normal::perturbed_normal_at;
