@@ -10,9 +10,7 @@
 //! of influence, so a ray or point only visits the elements whose boxes it meets; per-ray work
 //! uses per-thread scratch vectors that are reused.
 
-use super::roots::Roots;
-use super::roots::MAX_ROOTS;
-use super::torus::{real_roots_between, MAX_DEGREE};
+use super::roots::{real_roots_between, Roots, MAX_DEGREE, MAX_ROOTS};
 use crate::accel::{Aabb, Bvh};
 use crate::scene::{Blob as SceneBlob, BlobKind};
 use glam::{DAffine3, DVec3};

@@ -9,9 +9,7 @@
 //! segment is found again from the point); at most [`MAX_ROOTS`] crossings are reported per
 //! line, nearest ahead first when there are more; nothing allocates per ray.
 
-use super::roots::Roots;
-use super::roots::CROSSING_BUFFER;
-use super::torus::real_roots_between;
+use super::roots::{real_roots_between, Roots, CROSSING_BUFFER};
 use crate::accel::Aabb;
 use glam::{DVec2, DVec3};
 
@@ -74,7 +72,7 @@ impl Segment {
                 *value = 0.0;
             }
         }
-        let mut roots = [0.0; super::torus::MAX_DEGREE];
+        let mut roots = [0.0; super::roots::MAX_DEGREE];
         let count = real_roots_between(&cleaned, 0.0, 1.0, &mut roots);
         let mut found = [0.0; 3];
         let mut kept = 0;

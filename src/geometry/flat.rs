@@ -1,4 +1,6 @@
-//! Flat shapes and the box: plane, disc, triangle, axis-aligned box, in local space.
+//! Flat shapes: plane, disc and triangle, in local space, and the frame of POV-Ray's
+//! bounding boxes around discs, cylinders and cones (the axis-aligned box is in
+//! [`cuboid`](super::cuboid); smooth triangles and polygons in [`polygon`](super::polygon)).
 //!
 //! In: shape parameters as written in the scene; rays as local origin plus (not necessarily
 //! unit) direction. Out: intersections tagged with a surface part, inside tests, outward
@@ -260,95 +262,6 @@ pub fn triangle_crossing(
     Some(edge_two.dot(across_one) * inverse_determinant)
 }
 
-/// An axis-aligned box between two corners.
-#[derive(Clone, Copy, Debug)]
-pub struct Cuboid {
-    min: DVec3,
-    max: DVec3,
-}
-
-impl Cuboid {
-    /// A box from two opposite corners in any order; `None` when a coordinate is not finite.
-    pub fn new(corner1: DVec3, corner2: DVec3) -> Option<Cuboid> {
-        (corner1.is_finite() && corner2.is_finite()).then_some(Cuboid {
-            min: corner1.min(corner2),
-            max: corner1.max(corner2),
-        })
-    }
-
-    /// The same box after a map that only scales and translates each axis (diagonal matrix).
-    pub fn scaled_and_moved(&self, map: &DAffine3) -> Option<Cuboid> {
-        Cuboid::new(
-            map.transform_point3(self.min),
-            map.transform_point3(self.max),
-        )
-    }
-
-    /// Pushes where the line enters and leaves the box.
-    ///
-    /// The part tag is `2 * axis` for the face at the smaller coordinate and `2 * axis + 1`
-    /// for the face at the larger one.
-    #[inline]
-    pub fn intersect(&self, origin: DVec3, direction: DVec3, roots: &mut Roots) {
-        let mut entry = f64::NEG_INFINITY;
-        let mut exit = f64::INFINITY;
-        let mut entry_part = 0;
-        let mut exit_part = 0;
-        for axis in 0..3 {
-            let step = direction[axis];
-            let start = origin[axis];
-            if step == 0.0 {
-                if start < self.min[axis] || start > self.max[axis] {
-                    return;
-                }
-                continue;
-            }
-            let to_min = (self.min[axis] - start) / step;
-            let to_max = (self.max[axis] - start) / step;
-            let axis_tag = 2 * axis as u8;
-            // By direction, not by distance: a flat box (both faces at one distance) is then
-            // entered through the face the ray meets from outside.
-            let (near, far, near_part, far_part) = if step > 0.0 {
-                (to_min, to_max, axis_tag, axis_tag + 1)
-            } else {
-                (to_max, to_min, axis_tag + 1, axis_tag)
-            };
-            if near > entry {
-                entry = near;
-                entry_part = near_part;
-            }
-            if far < exit {
-                exit = far;
-                exit_part = far_part;
-            }
-        }
-        if entry <= exit {
-            roots.push(entry, entry_part);
-            roots.push(exit, exit_part);
-        }
-    }
-
-    /// True when `point` is inside or on the box (POV-Ray counts the faces as inside).
-    pub fn inside(&self, point: DVec3) -> bool {
-        point.cmpge(self.min).all() && point.cmple(self.max).all()
-    }
-
-    /// Outward unit normal of the face with tag `part`.
-    pub fn normal(&self, part: u8) -> DVec3 {
-        let mut normal = DVec3::ZERO;
-        normal[(part / 2).min(2) as usize] = if part.is_multiple_of(2) { -1.0 } else { 1.0 };
-        normal
-    }
-
-    /// The box itself.
-    pub fn bounds(&self) -> Aabb {
-        Aabb {
-            min: self.min,
-            max: self.max,
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -390,19 +303,5 @@ mod tests {
         triangle.intersect(DVec3::new(0.6, 0.6, -1.0), DVec3::Z, &mut roots);
         assert!(roots.iter().next().is_none());
         assert!(Triangle::new([DVec3::ZERO, DVec3::X, DVec3::X * 2.0]).is_none());
-    }
-
-    #[test]
-    fn box_faces() {
-        let cuboid = Cuboid::new(DVec3::ONE, -DVec3::ONE).unwrap();
-        let mut roots = Roots::new();
-        cuboid.intersect(DVec3::new(0.5, 0.5, -5.0), DVec3::Z, &mut roots);
-        let hits: Vec<_> = roots.iter().collect();
-        assert_eq!(hits, vec![(4.0, 4), (6.0, 5)]);
-        assert_eq!(cuboid.normal(4), -DVec3::Z);
-        assert_eq!(cuboid.normal(5), DVec3::Z);
-        let mut roots = Roots::new();
-        cuboid.intersect(DVec3::new(2.0, 0.0, -5.0), DVec3::Z, &mut roots);
-        assert!(roots.iter().next().is_none());
     }
 }

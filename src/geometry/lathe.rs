@@ -9,9 +9,7 @@
 //! fits; nothing allocates per ray.
 
 use super::extrusion::Segment;
-use super::roots::Roots;
-use super::roots::CROSSING_BUFFER;
-use super::torus::{real_roots_between, MAX_DEGREE};
+use super::roots::{real_roots_between, Roots, CROSSING_BUFFER, MAX_DEGREE};
 use crate::accel::Aabb;
 use glam::{DVec2, DVec3};
 

@@ -10,8 +10,9 @@
 //! a singular or non-finite transform gives an empty leaf that nothing hits.
 
 use super::blob::Blob;
+use super::cuboid::Cuboid;
 use super::extrusion::ExtrudedOutline;
-use super::flat::{Cuboid, Disc, Plane, Triangle};
+use super::flat::{Disc, Plane, Triangle};
 use super::height_field::HeightField;
 use super::isosurface::Isosurface;
 use super::julia::JuliaFractal;
@@ -27,7 +28,7 @@ use super::sphere_sweep::SphereSweep;
 use super::spindle::{Lemon, Ovus};
 use super::superellipsoid::Superellipsoid;
 use super::torus::{Torus, TorusShape};
-use super::uv::{barycentric, corner_weighted, shape_uv};
+use super::uv::{barycentric, box_uv, corner_weighted, sphere_uv, torus_uv};
 use super::{HitDetails, Ray};
 use crate::accel::Aabb;
 use crate::{
@@ -517,6 +518,21 @@ impl LocalShape {
             }
             _ => None,
         }
+    }
+}
+
+/// The uv coordinates at the local surface `point` of `shape` (surface part `part`); `None`
+/// for shapes POV-Ray gives no uv coordinates (their uv-mapped pigments see the point).
+fn shape_uv(shape: &LocalShape, point: DVec3, part: u8) -> Option<DVec2> {
+    match shape {
+        LocalShape::Sphere(sphere) => Some(sphere_uv(point - sphere.centre())),
+        LocalShape::Cuboid(cuboid) => Some(box_uv(cuboid.bounds(), point, part)),
+        LocalShape::Torus(torus) => Some(torus_uv(torus.major(), point)),
+        LocalShape::Lathe(lathe) => Some(lathe.uv(point, part)),
+        LocalShape::Sor(sor) => Some(sor.uv(point, part)),
+        LocalShape::Ovus(ovus) => Some(ovus.uv(point)),
+        LocalShape::Parametric(parametric) => Some(parametric.uv(point)),
+        _ => None,
     }
 }
 

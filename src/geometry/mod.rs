@@ -11,6 +11,7 @@
 mod blob;
 mod build;
 mod csg;
+mod cuboid;
 mod extrusion;
 mod flat;
 mod height_field;
@@ -34,12 +35,6 @@ mod torus;
 mod uv;
 mod world;
 
-#[cfg(test)]
-mod implicit_tests;
-#[cfg(test)]
-mod more_shape_tests;
-#[cfg(test)]
-mod shape_tests;
 #[cfg(test)]
 mod test_support;
 #[cfg(test)]

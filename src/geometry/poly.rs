@@ -5,8 +5,7 @@
 //! test (the polynomial is negative inside), gradient normals. Holds: the surface is unbounded;
 //! crossings farther than [`MAX_DISTANCE`] along a unit direction are ignored, as POV-Ray does.
 
-use super::roots::Roots;
-use super::torus::{real_roots_between, MAX_DEGREE};
+use super::roots::{real_roots_between, Roots, MAX_DEGREE};
 use glam::DVec3;
 
 /// Crossings farther than this (local units along a unit direction) are not reported.

@@ -1,8 +1,11 @@
 //! Small fixed-size containers and solvers shared by the shapes.
 //!
 //! In: polynomial coefficients, ray parameters. Out: [`Roots`] (up to eight ray parameters, each
-//! tagged with the surface part it belongs to) and sorted real quadratic roots.
-//! Holds: nothing allocates; non-finite parameters are never stored.
+//! tagged with the surface part it belongs to), sorted real quadratic roots, and the real
+//! roots in an interval of polynomials up to degree [`MAX_DEGREE`].
+//! Holds: nothing allocates; non-finite parameters are never stored; polynomial roots are
+//! isolated between the critical points of the polynomial (found recursively from its
+//! derivatives) and then refined inside a sign-changing bracket.
 
 /// The most intersections one primitive shape can have along a line (a degree-7 `poly` has 7).
 pub const MAX_ROOTS: usize = 8;
@@ -121,9 +124,158 @@ pub fn solve_quadratic(a: f64, half_b: f64, c: f64) -> Option<(f64, f64)> {
     })
 }
 
+/// Highest polynomial degree the root finder accepts (`poly` goes up to 7).
+pub const MAX_DEGREE: usize = 7;
+
+/// Value of the polynomial `coefficients` (highest power first) at `x`.
+#[inline]
+fn evaluate(coefficients: &[f64], x: f64) -> f64 {
+    coefficients
+        .iter()
+        .fold(0.0, |sum, &coefficient| sum * x + coefficient)
+}
+
+/// Value and first derivative of the polynomial at `x`.
+#[inline]
+fn evaluate_with_slope(coefficients: &[f64], x: f64) -> (f64, f64) {
+    let mut value = 0.0;
+    let mut slope = 0.0;
+    for &coefficient in coefficients {
+        slope = slope * x + value;
+        value = value * x + coefficient;
+    }
+    (value, slope)
+}
+
+/// The root inside `[low, high]`, where the polynomial is monotonic and changes sign, by
+/// Newton steps kept inside a shrinking bisection bracket.
+fn refine_root(coefficients: &[f64], mut low: f64, mut high: f64, low_value: f64) -> f64 {
+    let low_is_negative = low_value < 0.0;
+    let mut x = 0.5 * (low + high);
+    for _ in 0..100 {
+        let (value, slope) = evaluate_with_slope(coefficients, x);
+        if value == 0.0 {
+            return x;
+        }
+        if (value < 0.0) == low_is_negative {
+            low = x;
+        } else {
+            high = x;
+        }
+        let newton = x - value / slope;
+        let next = if newton > low && newton < high {
+            newton
+        } else {
+            0.5 * (low + high)
+        };
+        let tolerance = 4.0 * f64::EPSILON * (x.abs() + 1e-9);
+        if (next - x).abs() <= tolerance || high - low <= tolerance {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
+/// Writes the real roots of the polynomial `coefficients` (highest power first, degree at most
+/// seven) that lie in `[low, high]` into `out`, ascending, and returns how many there are.
+///
+/// Every interval between consecutive critical points is monotonic, so it holds a root
+/// exactly when the polynomial changes sign across it.
+pub fn real_roots_between(
+    coefficients: &[f64],
+    low: f64,
+    high: f64,
+    out: &mut [f64; MAX_DEGREE],
+) -> usize {
+    let first_nonzero = coefficients
+        .iter()
+        .position(|&c| c != 0.0)
+        .unwrap_or(coefficients.len());
+    let polynomial = &coefficients[first_nonzero..];
+    if polynomial.len() < 2
+        || polynomial.len() > MAX_DEGREE + 1
+        || low.is_nan()
+        || high.is_nan()
+        || low > high
+    {
+        return 0;
+    }
+    let degree = polynomial.len() - 1;
+    if degree == 1 {
+        let root = -polynomial[1] / polynomial[0];
+        if root >= low && root <= high {
+            out[0] = root;
+            return 1;
+        }
+        return 0;
+    }
+    let mut derivative = [0.0; MAX_DEGREE];
+    for (power_index, coefficient) in polynomial[..degree].iter().enumerate() {
+        derivative[power_index] = coefficient * (degree - power_index) as f64;
+    }
+    let mut critical = [0.0; MAX_DEGREE];
+    let critical_count = real_roots_between(&derivative[..degree], low, high, &mut critical);
+    let mut count = 0;
+    let mut push = |root: f64, count: &mut usize| {
+        if *count < MAX_DEGREE && (*count == 0 || out[*count - 1] != root) {
+            out[*count] = root;
+            *count += 1;
+        }
+    };
+    let mut previous = low;
+    let mut previous_value = evaluate(polynomial, low);
+    if previous_value == 0.0 {
+        push(low, &mut count);
+    }
+    for &point in critical[..critical_count]
+        .iter()
+        .chain(std::iter::once(&high))
+    {
+        let value = evaluate(polynomial, point);
+        if value == 0.0 {
+            push(point, &mut count);
+        } else if previous_value != 0.0 && (previous_value < 0.0) != (value < 0.0) {
+            push(
+                refine_root(polynomial, previous, point, previous_value),
+                &mut count,
+            );
+        }
+        previous = point;
+        previous_value = value;
+    }
+    count
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn roots_of(coefficients: &[f64], low: f64, high: f64) -> Vec<f64> {
+        let mut out = [0.0; MAX_DEGREE];
+        let count = real_roots_between(coefficients, low, high, &mut out);
+        out[..count].to_vec()
+    }
+
+    #[test]
+    fn polynomial_roots() {
+        // (x - 1)(x - 2)(x - 3)(x - 4) = x⁴ - 10x³ + 35x² - 50x + 24.
+        let found = roots_of(&[1.0, -10.0, 35.0, -50.0, 24.0], -10.0, 10.0);
+        assert_eq!(found.len(), 4);
+        for (root, expected) in found.iter().zip([1.0, 2.0, 3.0, 4.0]) {
+            assert!((root - expected).abs() < 1e-12, "{found:?}");
+        }
+        assert_eq!(
+            roots_of(&[1.0, -10.0, 35.0, -50.0, 24.0], 1.5, 2.5).len(),
+            1
+        );
+        assert!(roots_of(&[1.0, 0.0, 1.0], -10.0, 10.0).is_empty());
+        assert_eq!(roots_of(&[0.0, 0.0, 2.0, -1.0], -10.0, 10.0), vec![0.5]);
+        assert!(roots_of(&[f64::NAN, 1.0, 1.0], -1.0, 1.0).len() <= 2);
+        // Close roots: (x - 1)(x - 1.000001).
+        let close = roots_of(&[1.0, -2.000001, 1.000001], 0.0, 2.0);
+        assert_eq!(close.len(), 2);
+    }
 
     #[test]
     fn quadratic_roots() {

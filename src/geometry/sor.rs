@@ -6,9 +6,7 @@
 //! cubic per segment), inside test, outward normals, bounds. Holds: segments whose heights do
 //! not increase are dropped; nothing allocates per ray.
 
-use super::roots::CROSSING_BUFFER;
-use super::roots::{solve_quadratic, Roots};
-use super::torus::{real_roots_between, MAX_DEGREE};
+use super::roots::{real_roots_between, solve_quadratic, Roots, CROSSING_BUFFER, MAX_DEGREE};
 use crate::accel::Aabb;
 use glam::{DVec2, DVec3};
 

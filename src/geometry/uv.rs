@@ -1,13 +1,15 @@
-//! Surface (uv) coordinates of hit points, as `uv_mapping` reads them, and the barycentric
-//! weights of points on triangles.
+//! Shape-level uv maths: the sphere's, box's and torus's uv coordinates as `uv_mapping` reads
+//! them, the barycentric weights of points on triangles and the blend of corner uvs, and
+//! whether a texture needs uv coordinates at all.
 //!
-//! In: a shape in its local space and a local point on its surface (with the part tag the
-//! intersection gave). Out: the point's `<u, v>` in POV-Ray 3.7's parametrisation of that
-//! shape (sphere, box, torus, lathe, sor, ovus, parametric here; meshes and bicubic patches
-//! interpolate their corners' uv), measured by rendering uv-mapped gradients with `povray`.
-//! Holds: pure functions, no allocation; shapes POV-Ray gives no uv coordinates give `None`.
+//! In: a local point on a shape's surface (with the part tag the intersection gave, or the
+//! shape's own numbers), a triangle's corners, a texture. Out: the point's `<u, v>` in
+//! POV-Ray 3.7's parametrisation (measured by rendering uv-mapped gradients with `povray`),
+//! barycentric weights, or a yes/no. Which shape uses which parametrisation is decided per
+//! leaf in [`leaf`](super::leaf); lathe, sor, ovus and parametric surfaces compute theirs in
+//! their own files (with [`sphere_uv`] for the angle around their axis).
+//! Holds: pure functions, no allocation; nothing here knows the leaf types.
 
-use super::leaf::LocalShape;
 use crate::accel::Aabb;
 use crate::texture::{
     BlendMap, CompoundTexture, Normal, NormalSource, Pigment, PigmentMap, Texture,
@@ -33,21 +35,6 @@ pub fn barycentric(corners: [DVec3; 3], point: DVec3) -> [f64; 3] {
     let second = (d11 * d20 - d01 * d21) / denominator;
     let third = (d00 * d21 - d01 * d20) / denominator;
     [1.0 - second - third, second, third]
-}
-
-/// The uv coordinates at the local surface `point` of `shape` (surface part `part`); `None`
-/// for shapes POV-Ray gives no uv coordinates (their uv-mapped pigments see the point).
-pub fn shape_uv(shape: &LocalShape, point: DVec3, part: u8) -> Option<DVec2> {
-    match shape {
-        LocalShape::Sphere(sphere) => Some(sphere_uv(point - sphere.centre())),
-        LocalShape::Cuboid(cuboid) => Some(box_uv(cuboid.bounds(), point, part)),
-        LocalShape::Torus(torus) => Some(torus_uv(torus.major(), point)),
-        LocalShape::Lathe(lathe) => Some(lathe.uv(point, part)),
-        LocalShape::Sor(sor) => Some(sor.uv(point, part)),
-        LocalShape::Ovus(ovus) => Some(ovus.uv(point)),
-        LocalShape::Parametric(parametric) => Some(parametric.uv(point)),
-        _ => None,
-    }
 }
 
 /// The uv point blended from the corners' uv coordinates by barycentric `weights`.
@@ -184,32 +171,6 @@ mod tests {
         assert!((sphere_uv(DVec3::Y).y - 1.0).abs() < 1e-12);
         assert!(sphere_uv(-DVec3::Y * 2.0).y.abs() < 1e-12);
         assert_eq!(sphere_uv(DVec3::ZERO), DVec2::ZERO);
-    }
-
-    #[test]
-    fn lathe_and_sor_uv_follow_pov_ray() {
-        use crate::geometry::lathe::Lathe;
-        use crate::geometry::sor::Sor;
-        // One straight segment from (r, y) = (1, 0) to (1, 1): v is the height's share.
-        let third = |t: f64| DVec2::new(1.0, t);
-        let lathe =
-            Lathe::new(&[[third(0.0), third(1.0 / 3.0), third(2.0 / 3.0), third(1.0)]]).unwrap();
-        let uv = lathe.uv(DVec3::new(0.0, 0.5, -1.0), 0);
-        assert!((uv - DVec2::new(0.75, 0.5)).abs().max_element() < 1e-9);
-        // A sor of radius 1 from y = 0 to 1: the side by height, the top cap by radius.
-        let points = [
-            DVec2::new(1.0, -1.0),
-            DVec2::new(1.0, 0.0),
-            DVec2::new(1.0, 1.0),
-            DVec2::new(1.0, 2.0),
-        ];
-        let sor = Sor::new(&points, false).unwrap();
-        let side = sor.uv(DVec3::new(1.0, 0.25, 0.0), 2);
-        assert!((side - DVec2::new(0.0, 0.25)).abs().max_element() < 1e-9);
-        let top = sor.uv(DVec3::new(0.0, 1.0, 0.5), 1);
-        assert!((top - DVec2::new(0.25, 0.5)).abs().max_element() < 1e-9);
-        let bottom = sor.uv(DVec3::new(-0.5, 0.0, 0.0), 0);
-        assert!((bottom - DVec2::new(0.5, 0.5)).abs().max_element() < 1e-9);
     }
 
     #[test]

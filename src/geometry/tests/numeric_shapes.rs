@@ -1,11 +1,12 @@
-//! Tests of the isosurface, height field and sphere sweep: crossings flip the inside test,
-//! normals point out of the solid, known answers, and POV-Ray's max_gradient holes.
+//! Shapes found numerically or from samples: the isosurface (known answers, POV-Ray's
+//! max_gradient holes), the height field (known answers, the cell split, smoothed normals as
+//! POV-Ray's) and the sphere sweep; crossings flip the inside test and normals point out.
 
-use super::height_field::HeightField;
-use super::isosurface::Isosurface;
-use super::roots::Roots;
-use super::sphere_sweep::SphereSweep;
-use super::test_support::assert_crossings_flip_inside;
+use crate::geometry::height_field::HeightField;
+use crate::geometry::isosurface::Isosurface;
+use crate::geometry::roots::Roots;
+use crate::geometry::sphere_sweep::SphereSweep;
+use crate::geometry::test_support::assert_crossings_flip_inside;
 use crate::scene::{
     Container, HeightField as HeightFieldSpec, Isosurface as IsosurfaceSpec,
     SphereSweep as SphereSweepSpec, SweepSpline,

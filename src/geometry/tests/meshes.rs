@@ -1,62 +1,12 @@
-//! World-level tests of the shapes added after the basic ones: meshes, prisms, polynomial
-//! surfaces, `clipped_by`, and the object flags carried by materials.
+//! Meshes in the world: triangles hit and degenerate ones skipped (alone and in CSG), instances
+//! sharing one prepared geometry under their own transforms, corner uvs and textures kept
+//! inside CSG, and textures shared between placements.
 
-use super::test_support::{all_hits, csg, scene_of};
-use super::{Ray, World};
-use crate::scene::{CsgOperation, Extrusion, Mesh, MeshTriangle, Object, Shape};
+use super::support::{all_hits, csg, distances, scene_of, slab};
+use crate::geometry::{Ray, World};
+use crate::scene::{CsgOperation, Mesh, MeshTriangle, Object, Shape};
 use glam::{DVec2, DVec3};
 use std::sync::Arc;
-
-fn distances(objects: Vec<Object>, ray: Ray) -> Vec<f64> {
-    let world = World::build(&scene_of(objects));
-    all_hits(&world, &ray)
-        .iter()
-        .map(|hit| (hit.distance * 1e9).round() / 1e9)
-        .collect()
-}
-
-fn unit_sphere() -> Object {
-    Object::new(Shape::Sphere {
-        centre: DVec3::ZERO,
-        radius: 1.0,
-    })
-}
-
-fn slab(low: f64, high: f64) -> Object {
-    Object::new(Shape::Box {
-        corner1: DVec3::new(low, -5.0, -5.0),
-        corner2: DVec3::new(high, 5.0, 5.0),
-    })
-}
-
-#[test]
-fn clipped_sphere_keeps_only_the_inside_part() {
-    let along_x = Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
-    let mut sphere = unit_sphere();
-    sphere.clipped_by.push(slab(-0.5, 5.0));
-    // The front of the sphere (x = -1) is clipped away; the clip's own face is invisible.
-    assert_eq!(distances(vec![sphere.clone()], along_x), vec![6.0]);
-    // A clipped object subtracted from a slab: inside the clipped sphere is removed only
-    // where the clip holds.
-    let difference = csg(
-        CsgOperation::Difference,
-        vec![slab(-3.0, 3.0), sphere.clone()],
-    );
-    assert_eq!(distances(vec![difference], along_x), vec![2.0, 6.0, 8.0]);
-    let mut inverted_clip = unit_sphere();
-    let mut outside = slab(-0.5, 5.0);
-    outside.inverse = true;
-    inverted_clip.clipped_by.push(outside);
-    assert_eq!(distances(vec![inverted_clip], along_x), vec![4.0]);
-    // Flags reach the materials.
-    sphere.no_image = true;
-    sphere.double_illuminate = true;
-    let world = World::build(&scene_of(vec![sphere]));
-    assert!(world
-        .materials
-        .iter()
-        .any(|m| m.no_image && m.double_illuminate));
-}
 
 #[test]
 fn mesh_triangles_are_hit_and_degenerate_ones_skipped() {
@@ -81,43 +31,6 @@ fn mesh_triangles_are_hit_and_degenerate_ones_skipped() {
     assert_eq!(distances(vec![mesh.clone()], along_z), vec![6.0, 7.0]);
     let in_csg = csg(CsgOperation::Intersection, vec![mesh, slab(-5.0, 5.0)]);
     assert_eq!(distances(vec![in_csg], along_z), vec![6.0, 7.0]);
-}
-
-#[test]
-fn prism_and_poly_in_the_world() {
-    let square = [
-        DVec2::new(-1.0, -1.0),
-        DVec2::new(1.0, -1.0),
-        DVec2::new(1.0, 1.0),
-        DVec2::new(-1.0, 1.0),
-    ];
-    let segments = (0..4)
-        .map(|i| {
-            let (a, b) = (square[i], square[(i + 1) % 4]);
-            [a, a + (b - a) / 3.0, a + (b - a) * (2.0 / 3.0), b]
-        })
-        .collect();
-    let prism = Object::new(Shape::Prism(Arc::new(Extrusion {
-        segments,
-        depth: (0.0, 2.0),
-        open: false,
-        conic: false,
-    })));
-    let down = Ray::new(DVec3::new(0.5, 5.0, 0.5), -DVec3::Y);
-    assert_eq!(distances(vec![prism], down), vec![3.0, 5.0]);
-    // x² + y² + z² - 1 as a poly of order 2.
-    let mut coefficients = vec![0.0; 10];
-    for index in [0, 4, 7] {
-        coefficients[index] = 1.0;
-    }
-    coefficients[9] = -1.0;
-    let poly = Object::new(Shape::Poly(Arc::new(crate::scene::Poly {
-        order: 2,
-        coefficients,
-        sturm: false,
-    })));
-    let along_x = Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
-    assert_eq!(distances(vec![poly], along_x), vec![4.0, 6.0]);
 }
 
 #[test]
@@ -167,7 +80,7 @@ fn mesh_instances_share_geometry_and_keep_their_transforms() {
 /// A one-triangle mesh in the z = 0 plane whose corners have uv coordinates and the texture
 /// slots 1, 2, 1 (two marked textures), with a uv-mapped texture of its own.
 fn textured_triangle_mesh() -> Arc<Mesh> {
-    use super::test_support::marked_texture;
+    use super::support::marked_texture;
     use crate::{
         math::Colour,
         texture::{Pigment, Texture},

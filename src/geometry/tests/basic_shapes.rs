@@ -1,11 +1,12 @@
-//! Property tests of every shape through [`Leaf`]: crossings flip inside and outside, normals
-//! are unit length and point outwards, transforms move hits where expected, and degenerate
-//! input never panics.
+//! Property tests of the basic shapes (sphere, box, cylinder, cone, torus, plane, quadrics,
+//! disc, triangle) through [`Leaf`]: crossings flip inside and outside, normals are unit length
+//! and point outwards, known answers, transforms baked in or kept agree, grazing torus hits,
+//! and degenerate input gives empty leaves that never panic.
 
-use super::leaf::Leaf;
-use super::roots::Roots;
-use super::test_support::Random;
-use super::Ray;
+use crate::geometry::leaf::Leaf;
+use crate::geometry::roots::Roots;
+use crate::geometry::test_support::Random;
+use crate::geometry::Ray;
 use crate::{math::Transform, scene::Shape};
 use glam::{DAffine3, DVec3};
 
