@@ -52,7 +52,7 @@ impl Transform {
     /// POV-Ray's `rotate <x, y, z>`: degrees about x, then y, then z (left-handed, as POV-Ray).
     ///
     /// ```
-    /// use durer::scene::Transform;
+    /// use durer::math::Transform;
     /// use glam::DVec3;
     /// // POV-Ray turns +x into -z when rotating 90 degrees about y.
     /// let turned = Transform::rotation_degrees(DVec3::new(0.0, 90.0, 0.0)).point_to_outer(DVec3::X);

@@ -33,7 +33,9 @@ const LAYERS: &[(&str, &[&str])] = &[
     // Render objects: shapes, CSG, materials, the world.
     (
         "geometry",
-        &["hash", "math", "noise", "accel", "texture", "scene"],
+        &[
+            "hash", "math", "noise", "raster", "accel", "texture", "scene",
+        ],
     ),
     // Light transport.
     (
