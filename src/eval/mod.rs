@@ -81,12 +81,12 @@ pub(crate) type EvalResult<T> = Result<T, Box<Diagnostic>>;
 pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
     let mut evaluator = Evaluator::new(options.clone());
     let result = evaluator.run_main(path);
-    let mut diagnostics = std::mem::take(&mut evaluator.runtime.warnings);
+    let mut diagnostics = evaluator.runtime.take_warnings();
     let scene = match result {
-        Ok(()) => Some(evaluator.scene.finish(
-            evaluator.runtime.version,
-            evaluator.runtime.version_declared,
-        )),
+        Ok(()) => {
+            let (version, declared) = evaluator.runtime.version();
+            Some(evaluator.scene.finish(version, declared))
+        }
         Err(d) => {
             diagnostics.push(*d);
             None
@@ -95,7 +95,7 @@ pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
     Evaluated {
         scene,
         diagnostics,
-        sources: evaluator.runtime.sources,
+        sources: evaluator.runtime.into_sources(),
     }
 }
 
@@ -119,11 +119,7 @@ impl Evaluator {
     }
 
     fn run_main(&mut self, path: &Path) -> EvalResult<()> {
-        self.runtime.scene_folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        self.runtime.input_file_name = path
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
+        self.runtime.set_main_file(path);
         let items = self.runtime.load_file(path, None)?;
         let mut stream = Stream::new(items);
         while let Some(item) = self.next_item(&mut stream)? {
@@ -161,9 +157,9 @@ impl Evaluator {
             Value::Camera(camera) => self.scene.set_camera(Rc::unwrap_or_clone(camera)),
             Value::Light(light) => self.scene.add_light(Rc::unwrap_or_clone(light)),
             Value::Atmospheric(effect) => self.scene.add_atmospheric_effect(&effect),
-            Value::Media(media) => self.scene.atmosphere.media.push(Rc::unwrap_or_clone(media)),
+            Value::Media(media) => self.scene.add_media(Rc::unwrap_or_clone(media)),
             Value::Colour(colour) if matches!(item, Item::Block(_)) => {
-                self.scene.background = colour
+                self.scene.set_background(colour)
             }
             Value::Nothing => {} // settings blocks and left-out features
             other => {

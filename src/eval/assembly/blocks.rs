@@ -119,7 +119,7 @@ impl Evaluator {
         };
         self.runtime.enter_nesting(block.span)?;
         let result = self.eval_block_as(&head, block);
-        self.runtime.nesting -= 1;
+        self.runtime.leave_nesting();
         result
     }
 

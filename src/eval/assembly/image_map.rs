@@ -254,7 +254,7 @@ impl Evaluator {
             None if raster.encoding == StoredEncoding::Linear || working_gamma.is_none() => {
                 ImageGamma::Linear
             }
-            None if self.runtime.version < 3.7
+            None if self.runtime.version().0 < 3.7
                 && raster.encoding == StoredEncoding::UnstatedPng =>
             {
                 ImageGamma::Linear
@@ -316,7 +316,7 @@ impl Evaluator {
     fn working_gamma(&self) -> Option<f64> {
         match self.scene.settings.assumed_gamma {
             Some(gamma) if gamma > 0.0 && gamma.is_finite() => Some(gamma),
-            _ if self.runtime.version_declared && self.runtime.version >= 3.7 - 1e-9 => Some(1.0),
+            _ if matches!(self.runtime.version(), (v, true) if v >= 3.7 - 1e-9) => Some(1.0),
             _ => None,
         }
     }

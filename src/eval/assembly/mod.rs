@@ -31,22 +31,22 @@ use std::sync::Arc;
 /// The scene being built: what the scene file's top-level items and settings have added.
 pub(crate) struct SceneAssembly {
     /// `#default { texture { .. } }`, given to objects written without a texture.
-    pub(crate) default_texture: Texture,
+    default_texture: Texture,
     default_texture_set: bool,
     camera: Option<Camera>,
     lights: Vec<LightSource>,
     /// How many `light_group`s have been evaluated (the next group's id).
-    pub(crate) light_groups: u32,
+    light_groups: u32,
     /// Set once a light is placed inside an object: until then no object needs searching for
     /// the lights it carries.
-    pub(crate) objects_carry_lights: bool,
+    objects_carry_lights: bool,
     objects: Vec<Object>,
     /// `background { }`: the colour of rays that hit nothing.
-    pub(crate) background: Colour,
+    background: Colour,
     /// Fog, sky sphere, rainbows and scene media.
-    pub(crate) atmosphere: Atmosphere,
+    atmosphere: Atmosphere,
     /// `global_settings` so far.
-    pub(crate) settings: GlobalSettings,
+    settings: GlobalSettings,
 }
 
 impl SceneAssembly {
@@ -81,6 +81,22 @@ impl SceneAssembly {
             self.add_carried_lights(&object, &Transform::IDENTITY);
         }
         self.objects.push(object);
+    }
+
+    /// Adds a `media { }` written at the top level (scene media).
+    pub(crate) fn add_media(&mut self, media: crate::scene::Media) {
+        self.atmosphere.media.push(media);
+    }
+
+    /// Sets the `background` colour (the last one wins).
+    pub(crate) fn set_background(&mut self, colour: Colour) {
+        self.background = colour;
+    }
+
+    /// The handle through which functions read the scene's `noise_generator` when they
+    /// run, so the last `global_settings` applies wherever it stands.
+    pub(crate) fn scene_noise_generator(&self) -> crate::noise::SceneNoiseGenerator {
+        self.settings.scene_noise_generator.clone()
     }
 
     /// Sets the camera (the last one wins).

@@ -97,7 +97,7 @@ impl Evaluator {
                 let arity = internal.arity();
                 let arguments = (0..arity).map(Node::Parameter).collect();
                 let node = if internal == Internal::Noise3d {
-                    Node::SceneNoise(self.scene.settings.scene_noise_generator.clone(), arguments)
+                    Node::SceneNoise(self.scene.scene_noise_generator(), arguments)
                 } else {
                     Node::Internal(internal, arguments)
                 };

@@ -119,39 +119,38 @@ pub(crate) type Scope = HashMap<Symbol, Value, FastHash>;
 /// it builds.
 pub(crate) struct Runtime {
     /// Include paths, image size, clock and the other options from outside.
-    pub(crate) options: EvalOptions,
+    options: EvalOptions,
     /// The text of every file read, for diagnostics.
-    pub(crate) sources: SourceMap,
+    sources: SourceMap,
     /// The symbol tables: global, then one per include file and macro call.
-    pub(crate) scopes: scopes::ScopeStack,
+    scopes: scopes::ScopeStack,
     /// Each file parsed once, by canonical path.
     parsed: HashMap<PathBuf, (FileId, Rc<[Item]>)>,
     /// The scene file's folder (first on the include path; data files live there).
-    pub(crate) scene_folder: PathBuf,
+    scene_folder: PathBuf,
     /// The scene file's name, for `input_file_name`.
-    pub(crate) input_file_name: String,
+    input_file_name: String,
     /// The live call trace: macro calls and includes entered, outermost first.
-    pub(crate) trace: Vec<Entered>,
+    trace: Vec<Entered>,
     /// Warnings so far, each distinct message once.
-    pub(crate) warnings: Vec<Diagnostic>,
+    warnings: Vec<Diagnostic>,
     warned_once: std::collections::HashSet<String>,
     /// Current depth of macro calls, includes and blocks (bounded by [`NESTING_LIMIT`]).
-    pub(crate) nesting: usize,
+    nesting: usize,
     /// The `#version` in force.
-    pub(crate) version: f64,
+    version: f64,
     /// Whether the scene declared a `#version` at all.
-    pub(crate) version_declared: bool,
+    version_declared: bool,
     /// States of the random streams made by `seed`, indexed by stream number.
-    pub(crate) random_streams: Vec<u32>,
+    random_streams: Vec<u32>,
     /// Geometry prepared for `trace` and the extent functions, by object address.
-    pub(crate) query_worlds:
-        HashMap<usize, (Arc<crate::scene::Object>, Rc<crate::geometry::World>)>,
+    query_worlds: HashMap<usize, (Arc<crate::scene::Object>, Rc<crate::geometry::World>)>,
     /// Data files opened by `#fopen`; closed ones are `None`.
-    pub(crate) files: Vec<Option<files::DataFile>>,
+    files: Vec<Option<files::DataFile>>,
     /// Text macro bodies parsed once for all calls (see `token_macro`).
-    pub(crate) text_macro_cache: token_macro::TextMacroCache,
+    text_macro_cache: token_macro::TextMacroCache,
     /// Running calls with directives among their arguments (see `argument_directives`).
-    pub(crate) directive_cursors: Vec<argument_directives::DirectiveCursor>,
+    directive_cursors: Vec<argument_directives::DirectiveCursor>,
 }
 
 impl Runtime {
@@ -433,5 +432,35 @@ impl Runtime {
             self.version_declared = true;
         }
         self.version = version;
+    }
+
+    /// Records the scene file: its folder starts the include path, its name is
+    /// `input_file_name`.
+    pub(crate) fn set_main_file(&mut self, path: &Path) {
+        self.scene_folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        self.input_file_name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+    }
+
+    /// Leaves a level entered with [`Runtime::enter_nesting`].
+    pub(crate) fn leave_nesting(&mut self) {
+        self.nesting -= 1;
+    }
+
+    /// The `#version` in force, and whether the scene declared one.
+    pub(crate) fn version(&self) -> (f64, bool) {
+        (self.version, self.version_declared)
+    }
+
+    /// The warnings so far, handed over once evaluation ends.
+    pub(crate) fn take_warnings(&mut self) -> Vec<Diagnostic> {
+        std::mem::take(&mut self.warnings)
+    }
+
+    /// The text of every file read, for showing diagnostics.
+    pub(crate) fn into_sources(self) -> SourceMap {
+        self.sources
     }
 }
