@@ -26,7 +26,25 @@ impl Evaluator {
         let mut pattern_transform = Transform::IDENTITY;
         let mut average = false;
         let mut uv_mapping = false;
+        // POV-Ray reads pigment, finish and normal identifiers written straight in the body
+        // (`texture { P F N }`) only before any other item (measured: `texture { T P }` and
+        // `texture { N P F }` render, `texture { scale 2 P }` is refused).
+        let mut leading_identifiers = true;
         while let Some(item) = self.next_item(stream)? {
+            let identifier = match &item {
+                Item::Expr(Expr::Ident(..)) => Some(item.span()),
+                _ => None,
+            };
+            let leading = leading_identifiers;
+            leading_identifiers &= identifier.is_some();
+            if let Some(span) = identifier {
+                if let Item::Expr(expr) = &item {
+                    let value = self.eval_expr(expr)?;
+                    if self.texture_part_identifier(&value, span, leading, &mut texture)? {
+                        continue;
+                    }
+                }
+            }
             if let Some((spec, list)) = self.block_pattern(&item)? {
                 let blocks = match (spec.block_count(), list) {
                     (Some(count), Some(mut list)) => self.texture_block_list(&mut list, count)?,
@@ -186,6 +204,55 @@ impl Evaluator {
             map_texture_by_uv(&mut texture);
         }
         Ok(texture)
+    }
+
+    /// A pigment, finish or normal identifier written straight inside `texture { }`:
+    /// replaces that part of the texture (of a layered one, its top layer's) and answers
+    /// true; false for any other value. POV-Ray takes them only before any other item.
+    fn texture_part_identifier(
+        &mut self,
+        value: &Value,
+        span: Span,
+        leading: bool,
+        texture: &mut Texture,
+    ) -> EvalResult<bool> {
+        let kind = match value {
+            Value::Pigment(_) => "pigment",
+            Value::Finish(_) => "finish",
+            Value::Normal(_) => "normal",
+            _ => return Ok(false),
+        };
+        if !leading {
+            return Err(self
+                .runtime
+                .error(
+                    span,
+                    format!(
+                        "a {kind} identifier inside `texture` must come before its other items"
+                    ),
+                )
+                .with_label(format!("{kind} identifier after other items"))
+                .with_help(format!(
+                    "move it to the start of the texture, or write `{kind} {{ NAME }}`"
+                ))
+                .into());
+        }
+        match value {
+            Value::Pigment(pigment) => {
+                let pigment = Pigment::clone(pigment);
+                change_top_layer(texture, |top| top.pigment = pigment);
+            }
+            Value::Finish(finish) => {
+                let finish = Arc::new(crate::texture::finish::Finish::clone(finish));
+                change_top_layer(texture, |top| top.finish = finish);
+            }
+            Value::Normal(normal) => {
+                let normal = Some(Box::new(crate::texture::Normal::clone(normal)));
+                change_top_layer(texture, |top| top.normal = normal);
+            }
+            _ => {}
+        }
+        Ok(true)
     }
 
     /// Stores a `texture_map`'s entries: into the pattern, or as an average.

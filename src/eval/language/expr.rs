@@ -491,7 +491,7 @@ impl Evaluator {
 }
 
 /// Built-in identifiers that are values.
-fn builtin_constant(name: &str, evaluator: &Evaluator) -> Option<Value> {
+pub(crate) fn builtin_constant(name: &str, evaluator: &Evaluator) -> Option<Value> {
     let v3 = |x, y, z| Value::Vector(Vector::from_slice(&[x, y, z]));
     Some(match name {
         "x" => v3(1.0, 0.0, 0.0),

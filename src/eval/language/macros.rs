@@ -135,6 +135,12 @@ impl Evaluator {
     /// once, so macro calls and `rand` in it run once.
     pub(crate) fn eval_value_pair(&mut self, expr: &Expr) -> EvalResult<(Value, Option<Expr>)> {
         use crate::syntax::ast::{BinaryOp, UnaryOp};
+        if let Expr::Call(call) = expr {
+            if let Some((value, rest)) = self.value_before_parentheses(call) {
+                // `plane { y (-1) }`: a value that cannot be called, then a float.
+                return Ok((value, Some(rest.clone())));
+            }
+        }
         let Expr::Binary(op @ (BinaryOp::Add | BinaryOp::Subtract), lhs, rhs, span) = expr else {
             return Ok((self.eval_expr(expr)?, None));
         };
@@ -149,6 +155,25 @@ impl Evaluator {
             UnaryOp::Plus
         };
         Ok((left, Some(Expr::Unary(sign, rhs.clone(), rhs.span()))))
+    }
+
+    /// For `NAME (EXPR)` where NAME holds a value that cannot be called (a declared vector
+    /// or float, or a built-in constant such as `y`), that value: POV-Ray reads the two as
+    /// separate items (`plane { y (-.05) }`), measured. `None` for a real call.
+    fn value_before_parentheses<'a>(&self, call: &'a Call) -> Option<(Value, &'a Expr)> {
+        let [crate::syntax::ast::Argument::Expr(rest)] = call.arguments.as_slice() else {
+            return None;
+        };
+        if !call.directives.is_empty() {
+            return None;
+        }
+        let value = match self.runtime.lookup(call.name) {
+            Some(value @ (Value::Float(_) | Value::Vector(_) | Value::Colour(_))) => value.clone(),
+            Some(_) => return None,
+            None if super::builtins::FUNCTIONS.contains(&&*call.name) => return None,
+            None => super::expr::builtin_constant(&call.name, self)?,
+        };
+        Some((value, rest))
     }
 
     /// Evaluates a macro call used as a value: its body must yield exactly one value.
