@@ -434,8 +434,8 @@ pub enum DirectiveKind {
         value: Item,
         layers: Vec<Rc<Block>>,
     },
-    /// `#undef Name`.
-    Undef(Name, Span),
+    /// `#undef Name` or `#undef Name[i]..` (the element becomes uninitialised).
+    Undef(Target),
     /// `#if`, `#ifdef`, `#ifndef` with `#elseif`/`#else` branches (an `#ifdef` test is
     /// lowered to a condition on `defined`).
     If {

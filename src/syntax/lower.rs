@@ -535,8 +535,7 @@ impl<'m> Lowerer<'m> {
                 }
             }
             Rule::undef => {
-                let name = inner.next().expect("undef name");
-                DirectiveKind::Undef(Name::from(name.as_str()), self.span(&name))
+                DirectiveKind::Undef(self.ifdef_target(inner.next().expect("undef target")))
             }
             Rule::if_directive => {
                 let condition = self.expr(inner.next().expect("if condition"));

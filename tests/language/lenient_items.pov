@@ -20,3 +20,23 @@ Check((inside(Back, <0, 0, 1.5>) & !inside(Back, <0, 0, 2.5>)), "a vector identi
 #declare T2 = texture { T1 P scale 2 }
 #declare T3 = texture { N P F }
 sphere { 0, 1 texture { T2 } }
+
+// Any shape or CSG block may start with a declared object of any kind, as `object { }` does.
+#declare Small = sphere { 0, 0.5 }
+#declare Grown = sphere { Small scale 2 }
+Check((abs(max_extent(Grown).x - 1) < 1e-6), "`sphere { Small scale 2 }` is Small scaled")
+#declare Cube = box { -0.5, 0.5 }
+#declare Boxed = sphere { Cube }
+Check(inside(Boxed, <0.45, 0.45, 0.45>), "`sphere { Cube }` is the box")
+#declare Moved = union { Small translate x }
+Check((abs(min_extent(Moved).x - 0.5) < 1e-6), "`union { Small translate x }` is Small moved")
+#declare Lamp = light_source { <0, 3, -3> rgb 1 }
+cylinder { Lamp }
+
+// `#undef` of one array element leaves it uninitialised.
+#declare Arr = array[2] { 1, 2 }
+#undef Arr[1]
+#ifdef (Arr[1]) #error "failed: `#undef Arr[1]` leaves the element" #end
+#ifndef (Arr[0]) #error "failed: `#undef Arr[1]` removes the other element" #end
+#declare Arr[1] = 5;
+Check((Arr[1] = 5), "an undefined element can be set again")

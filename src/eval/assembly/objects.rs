@@ -6,7 +6,7 @@ use crate::diag::Span;
 use crate::eval::language::stream::Stream;
 use crate::eval::language::value::{MaterialValue, Value};
 use crate::eval::{EvalResult, Evaluator};
-use crate::syntax::ast::{Block, Item};
+use crate::syntax::ast::{Block, Expr, Item};
 use crate::{
     math::Transform,
     scene::{CsgOperation, Interior, LightGroup, Object, Shape},
@@ -25,10 +25,17 @@ impl Evaluator {
         block: &Block,
         stream: &mut Stream,
     ) -> EvalResult<Option<Object>> {
-        // POV-Ray lets a mesh block start with a declared object, as `object { .. }` does;
-        // only object modifiers may follow it.
-        let starts_with_object = matches!(head, "mesh" | "mesh2")
-            && matches!(self.peek_item(stream)?, Some(Item::Expr(_)));
+        // POV-Ray lets every shape and CSG block start with a declared object (or light), as
+        // `object { .. }` does, whatever its kind: `sphere { Box_Ident scale 2 }` is that box
+        // (measured); only object modifiers may follow it. A mesh takes any value there.
+        let starts_with_object = match self.peek_item(stream)? {
+            Some(Item::Expr(_)) if matches!(head, "mesh" | "mesh2") => true,
+            Some(Item::Expr(Expr::Ident(name, _))) if head != "light_group" => matches!(
+                self.runtime.lookup(name),
+                Some(Value::Object(_) | Value::Light(_))
+            ),
+            _ => false,
+        };
         let mut object = match head {
             _ if head == "object" || starts_with_object => {
                 let (value, span) = self.expect_value(stream, "an object")?;

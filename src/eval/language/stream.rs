@@ -287,14 +287,18 @@ impl Evaluator {
                 let value = self.layer_textures(value, layers)?;
                 self.assign(*local, target, value)?;
             }
-            DirectiveKind::Undef(name, name_span) => {
-                if self.runtime.scopes.innermost_holder(*name).is_none() {
+            DirectiveKind::Undef(target) if !target.indices.is_empty() => {
+                self.undefine_element(target)?;
+            }
+            DirectiveKind::Undef(target) => {
+                let name = target.name;
+                if self.runtime.scopes.innermost_holder(name).is_none() {
                     self.runtime.warn(
-                        *name_span,
+                        target.span,
                         format!("`#undef` of unknown identifier `{name}`"),
                     );
                 }
-                self.undefine(*name);
+                self.undefine(name);
             }
             DirectiveKind::If { branches, .. } => self.run_first_true_branch(branches, stream)?,
             DirectiveKind::IfDefined {
@@ -511,6 +515,63 @@ impl Evaluator {
             .is_some_and(|e| e.is_some()))
     }
 
+    /// `#undef A[i]..`: the element becomes uninitialised, as in POV-Ray (reading it is
+    /// then an error, `#ifdef` says no). An index out of range or a name that is not an
+    /// array is an error; an unknown name is warned about, as for a plain `#undef`.
+    fn undefine_element(&mut self, target: &crate::syntax::ast::Target) -> EvalResult<()> {
+        let mut indices = Vec::new();
+        for index in &target.indices {
+            indices.push(self.eval_float(index)?);
+        }
+        let Some((scope, name)) = self
+            .runtime
+            .scopes
+            .innermost_holder(target.name)
+            .map(|_| self.runtime.declare_slot(target.name))
+        else {
+            self.runtime.warn(
+                target.span,
+                format!("`#undef` of unknown identifier `{}`", target.name),
+            );
+            return Ok(());
+        };
+        let offset = self.element_offset(scope, name, target, &indices)?;
+        if let Some(Value::Array(array)) = self.runtime.scopes.get_mut(scope, name) {
+            Rc::make_mut(array).elements[offset] = None;
+        }
+        Ok(())
+    }
+
+    /// The offset of `target`'s element in the array held at (`scope`, `name`), or the
+    /// error for a name that is not an array or an index out of range.
+    fn element_offset(
+        &self,
+        scope: usize,
+        name: Symbol,
+        target: &crate::syntax::ast::Target,
+        indices: &[f64],
+    ) -> EvalResult<usize> {
+        let sizes = match self.runtime.scopes.get(scope, name) {
+            Some(Value::Array(array)) => &array.sizes,
+            _ => {
+                return Err(self
+                    .runtime
+                    .error(target.span, format!("`{}` is not an array", target.name))
+                    .with_label("indexed here")
+                    .into())
+            }
+        };
+        array_offset(sizes, indices).ok_or_else(|| {
+            self.runtime
+                .error(
+                    target.span,
+                    format!("array index {indices:?} out of range for size {sizes:?}"),
+                )
+                .with_label("index out of range")
+                .into()
+        })
+    }
+
     /// Stores a value for `#declare`/`#local`, including array elements.
     pub(crate) fn assign(
         &mut self,
@@ -543,26 +604,7 @@ impl Evaluator {
         } else {
             (scope, name)
         };
-        let sizes = match self.runtime.scopes.get(scope, name) {
-            Some(Value::Array(array)) => array.sizes.clone(),
-            _ => {
-                return Err(self
-                    .runtime
-                    .error(target.span, format!("`{}` is not an array", target.name))
-                    .with_label("indexed here")
-                    .into())
-            }
-        };
-        let Some(offset) = array_offset(&sizes, &indices) else {
-            return Err(self
-                .runtime
-                .error(
-                    target.span,
-                    format!("array index {indices:?} out of range for size {sizes:?}"),
-                )
-                .with_label("index out of range")
-                .into());
-        };
+        let offset = self.element_offset(scope, name, target, &indices)?;
         // Changed in place: the elements are copied only when another value shares them.
         if let Some(Value::Array(array)) = self.runtime.scopes.get_mut(scope, name) {
             Rc::make_mut(array).elements[offset] = Some(value);
