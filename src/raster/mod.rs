@@ -114,6 +114,22 @@ impl RasterFormat {
         })
     }
 
+    /// The file extensions tried, in order, for a file name written without one (POV-Ray
+    /// adds the type's extension: `png "wood"` reads `wood.png`).
+    pub fn extensions(self) -> &'static [&'static str] {
+        match self {
+            RasterFormat::Png | RasterFormat::System => &["png"],
+            RasterFormat::Jpeg => &["jpg", "jpeg"],
+            RasterFormat::Tga => &["tga"],
+            RasterFormat::Ppm => &["ppm"],
+            RasterFormat::Pgm => &["pgm"],
+            RasterFormat::Hdr => &["hdr"],
+            RasterFormat::Gif => &["gif"],
+            RasterFormat::Pot => &["pot"],
+            RasterFormat::Bmp => &["bmp"],
+        }
+    }
+
     fn image_format(self) -> Option<image::ImageFormat> {
         Some(match self {
             RasterFormat::Png => image::ImageFormat::Png,

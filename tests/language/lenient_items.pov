@@ -40,3 +40,8 @@ cylinder { Lamp }
 #ifndef (Arr[0]) #error "failed: `#undef Arr[1]` removes the other element" #end
 #declare Arr[1] = 5;
 Check((Arr[1] = 5), "an undefined element can be set again")
+
+// An image file named without its extension: POV-Ray tries the type's extension.
+#declare Picture = pigment { image_map { png "../reference/aa_method1" } }
+#declare Heights = height_field { png "../reference/aa_method1" }
+Check((max_extent(Heights).y > 0.1), "the height field read the image")

@@ -237,7 +237,7 @@ impl Evaluator {
         };
         let path = self
             .runtime
-            .find_file(&name, name_span, "image file", "no such file")?;
+            .find_image(&name, name_span, "image file", format)?;
         let raster = load(&path, format).map_err(|message| {
             self.runtime
                 .error(

@@ -444,6 +444,40 @@ impl Runtime {
             .unwrap_or_default();
     }
 
+    /// Finds an image file as POV-Ray does: the name as written, then, for a name without
+    /// an extension, the name with each of the format's extensions (`png "wood"` reads
+    /// `wood.png`). The error is the one for the name as written, naming what was tried.
+    pub(crate) fn find_image(
+        &self,
+        name: &str,
+        span: Span,
+        what: &str,
+        format: crate::raster::RasterFormat,
+    ) -> EvalResult<PathBuf> {
+        let found = self.find_file(name, span, what, "no such file");
+        if found.is_ok() || Path::new(name).extension().is_some() {
+            return found;
+        }
+        for extension in format.extensions() {
+            if let Ok(path) = self.find_include(&format!("{name}.{extension}")) {
+                return Ok(path);
+            }
+        }
+        found.map_err(|mut error| {
+            let tried: Vec<String> = format
+                .extensions()
+                .iter()
+                .map(|e| format!("`{name}.{e}`"))
+                .collect();
+            error.help = Some(format!(
+                "{}; also tried {}",
+                error.help.take().unwrap_or_default(),
+                tried.join(", ")
+            ));
+            error
+        })
+    }
+
     /// Leaves a level entered with [`Runtime::enter_nesting`].
     pub(crate) fn leave_nesting(&mut self) {
         self.nesting -= 1;

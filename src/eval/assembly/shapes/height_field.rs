@@ -130,7 +130,7 @@ impl Evaluator {
     ) -> EvalResult<(usize, usize, Vec<f64>)> {
         let path = self
             .runtime
-            .find_file(name, span, "height field image", "no such file")?;
+            .find_image(name, span, "height field image", format)?;
         let raster = crate::raster::load(&path, format).map_err(|message| {
             self.runtime
                 .error(
