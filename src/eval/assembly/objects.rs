@@ -314,7 +314,9 @@ impl Evaluator {
                     if &**w == "material" {
                         let mut body = Stream::new(block.body.clone());
                         let material = self.eval_material(&mut body)?;
-                        self.attach_texture(object, material.texture);
+                        if let Some(texture) = material.texture {
+                            self.attach_texture(object, texture);
+                        }
                         if let Some(texture) = material.interior_texture {
                             self.attach_interior_texture(object, texture);
                         }
@@ -588,7 +590,7 @@ impl Evaluator {
     /// `material { texture { .. } interior_texture { .. } interior { .. } }`.
     pub(crate) fn eval_material(&mut self, stream: &mut Stream) -> EvalResult<MaterialValue> {
         let mut material = MaterialValue {
-            texture: self.scene.default_texture.clone(),
+            texture: None,
             interior_texture: None,
             interior: None,
         };
@@ -602,17 +604,32 @@ impl Evaluator {
                     material.interior_texture = Some(self.eval_texture(&mut body)?);
                     continue;
                 }
+                // A transformation moves what the material holds so far (measured: a
+                // `translate` after `texture { }` moves its pattern, one before it does not).
+                Item::Keyword(word, span)
+                    if matches!(
+                        &**word,
+                        "translate" | "rotate" | "scale" | "matrix" | "transform"
+                    ) =>
+                {
+                    let t = self.transform_keyword(word, *span, stream)?;
+                    material.transform(&t);
+                    continue;
+                }
                 Item::Block(b) => self.eval_block(b)?,
                 Item::Expr(e) => self.eval_expr(e)?,
                 Item::Comma(_) => continue,
                 _ => return Err(self.unexpected_in(&item, "material")),
             };
             match value {
-                Value::Texture(t) => material.texture = (*t).clone(),
+                Value::Transform(t) => material.transform(&t),
+                Value::Texture(t) => material.texture = Some((*t).clone()),
                 Value::Interior(i) => material.interior = Some(Rc::unwrap_or_clone(i)),
                 Value::Material(declared) => {
                     let declared = Rc::unwrap_or_clone(declared);
-                    material.texture = declared.texture;
+                    if declared.texture.is_some() {
+                        material.texture = declared.texture;
+                    }
                     if declared.interior_texture.is_some() {
                         material.interior_texture = declared.interior_texture;
                     }

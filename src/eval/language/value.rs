@@ -161,12 +161,28 @@ impl Value {
 /// What a `material { .. }` holds.
 #[derive(Clone, Debug)]
 pub struct MaterialValue {
-    /// The texture (the default texture unless the material gives one).
-    pub texture: Texture,
+    /// The texture, if given (without one the object keeps its own, as in POV-Ray).
+    pub texture: Option<Texture>,
     /// The `interior_texture`, if given.
     pub interior_texture: Option<Texture>,
     /// The interior, if given.
     pub interior: Option<Interior>,
+}
+
+impl MaterialValue {
+    /// Moves what the material holds: its textures and its interior's media.
+    pub fn transform(&mut self, t: &Transform) {
+        for texture in self.texture.iter_mut().chain(&mut self.interior_texture) {
+            texture.transform(t);
+        }
+        for media in self
+            .interior
+            .iter_mut()
+            .flat_map(|interior| &mut interior.media)
+        {
+            media.transform(t);
+        }
+    }
 }
 
 /// One evaluated atmospheric block, as a value (it may be declared and reused).
