@@ -31,19 +31,17 @@ impl Evaluator {
         // `texture { N P F }` render, `texture { scale 2 P }` is refused).
         let mut leading_identifiers = true;
         while let Some(item) = self.next_item(stream)? {
-            let identifier = match &item {
-                Item::Expr(Expr::Ident(..)) => Some(item.span()),
-                _ => None,
-            };
-            let leading = leading_identifiers;
-            leading_identifiers &= identifier.is_some();
-            if let Some(span) = identifier {
-                if let Item::Expr(expr) = &item {
-                    let value = self.eval_expr(expr)?;
-                    if self.texture_part_identifier(&value, span, leading, &mut texture)? {
-                        continue;
-                    }
+            // An identifier is evaluated once, here; any other value it holds is used below.
+            let mut identifier_value = None;
+            if let Item::Expr(expr @ Expr::Ident(..)) = &item {
+                let value = self.eval_expr(expr)?;
+                let span = item.span();
+                if self.texture_part_identifier(&value, span, leading_identifiers, &mut texture)? {
+                    continue;
                 }
+                identifier_value = Some(value);
+            } else {
+                leading_identifiers = false;
             }
             if let Some((spec, list)) = self.block_pattern(&item)? {
                 let blocks = match (spec.block_count(), list) {
@@ -160,25 +158,27 @@ impl Evaluator {
                         },
                     }
                 }
-                Item::Expr(expr) => match self.eval_expr(expr)? {
-                    Value::Texture(t) => texture = (*t).clone(),
-                    Value::Map(map) => {
-                        if let AppearanceMap::Textures(entries) = &*map {
-                            let entries = entries.clone();
-                            self.attach_texture_map(
-                                &mut pattern,
-                                entries,
-                                average,
-                                &pattern_transform,
-                                &mut texture,
-                                expr.span(),
-                            )?;
-                        } else {
-                            return Err(self.unexpected_in(&item, "texture"));
+                Item::Expr(expr) => {
+                    match identifier_value.map_or_else(|| self.eval_expr(expr), Ok)? {
+                        Value::Texture(t) => texture = (*t).clone(),
+                        Value::Map(map) => {
+                            if let AppearanceMap::Textures(entries) = &*map {
+                                let entries = entries.clone();
+                                self.attach_texture_map(
+                                    &mut pattern,
+                                    entries,
+                                    average,
+                                    &pattern_transform,
+                                    &mut texture,
+                                    expr.span(),
+                                )?;
+                            } else {
+                                return Err(self.unexpected_in(&item, "texture"));
+                            }
                         }
+                        _ => return Err(self.unexpected_in(&item, "texture")),
                     }
-                    _ => return Err(self.unexpected_in(&item, "texture")),
-                },
+                }
                 Item::Comma(_) => {}
                 _ => return Err(self.unexpected_in(&item, "texture")),
             }
