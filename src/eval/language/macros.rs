@@ -170,7 +170,7 @@ impl Evaluator {
         let value = match self.runtime.lookup(call.name) {
             Some(value @ (Value::Float(_) | Value::Vector(_) | Value::Colour(_))) => value.clone(),
             Some(_) => return None,
-            None if super::builtins::FUNCTIONS.contains(&&*call.name) => return None,
+            // No built-in constant shares a built-in function's name.
             None => super::expr::builtin_constant(&call.name, self)?,
         };
         Some((value, rest))
