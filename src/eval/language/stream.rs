@@ -523,18 +523,14 @@ impl Evaluator {
         for index in &target.indices {
             indices.push(self.eval_float(index)?);
         }
-        let Some((scope, name)) = self
-            .runtime
-            .scopes
-            .innermost_holder(target.name)
-            .map(|_| self.runtime.declare_slot(target.name))
-        else {
+        if self.runtime.scopes.innermost_holder(target.name).is_none() {
             self.runtime.warn(
                 target.span,
                 format!("`#undef` of unknown identifier `{}`", target.name),
             );
             return Ok(());
-        };
+        }
+        let (scope, name) = self.runtime.declare_slot(target.name);
         let offset = self.element_offset(scope, name, target, &indices)?;
         if let Some(Value::Array(array)) = self.runtime.scopes.get_mut(scope, name) {
             Rc::make_mut(array).elements[offset] = None;
