@@ -757,20 +757,6 @@ fn hexadecimal_float(s: &str) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    /// `y (-1)` is read as two items because `y` is a constant; that rule needs no built-in
-    /// function to share a constant's name.
-    #[test]
-    fn no_built_in_function_is_named_like_a_constant() {
-        let evaluator = crate::eval::Evaluator::new(crate::eval::EvalOptions::default());
-        for name in super::FUNCTIONS {
-            let constant = crate::eval::language::expr::builtin_constant(name, &evaluator);
-            assert!(
-                constant.is_none(),
-                "`{name}` is both a function and a constant"
-            );
-        }
-    }
-
     #[test]
     fn str_formats_long_texts_as_povray() {
         use super::format_float;

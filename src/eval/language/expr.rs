@@ -517,3 +517,20 @@ pub(crate) fn builtin_constant(name: &str, evaluator: &Evaluator) -> Option<Valu
         _ => return None,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    /// `y (-1)` is read as two items because `y` is a constant; that rule needs no built-in
+    /// function to share a constant's name.
+    #[test]
+    fn no_built_in_function_is_named_like_a_constant() {
+        let evaluator = crate::eval::Evaluator::new(crate::eval::EvalOptions::default());
+        for name in crate::eval::language::builtins::FUNCTIONS {
+            let constant = super::builtin_constant(name, &evaluator);
+            assert!(
+                constant.is_none(),
+                "`{name}` is both a function and a constant"
+            );
+        }
+    }
+}
