@@ -1,13 +1,24 @@
 #!/usr/bin/env python3
-"""Render the conformance corpus with POV-Ray and durer and compare the images.
+"""Render conformance scenes with POV-Ray and durer and compare the images.
 
-usage: scripts/conformance.py [--corpus FILE] [--durer PATH] [--jobs N] [--timeout S]
+usage: scripts/conformance.py [--set corpus|examples|wild|all]... [--corpus FILE]
+                              [--durer PATH] [--jobs N] [--timeout S]
                               [--out docs/conformance.md] [--filter SUBSTR]
 
-The corpus (default ../shared/corpus.txt from the repository root) lists POV-Ray's example
-scenes, one per line: `path<TAB>tier<TAB>yes|no`, paths relative to
-/usr/share/doc/povray/examples; lines starting with `#` are comments. Each scene's folder is
-copied into conformance-work/ (git-ignored) and rendered there at 160x120 by
+Three sets of scenes, chosen with --set (repeatable; default corpus):
+
+    corpus    ../shared/corpus.txt: 299 of POV-Ray's example scenes, one per line
+              `path<TAB>tier<TAB>yes|no`, paths relative to /usr/share/doc/povray/examples
+              (--corpus FILE reads another list of that form)
+    examples  every .pov file under /usr/share/doc/povray/examples (396), tier from the
+              corpus list where it has one; POV-Ray itself decides what renders
+    wild      tests/wild/list.tsv: scenes people published in their own repositories,
+              `repo<TAB>commit<TAB>path<TAB>extra paths<TAB>category<TAB>yes|no<TAB>note`,
+              exported by scripts/fetch-wild.py into conformance-work/wild/ (run it first)
+
+Lines starting with `#` are comments. Each scene's folder (for wild scenes, the exported
+tree of its repository) is copied into conformance-work/ (git-ignored) and rendered there at
+160x120 by
 
     povray -D +Iscene.pov +Oout.png +W160 +H120 -GA +WT1 +L<include> +L<scene folder>
     durer render scene.pov -o out.png --width 160 --height 120 -L <include> --quiet
@@ -21,8 +32,9 @@ modification time, so reruns only pay for durer. Results are classified as
     error   durer failed (exit status, timeout, missing or unreadable image, wrong size)
     skip    POV-Ray failed, or the corpus marks the scene as not rendering
 
-and written as a Markdown report (default docs/conformance.md); the summary is also printed.
-Standard library only.
+and written as a Markdown report (default docs/conformance.md) with one section per set: a
+run replaces the sections of the sets it ran and keeps the others. The summary is also
+printed. Standard library only.
 """
 
 import argparse
@@ -47,6 +59,14 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WORK = os.path.join(REPO, "conformance-work")
 CACHE = os.path.join(WORK, "povray-cache")
 EXAMPLES = "/usr/share/doc/povray/examples"
+WILD_LIST = os.path.join(REPO, "tests", "wild", "list.tsv")
+WILD_TREES = os.path.join(WORK, "wild")
+SETS = ["corpus", "examples", "wild"]
+SET_TITLES = {
+    "corpus": "POV-Ray's example corpus (../shared/corpus.txt)",
+    "examples": "All of POV-Ray's example scenes",
+    "wild": "Real-world scenes (tests/wild/list.tsv)",
+}
 INCLUDE = "/usr/share/povray-3.7/include"
 WIDTH, HEIGHT = 160, 120
 CLASSES = ["match", "close", "differ", "error", "skip"]
@@ -55,21 +75,27 @@ CACHE_VERSION = 1
 
 
 class Entry:
-    """One corpus line."""
+    """One scene to render: its name in the report, where it lives and what it needs."""
 
-    def __init__(self, path, tier, renders, order):
+    def __init__(self, path, tier, renders, order, source=None, tree=None, cache_tag=""):
         self.path = path
         self.tier = tier
         self.renders = renders
         self.order = order
-
-    @property
-    def source(self):
-        return self.path if os.path.isabs(self.path) else os.path.join(EXAMPLES, self.path)
+        # The scene file, and the folder copied for each render (the scene's own by default).
+        self.source = source or (path if os.path.isabs(path) else os.path.join(EXAMPLES, path))
+        self.tree = tree or os.path.dirname(self.source)
+        # Added to the POV-Ray cache key (a wild scene's commit).
+        self.cache_tag = cache_tag
 
     @property
     def slug(self):
         return re.sub(r"[^A-Za-z0-9_.-]+", "_", self.path.replace(".pov", ""))
+
+    @property
+    def scene_folder(self):
+        """The scene's folder relative to the copied tree."""
+        return os.path.relpath(os.path.dirname(self.source), self.tree)
 
 
 class Result:
@@ -85,21 +111,55 @@ class Result:
         self.durer_time = durer_time
 
 
-def read_corpus(path):
-    entries = []
+def list_lines(path):
+    """(line number, fields) of a tab-separated list, without comments and blank lines."""
     with open(path, encoding="utf-8") as handle:
         for number, line in enumerate(handle, 1):
             line = line.rstrip("\n")
             if not line.strip() or line.lstrip().startswith("#"):
                 continue
-            fields = line.split("\t") if "\t" in line else line.split()
-            if len(fields) < 3:
-                raise SystemExit(f"{path}:{number}: expected path<TAB>tier<TAB>yes|no")
-            renders = fields[2].strip().lower()
-            if renders not in ("yes", "no"):
-                raise SystemExit(f"{path}:{number}: third column must be yes or no")
-            entries.append(Entry(fields[0].strip(), fields[1].strip(), renders == "yes",
-                                 len(entries)))
+            yield number, (line.split("\t") if "\t" in line else line.split())
+
+
+def read_corpus(path):
+    entries = []
+    for number, fields in list_lines(path):
+        if len(fields) < 3:
+            raise SystemExit(f"{path}:{number}: expected path<TAB>tier<TAB>yes|no")
+        renders = fields[2].strip().lower()
+        if renders not in ("yes", "no"):
+            raise SystemExit(f"{path}:{number}: third column must be yes or no")
+        entries.append(Entry(fields[0].strip(), fields[1].strip(), renders == "yes",
+                             len(entries)))
+    return entries
+
+
+def read_all_examples(corpus_path):
+    """Every .pov file of POV-Ray's examples; POV-Ray decides which render."""
+    tiers = {}
+    if os.path.exists(corpus_path):
+        tiers = {entry.path: entry.tier for entry in read_corpus(corpus_path)}
+    paths = []
+    for folder, _, files in os.walk(EXAMPLES):
+        paths += [os.path.relpath(os.path.join(folder, name), EXAMPLES)
+                  for name in files if name.endswith(".pov")]
+    return [Entry(path, tiers.get(path, "-"), True, order)
+            for order, path in enumerate(sorted(paths))]
+
+
+def read_wild(path):
+    """The real-world list; scenes not yet exported by scripts/fetch-wild.py are errors."""
+    entries = []
+    for number, fields in list_lines(path):
+        if len(fields) < 6:
+            raise SystemExit(f"{path}:{number}: expected repo, commit, path, extra paths, "
+                             "category, yes|no, note")
+        repo, commit, scene, _, category, renders = (field.strip() for field in fields[:6])
+        if renders not in ("yes", "no"):
+            raise SystemExit(f"{path}:{number}: sixth column must be yes or no")
+        tree = os.path.join(WILD_TREES, repo.replace("/", "+"))
+        entries.append(Entry(f"{repo}/{scene}", category, renders == "yes", len(entries),
+                             source=os.path.join(tree, scene), tree=tree, cache_tag=commit))
     return entries
 
 
@@ -134,11 +194,15 @@ def describe_failure(code, stderr, timeout, pick_error_line=False):
 
 
 def fresh_copy(entry, kind):
-    """Copy the scene's folder into the scratch area; returns the copy's folder."""
+    """Copy the scene's tree into the scratch area; returns the copy's scene folder."""
     target = os.path.join(WORK, "run", entry.slug, kind)
     shutil.rmtree(target, ignore_errors=True)
-    shutil.copytree(os.path.dirname(entry.source), target, symlinks=True)
-    return target
+    shutil.copytree(entry.tree, target, symlinks=True)
+    return os.path.normpath(os.path.join(target, entry.scene_folder))
+
+
+def remove_copy(entry, kind):
+    shutil.rmtree(os.path.join(WORK, "run", entry.slug, kind), ignore_errors=True)
 
 
 def povray_command(scene_name, output, folder):
@@ -149,7 +213,7 @@ def povray_command(scene_name, output, folder):
 def povray_render(entry, timeout):
     """Render with POV-Ray, or reuse the cache; returns (png path or None, seconds, note)."""
     mtime = os.stat(entry.source).st_mtime_ns
-    key_text = f"{CACHE_VERSION}\0{entry.source}\0{mtime}\0{WIDTH}x{HEIGHT}"
+    key_text = f"{CACHE_VERSION}\0{entry.source}\0{mtime}\0{WIDTH}x{HEIGHT}{entry.cache_tag}"
     key = hashlib.sha1(key_text.encode()).hexdigest()[:12]
     png = os.path.join(CACHE, f"{entry.slug}-{key}.png")
     record_path = os.path.join(CACHE, f"{entry.slug}-{key}.json")
@@ -179,7 +243,7 @@ def povray_render(entry, timeout):
         os.replace(partial, png)
     elif os.path.exists(partial):
         os.remove(partial)
-    shutil.rmtree(os.path.dirname(folder), ignore_errors=True)
+    remove_copy(entry, "povray")
     with open(record_path, "w", encoding="utf-8") as handle:
         json.dump({"scene": entry.source, "ok": ok, "seconds": seconds, "note": note,
                    "timed_out": code is None, "timeout": timeout}, handle)
@@ -195,7 +259,7 @@ def durer_render(entry, durer, timeout):
     command = [durer, "render", os.path.basename(entry.source), "-o", output,
                "--width", str(WIDTH), "--height", str(HEIGHT), "-L", INCLUDE, "--quiet"]
     code, stderr, seconds = run_command(command, folder, timeout)
-    shutil.rmtree(os.path.dirname(folder), ignore_errors=True)
+    remove_copy(entry, "durer")
     if code != 0:
         return None, seconds, describe_failure(code, stderr, timeout)
     if not os.path.exists(output):
@@ -205,7 +269,9 @@ def durer_render(entry, durer, timeout):
 
 def run_scene(entry, durer, timeout):
     if not entry.renders:
-        return Result(entry, "skip", "corpus: does not render in POV-Ray")
+        return Result(entry, "skip", "list: does not render in POV-Ray")
+    if not os.path.exists(entry.source):
+        return Result(entry, "skip", "not fetched: run scripts/fetch-wild.py")
     reference, povray_time, note = povray_render(entry, timeout)
     if reference is None:
         return Result(entry, "skip", note, povray_time=povray_time)
@@ -231,11 +297,11 @@ def counts(results):
     return ", ".join(f"{tally[name]} {name}" for name in CLASSES)
 
 
-def summary_lines(results):
+def summary_lines(results, group="tier"):
     lines = [f"{len(results)} scenes: {counts(results)}"]
     for tier in sorted({r.entry.tier for r in results}):
         in_tier = [r for r in results if r.entry.tier == tier]
-        lines.append(f"tier {tier} ({len(in_tier)} scenes): {counts(in_tier)}")
+        lines.append(f"{group} {tier} ({len(in_tier)} scenes): {counts(in_tier)}")
     return lines
 
 
@@ -248,25 +314,41 @@ def markdown_cell(text, limit=140):
     return text if len(text) <= limit else text[: limit - 1] + "…"
 
 
-def write_report(path, results, args, wall):
+REPORT_INTRO = [
+    "# Conformance against POV-Ray 3.7",
+    "",
+    "Written by `scripts/conformance.py`, one section per set of scenes (`--set corpus`, "
+    "`--set examples`, `--set wild`); a run replaces the sections it ran.",
+    "",
+    "**match**: at most 2% of pixels differ by more than 24/255 in a channel; "
+    "**close**: 4x4-block means differ by at most 6/255 on average; "
+    "**error**: durer failed; **skip**: POV-Ray failed, the list says it does not "
+    "render, or the scene was not fetched.",
+    "",
+]
+
+
+def section_marker(name):
+    return f"<!-- conformance set: {name} -->"
+
+
+def report_section(name, results, args, wall):
+    group = "category" if name == "wild" else "tier"
     lines = [
-        "# Conformance against POV-Ray 3.7",
+        section_marker(name),
+        f"## {SET_TITLES[name]}",
         "",
-        f"Generated by `scripts/conformance.py` on {datetime.date.today().isoformat()}: "
+        f"Generated on {datetime.date.today().isoformat()}: "
         f"{WIDTH}x{HEIGHT}, timeout {args.timeout:g} s, {args.jobs} jobs in parallel "
         f"(times are wall-clock seconds; POV-Ray single-threaded, cached times are from "
-        f"the run that filled the cache). Total run time {wall:.0f} s.",
-        "",
-        "**match**: at most 2% of pixels differ by more than 24/255 in a channel; "
-        "**close**: 4x4-block means differ by at most 6/255 on average; "
-        "**error**: durer failed; **skip**: POV-Ray failed or the corpus says it does not "
-        "render.",
+        f"the run that filled the cache). Run time {wall:.0f} s"
+        + (f", scenes whose path contains `{args.filter}`" if args.filter else "") + ".",
         "",
     ]
-    lines += [f"- {line}" for line in summary_lines(results)]
+    lines += [f"- {line}" for line in summary_lines(results, group)]
     lines += [
         "",
-        "| scene | tier | result | over 24/255 | block diff | povray s | durer s | note |",
+        f"| scene | {group} | result | over 24/255 | block diff | povray s | durer s | note |",
         "|---|---|---|---:|---:|---:|---:|---|",
     ]
     for r in results:
@@ -278,9 +360,39 @@ def write_report(path, results, args, wall):
             f"{seconds_text(r.povray_time)} | {seconds_text(r.durer_time)} | "
             f"{markdown_cell(r.note)} |"
         )
+    return lines + [""]
+
+
+def existing_sections(path):
+    """The sections of an earlier report, by set name."""
+    sections = {}
+    if not os.path.exists(path):
+        return sections
+    current = None
+    with open(path, encoding="utf-8") as handle:
+        for line in handle.read().splitlines():
+            match = re.fullmatch(r"<!-- conformance set: (\w+) -->", line)
+            if match:
+                current = match.group(1)
+                sections[current] = []
+            if current:
+                sections[current].append(line)
+    return sections
+
+
+def write_report(path, sections):
+    """Writes the report: the new sections, and the earlier report's other sections."""
+    merged = existing_sections(path)
+    merged.update(sections)
+    lines = list(REPORT_INTRO)
+    for name in SETS:
+        if name in merged:
+            lines += merged[name]
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w", encoding="utf-8") as handle:
-        handle.write("\n".join(lines) + "\n")
+    temporary = path + ".partial"
+    with open(temporary, "w", encoding="utf-8") as handle:
+        handle.write("\n".join(lines).rstrip("\n") + "\n")
+    os.replace(temporary, path)
 
 
 def default_durer():
@@ -294,7 +406,10 @@ def default_durer():
 def main():
     global WIDTH, HEIGHT
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--corpus", default=os.path.join(REPO, "..", "shared", "corpus.txt"))
+    parser.add_argument("--set", dest="sets", action="append", choices=SETS + ["all"],
+                        help="which scenes: corpus (default), examples, wild or all")
+    parser.add_argument("--corpus", default=os.path.join(REPO, "..", "shared", "corpus.txt"),
+                        help="the list for --set corpus")
     parser.add_argument("--durer", default=None,
                         help="durer binary (default target/release/durer, else target/debug)")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
@@ -320,14 +435,36 @@ def main():
               "(e.g. `sudo apt-get install povray povray-includes povray-examples`)",
               file=sys.stderr)
         return 2
-    entries = [e for e in read_corpus(args.corpus) if args.filter in e.path]
-    if not entries:
-        print("error: no corpus entries selected", file=sys.stderr)
+    sets = args.sets or ["corpus"]
+    sets = SETS if "all" in sets else [name for name in SETS if name in sets]
+    readers = {"corpus": lambda: read_corpus(args.corpus),
+               "examples": lambda: read_all_examples(args.corpus),
+               "wild": lambda: read_wild(WILD_LIST)}
+    chosen = {name: [e for e in readers[name]() if args.filter in e.path] for name in sets}
+    if not any(chosen.values()):
+        print("error: no scenes selected", file=sys.stderr)
         return 2
     os.makedirs(CACHE, exist_ok=True)
     os.makedirs(os.path.join(WORK, "durer-out"), exist_ok=True)
 
-    start = time.monotonic()
+    sections = {}
+    for name, entries in chosen.items():
+        if not entries:
+            continue
+        start = time.monotonic()
+        results = render_all(name, entries, durer, args)
+        wall = time.monotonic() - start
+        sections[name] = report_section(name, results, args, wall)
+        print(f"{SET_TITLES[name]}:")
+        for line in summary_lines(results, "category" if name == "wild" else "tier"):
+            print(f"  {line}")
+    write_report(args.out, sections)
+    print(f"report: {os.path.abspath(args.out)}")
+    return 0
+
+
+def render_all(name, entries, durer, args):
+    """Renders one set's scenes in parallel; results in list order."""
     results = []
     lock = threading.Lock()
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
@@ -340,16 +477,10 @@ def main():
                 result = Result(entry, "error", f"harness: {type(error).__name__}: {error}")
             with lock:
                 results.append(result)
-                print(f"[{len(results)}/{len(entries)}] {entry.path}: {result.verdict}"
+                print(f"[{name} {len(results)}/{len(entries)}] {entry.path}: {result.verdict}"
                       + (f" ({result.note})" if result.note else ""), file=sys.stderr)
-    wall = time.monotonic() - start
     results.sort(key=lambda r: r.entry.order)
-    write_report(args.out, results, args, wall)
-    for line in summary_lines(results):
-        print(line)
-    print(f"report: {os.path.abspath(args.out)} ({wall:.0f} s)")
-    return 0
-
+    return results
 
 if __name__ == "__main__":
     sys.exit(main())
