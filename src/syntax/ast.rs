@@ -176,11 +176,14 @@ impl Expr {
     }
 }
 
-/// `name(arguments)`.
+/// `name(arguments)`, or `array[i](arguments)`.
 #[derive(Clone, Debug)]
 pub struct Call {
-    /// The called name.
+    /// The called name; for an array element, the array's name.
     pub name: Name,
+    /// For `array[i](arguments)`, the element called: the value the call applies to is this
+    /// expression's, not the name's.
+    pub element: Option<Rc<Expr>>,
     /// Span of the name.
     pub name_span: Span,
     /// The arguments; blocks (e.g. `texture { .. }`) are allowed for macros.

@@ -215,6 +215,22 @@ impl<'m> Lowerer<'m> {
                     let name = post.into_inner().next().map(|w| w.as_str()).unwrap_or("");
                     Expr::Member(Rc::new(value), Name::from(name), span)
                 }
+                Rule::element_call => {
+                    let mut parts = post.into_inner();
+                    let index = parts.next().expect("element_call has an index");
+                    let index_span = value.span().join(self.span(&index));
+                    let index = self.full_expr(index.into_inner().next().expect("index"));
+                    let element = Expr::Index(Rc::new(value), Rc::new(index), index_span);
+                    let (arguments, directives) = self.arguments(parts.next());
+                    Expr::Call(Rc::new(Call {
+                        name: root_name(&element),
+                        element: Some(Rc::new(element)),
+                        name_span: index_span,
+                        arguments,
+                        directives,
+                        span,
+                    }))
+                }
                 _ => {
                     let index = self.full_expr(post.into_inner().next().expect("index"));
                     Expr::Index(Rc::new(value), Rc::new(index), span)
@@ -248,9 +264,22 @@ impl<'m> Lowerer<'m> {
         let mut inner = pair.into_inner();
         let name = inner.next().expect("call name");
         let name_span = self.span(&name);
+        let (arguments, directives) = self.arguments(inner.next());
+        Call {
+            name: Name::from(name.as_str()),
+            element: None,
+            name_span,
+            arguments,
+            directives,
+            span,
+        }
+    }
+
+    /// Lowers a call's argument list: the arguments, and the directives written among them.
+    fn arguments(&self, list: Option<Pair<Rule>>) -> (Vec<Argument>, Vec<ArgumentDirective>) {
         let mut arguments = Vec::new();
         let mut directives = Vec::new();
-        if let Some(list) = inner.next() {
+        if let Some(list) = list {
             // The pieces of one comma-separated slot, sorted once the slot is complete.
             let mut slot = Vec::new();
             for piece in list.into_inner() {
@@ -262,13 +291,7 @@ impl<'m> Lowerer<'m> {
             }
             self.sort_slot(&mut slot, &mut arguments, &mut directives);
         }
-        Call {
-            name: Name::from(name.as_str()),
-            name_span,
-            arguments,
-            directives,
-            span,
-        }
+        (arguments, directives)
     }
 
     /// Lowers one piece of a call's argument list: an argument or a directive.
@@ -708,6 +731,15 @@ enum ArgumentPiece {
 }
 
 /// The inner pairs of `pair` without its directive words.
+/// The name an indexed expression starts from (`Fns` of `Fns[1][2]`), for messages.
+fn root_name(expr: &Expr) -> Name {
+    match expr {
+        Expr::Index(base, _, _) => root_name(base),
+        Expr::Ident(name, _) => *name,
+        _ => Name::from("element"),
+    }
+}
+
 fn significant(pair: Pair<Rule>) -> impl Iterator<Item = Pair<Rule>> {
     pair.into_inner()
         .filter(|p| !is_directive_word(p.as_rule()))

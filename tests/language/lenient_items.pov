@@ -45,3 +45,19 @@ Check((Arr[1] = 5), "an undefined element can be set again")
 #declare Picture = pigment { image_map { png "../reference/aa_method1" } }
 #declare Heights = height_field { png "../reference/aa_method1" }
 Check((max_extent(Heights).y > 0.1), "the height field read the image")
+
+// A function (or spline) stored in an array is called with `Fns[I](x)`, in scene code and
+// inside functions; an element that cannot be called is an item followed by a parenthesis.
+#declare Fns = array[2] { function(x) { x * 2 }, function(x) { x + 10 } }
+#declare I = 1;
+Check((Fns[I](3) = 13), "`Fns[I](3)` calls the second function")
+Check((Fns[0](3) + 1 = 7), "`Fns[0](3) + 1`")
+#declare Doubled = function(x) { Fns[1](x) * 2 }
+Check((Doubled(1) = 22), "`Fns[1](x)` inside a function")
+#declare Grid = array[1][2] { { function { x + y }, function { x - y } } }
+Check((Grid[0][1](5, 2, 0) = 3), "a function in a two-dimensional array")
+#declare Paths = array[1] { spline { linear_spline 0, <0, 0, 0>, 1, <2, 4, 6> } }
+Check((vlength(Paths[0](0.5) - <1, 2, 3>) < 1e-9), "a spline in an array")
+#declare Normals = array[1] { <0, 1, 0> }
+#declare Floor = plane { Normals[0] (-1) }
+Check((inside(Floor, <0, -1.5, 0>) & !inside(Floor, <0, -0.5, 0>)), "`Normals[0] (-1)` is a normal and a distance")

@@ -440,6 +440,10 @@ impl Evaluator {
     }
 
     fn eval_call(&mut self, call: &Rc<Call>) -> EvalResult<Value> {
+        if let Some(element) = &call.element {
+            let callee = self.eval_expr(element)?;
+            return self.call_value(callee, call);
+        }
         match self.runtime.lookup(call.name) {
             Some(Value::Macro(_)) => self.call_macro_value(call),
             Some(Value::Function(function)) => {
@@ -453,6 +457,30 @@ impl Evaluator {
                 })
             }
             _ => self.with_argument_directives(call, |ev| super::builtins::call_builtin(ev, call)),
+        }
+    }
+
+    /// Calls the value of an array element (`Fns[I](x)`): a function or a spline.
+    pub(crate) fn call_value(&mut self, callee: Value, call: &Rc<Call>) -> EvalResult<Value> {
+        match callee {
+            Value::Function(function) => {
+                self.with_argument_directives(call, |ev| ev.call_user_function(&function, call))
+            }
+            Value::Spline(spline) => self.with_argument_directives(call, |ev| {
+                super::splines::call_spline(ev, &spline, call)
+            }),
+            other => Err(self
+                .runtime
+                .error(
+                    call.name_span,
+                    format!(
+                        "this element of `{}` is {}, not a function",
+                        call.name,
+                        other.type_name()
+                    ),
+                )
+                .with_label("called here")
+                .into()),
         }
     }
 

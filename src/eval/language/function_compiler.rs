@@ -297,7 +297,7 @@ impl Evaluator {
     /// Compiles a call inside a function body.
     fn compile_call(&mut self, call: &Call, names: &mut Vec<Symbol>) -> EvalResult<Node> {
         let name = &*call.name;
-        if let Some(callee) = self.called_function(call)? {
+        if let Some(callee) = self.called_function(call, names)? {
             if callee.output() != Output::Float {
                 let example = match callee.output() {
                     Output::Colour => ".red",
@@ -384,11 +384,18 @@ impl Evaluator {
 
     /// The compiled user function `call` names, checked against the call's argument count;
     /// `None` when the name is not a function.
-    fn called_function(&mut self, call: &Call) -> EvalResult<Option<Arc<Function>>> {
-        let Some(Value::Function(callee)) = self.runtime.lookup(call.name) else {
-            return Ok(None);
+    fn called_function(
+        &mut self,
+        call: &Call,
+        names: &[Symbol],
+    ) -> EvalResult<Option<Arc<Function>>> {
+        let callee = match &call.element {
+            Some(element) => self.element_function(call, element, names)?,
+            None => match self.runtime.lookup(call.name) {
+                Some(Value::Function(callee)) => callee.clone(),
+                _ => return Ok(None),
+            },
         };
-        let callee = callee.clone();
         let compiled = self.checked_callee(&callee, call)?;
         if compiled.call_depth() >= CALL_DEPTH_LIMIT {
             return Err(self
@@ -398,6 +405,41 @@ impl Evaluator {
                 .into());
         }
         Ok(Some(compiled))
+    }
+
+    /// The function an array element called inside a function holds (`Fns[2](x, y, z)`);
+    /// the element is chosen when the function is compiled.
+    fn element_function(
+        &mut self,
+        call: &Call,
+        element: &Expr,
+        names: &[Symbol],
+    ) -> EvalResult<Rc<UserFunction>> {
+        if self.reads_parameters(element, names) {
+            return Err(self
+                .runtime
+                .error(
+                    element.span(),
+                    "the element called cannot depend on the parameters",
+                )
+                .with_label("the index must be known when the function is declared")
+                .into());
+        }
+        match self.eval_expr(element)? {
+            Value::Function(function) => Ok(function),
+            other => Err(self
+                .runtime
+                .error(
+                    call.name_span,
+                    format!(
+                        "this element of `{}` is {}, not a function",
+                        call.name,
+                        other.type_name()
+                    ),
+                )
+                .with_label("called inside a function")
+                .into()),
+        }
     }
 
     /// `F(..).member` inside a function: one component of a pigment, transformation or spline
@@ -418,7 +460,7 @@ impl Evaluator {
                 )
                 .into());
         };
-        let Some(callee) = self.called_function(call)? else {
+        let Some(callee) = self.called_function(call, names)? else {
             if let Some(Value::Spline(_)) = self.runtime.lookup(call.name) {
                 return Err(self.spline_call_error(call));
             }
@@ -557,7 +599,8 @@ impl Evaluator {
             }
             Expr::Vector(elements, _) => elements.iter().any(|e| self.reads_parameters(e, names)),
             Expr::Call(call) => {
-                matches!(self.runtime.lookup(call.name), Some(Value::Function(_)))
+                call.element.is_some()
+                    || matches!(self.runtime.lookup(call.name), Some(Value::Function(_)))
                     || matches!(&*call.name, "sum" | "prod")
                     || call.arguments.iter().any(|argument| match argument {
                         Argument::Expr(e) => self.reads_parameters(e, names),

@@ -136,6 +136,17 @@ impl Evaluator {
     pub(crate) fn eval_value_pair(&mut self, expr: &Expr) -> EvalResult<(Value, Option<Expr>)> {
         use crate::syntax::ast::{BinaryOp, UnaryOp};
         if let Expr::Call(call) = expr {
+            if let Some(element) = &call.element {
+                // `Fns[I](x)` calls the element; `Normals[I] (-1)` is two items.
+                let value = self.eval_expr(element)?;
+                return match (value, Self::single_argument(call)) {
+                    (
+                        value @ (Value::Float(_) | Value::Vector(_) | Value::Colour(_)),
+                        Some(rest),
+                    ) => Ok((value, Some(rest.clone()))),
+                    (value, _) => Ok((self.call_value(value, call)?, None)),
+                };
+            }
             if let Some((value, rest)) = self.value_before_parentheses(call) {
                 // `plane { y (-1) }`: a value that cannot be called, then a float.
                 return Ok((value, Some(rest.clone())));
@@ -161,12 +172,7 @@ impl Evaluator {
     /// or float, or a built-in constant such as `y`), that value: POV-Ray reads the two as
     /// separate items (`plane { y (-.05) }`), measured. `None` for a real call.
     fn value_before_parentheses<'a>(&self, call: &'a Call) -> Option<(Value, &'a Expr)> {
-        let [crate::syntax::ast::Argument::Expr(rest)] = call.arguments.as_slice() else {
-            return None;
-        };
-        if !call.directives.is_empty() {
-            return None;
-        }
+        let rest = Self::single_argument(call)?;
         let value = match self.runtime.lookup(call.name) {
             Some(value @ (Value::Float(_) | Value::Vector(_) | Value::Colour(_))) => value.clone(),
             Some(_) => return None,
@@ -174,6 +180,14 @@ impl Evaluator {
             None => super::expr::builtin_constant(&call.name, self)?,
         };
         Some((value, rest))
+    }
+
+    /// The argument of a call with exactly one expression argument and no directives.
+    fn single_argument(call: &Call) -> Option<&Expr> {
+        match call.arguments.as_slice() {
+            [crate::syntax::ast::Argument::Expr(rest)] if call.directives.is_empty() => Some(rest),
+            _ => None,
+        }
     }
 
     /// Evaluates a macro call used as a value: its body must yield exactly one value.

@@ -114,7 +114,9 @@ impl Evaluator {
             frame.position += 1;
             match item {
                 Item::Directive(directive) => self.run_directive(&directive, stream)?,
-                Item::Expr(Expr::Call(ref call)) if self.is_macro(call.name) => {
+                Item::Expr(Expr::Call(ref call))
+                    if call.element.is_none() && self.is_macro(call.name) =>
+                {
                     self.enter_macro(call, stream)?
                 }
                 other => return Ok(Some(other)),
