@@ -60,3 +60,23 @@ fn lights_keep_media_flags_and_follow_their_csg() {
     let turned = scene.lights[2].position;
     assert!((turned - glam::DVec3::new(0.0, 1.0, 0.0)).length() < 1e-12);
 }
+
+/// Settings that POV-Ray clamps silently rather than refusing: photons `autostop` 2 shoots as
+/// 1 does and -1 as 0 (measured by the photon counts povray prints: 2040 and 755).
+#[test]
+fn photon_autostop_is_clamped_as_povray_does() {
+    let dir = crate::scratch("autostop");
+    for (given, clamped) in [(2.0, 1.0), (-1.0, 0.0), (0.4, 0.4)] {
+        let path = dir.join("autostop.pov");
+        std::fs::write(
+            &path,
+            format!("global_settings {{ photons {{ count 1000 autostop {given} }} }}\n"),
+        )
+        .expect("write scene");
+        let evaluated = evaluate(&path);
+        let scene = evaluated.scene.expect("the scene evaluates");
+        let photons = scene.settings.photons.expect("photons are on");
+        assert_eq!(photons.autostop, clamped, "autostop {given}");
+        assert!(evaluated.diagnostics.is_empty(), "povray does not warn");
+    }
+}

@@ -314,6 +314,32 @@ fn uv_camera_faces<'a>(
 }
 
 impl Evaluator {
+    /// POV-Ray refuses a negative viewing angle, and one of 180 degrees or more for the two
+    /// cameras that look through a plane.
+    fn check_viewing_angle(
+        &self,
+        angle: f64,
+        projection: Projection,
+        span: Span,
+    ) -> EvalResult<()> {
+        let planar = matches!(
+            projection,
+            Projection::Perspective | Projection::Orthographic
+        );
+        let problem = if angle < 0.0 {
+            "a viewing angle cannot be negative"
+        } else if planar && angle >= 180.0 {
+            "this camera's viewing angle must be smaller than 180 degrees"
+        } else {
+            return Ok(());
+        };
+        Err(self
+            .runtime
+            .error(span, problem)
+            .with_label(format!("angle {angle}"))
+            .into())
+    }
+
     pub(crate) fn eval_camera(&mut self, stream: &mut Stream) -> EvalResult<Camera> {
         let mut camera = Camera::default();
         let mut sky = DVec3::Y;
@@ -344,8 +370,11 @@ impl Evaluator {
                         "angle" => {
                             // `angle` may stand alone for orthographic cameras.
                             match self.peek_item(stream)? {
-                                Some(Item::Expr(_)) => {
-                                    angle = Some(self.expect_float(stream, "an angle")?);
+                                Some(Item::Expr(expr)) => {
+                                    let angle_span = expr.span();
+                                    let given = self.expect_float(stream, "an angle")?;
+                                    self.check_viewing_angle(given, camera.projection, angle_span)?;
+                                    angle = Some(given);
                                     if camera.projection == Projection::Spherical {
                                         vertical_angle = self
                                             .optional_second_value(stream)?
@@ -449,8 +478,9 @@ impl Evaluator {
         }
         if camera.projection == Projection::Orthographic {
             if let (Some(angle), Some(target)) = (angle, look_at) {
-                // Same view as a perspective camera at the look_at distance.
-                let angle = if angle.is_finite() {
+                // Same view as a perspective camera at the look_at distance; `angle 0` (or
+                // no value) takes the perspective angle of `right` and `direction`, as povray.
+                let angle = if angle.is_finite() && angle > 0.0 && angle < 180.0 {
                     angle
                 } else {
                     2.0 * (0.5 * camera.right.length() / camera.direction.length())

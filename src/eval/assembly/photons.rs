@@ -86,16 +86,14 @@ impl Evaluator {
                     photons.adc_bailout = Some(self.expect_float(stream, "a float")?.max(0.0))
                 }
                 "autostop" => {
-                    let (value, value_span) = self.expect_value(stream, "a fraction")?;
-                    let fraction = self.to_float(value, value_span)?;
-                    if !(0.0..=1.0).contains(&fraction) {
-                        return Err(self
-                            .runtime
-                            .error(value_span, format!("autostop {fraction} is out of range"))
-                            .with_label("expected a fraction from 0 to 1")
-                            .into());
-                    }
-                    photons.autostop = fraction;
+                    // povray takes any value silently: 2 shoots as 1 does, -1 as 0 (measured
+                    // by the photon counts it prints).
+                    let fraction = self.expect_float(stream, "a fraction")?;
+                    photons.autostop = if fraction.is_nan() {
+                        0.0
+                    } else {
+                        fraction.clamp(0.0, 1.0)
+                    };
                 }
                 "expand_thresholds" => {
                     photons.expand_increase = self.expect_float(stream, "a float")?.max(0.0);
