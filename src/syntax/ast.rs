@@ -434,6 +434,8 @@ pub enum DirectiveKind {
     Declare {
         local: bool,
         target: Target,
+        /// Directives written between `=` and the value, run before it.
+        prelude: Rc<[Item]>,
         value: Item,
         layers: Vec<Rc<Block>>,
     },

@@ -540,7 +540,17 @@ impl<'m> Lowerer<'m> {
                     first = inner.next().expect("declare target");
                 }
                 let target = self.target(first);
-                let value = inner.next().and_then(|p| match p.as_rule() {
+                let mut prelude = Vec::new();
+                let mut next = inner.next();
+                while let Some(p) = next.take_if(|p| p.as_rule() == Rule::value_prelude) {
+                    let directive = p
+                        .into_inner()
+                        .next()
+                        .expect("value_prelude has a directive");
+                    prelude.push(Item::Directive(Rc::new(self.directive(directive))));
+                    next = inner.next();
+                }
+                let value = next.and_then(|p| match p.as_rule() {
                     Rule::expr | Rule::block => self.item(p),
                     _ => Some(Item::Directive(Rc::new(self.directive(p)))),
                 });
@@ -553,6 +563,7 @@ impl<'m> Lowerer<'m> {
                 DirectiveKind::Declare {
                     local: rule == Rule::local,
                     target,
+                    prelude: Rc::from(prelude),
                     value,
                     layers,
                 }

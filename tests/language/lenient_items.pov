@@ -61,3 +61,17 @@ Check((vlength(Paths[0](0.5) - <1, 2, 3>) < 1e-9), "a spline in an array")
 #declare Normals = array[1] { <0, 1, 0> }
 #declare Floor = plane { Normals[0] (-1) }
 Check((inside(Floor, <0, -1.5, 0>) & !inside(Floor, <0, -0.5, 0>)), "`Normals[0] (-1)` is a normal and a distance")
+
+// Directives between `#declare A =` and its value run first; `#switch` may be the value.
+#declare Base = 3;
+#declare Sum =
+  #declare Base = Base + 1;
+  #debug ""
+  Base * 2;
+Check((Sum = 8 & Base = 4), "directives before a declared value run first")
+#local Picked =
+#switch (Base)
+  #case (4) texture { pigment { rgb <1, 0, 0> } } #break
+  #else texture { pigment { rgb 0 } }
+#end
+sphere { 0, 1 texture { Picked } }

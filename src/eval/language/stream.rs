@@ -282,9 +282,20 @@ impl Evaluator {
             DirectiveKind::Declare {
                 local,
                 target,
+                prelude,
                 value,
                 layers,
             } => {
+                if !prelude.is_empty() {
+                    // Only directives: the stream returns nothing, having run them all.
+                    let mut directives = Stream::new(prelude.clone());
+                    if let Some(item) = self.next_item(&mut directives)? {
+                        return Err(self
+                            .runtime
+                            .error(item.span(), "expected the declared value")
+                            .into());
+                    }
+                }
                 let value = self.item_value(value)?;
                 let value = self.layer_textures(value, layers)?;
                 self.assign(*local, target, value)?;
