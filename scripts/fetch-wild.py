@@ -74,9 +74,10 @@ def read_list(path, substring):
     return scenes
 
 
-def git(git_dir, *arguments, **options):
-    return subprocess.run(["git", "--git-dir", git_dir, *arguments],
-                          stdin=subprocess.DEVNULL, capture_output=True, **options)
+def git(git_dir, *arguments, input=None, **options):
+    return subprocess.run(["git", "--git-dir", git_dir, *arguments], input=input,
+                          stdin=None if input is not None else subprocess.DEVNULL,
+                          capture_output=True, **options)
 
 
 def has_commit(git_dir, commit):
@@ -124,8 +125,8 @@ def write_stamp(tree, commit, paths):
         handle.write("\n".join([commit] + sorted(paths)) + "\n")
 
 
-def export(git_dir, commit, paths, tree):
-    """Extract the paths of the commit into the tree; returns an error message or None."""
+def archive_into(git_dir, commit, paths, tree):
+    """`git archive <commit> -- <paths> | tar -x -C <tree>`; returns an error message or None."""
     archive = subprocess.Popen(["git", "--git-dir", git_dir, "archive", "--format=tar",
                                 commit, "--", *paths],
                                stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
@@ -139,6 +140,46 @@ def export(git_dir, commit, paths, tree):
         return archive_error or f"git archive exited with {archive.returncode}"
     if untar.returncode != 0:
         return untar.stderr.decode("utf-8", "replace").strip() or "tar failed"
+    return None
+
+
+def present_files(git_dir, commit, paths):
+    """The files under the paths whose content the git directory holds, and the others.
+
+    Mirrors may lack large blobs; the scenes rarely need them.
+    """
+    listing = git(git_dir, "ls-tree", "-r", "-z", commit, "--", *paths).stdout
+    entries = [entry.decode("utf-8", "surrogateescape")
+               for entry in listing.split(b"\0") if entry]
+    blobs = {}
+    for entry in entries:
+        meta, path = entry.split("\t", 1)
+        kind, object_id = meta.split()[1:3]
+        if kind == "blob":
+            blobs[path] = object_id
+    check = git(git_dir, "cat-file", "--batch-check", input="\n".join(blobs.values()).encode())
+    missing_ids = {line.split()[0] for line in check.stdout.decode().splitlines()
+                   if line.endswith(" missing")}
+    present = [path for path, object_id in blobs.items() if object_id not in missing_ids]
+    missing = [path for path, object_id in blobs.items() if object_id in missing_ids]
+    return present, missing
+
+
+def export(git_dir, commit, paths, tree):
+    """Extract the paths of the commit into the tree; returns an error message or None."""
+    if archive_into(git_dir, commit, paths, tree) is None:
+        return None
+    present, missing = present_files(git_dir, commit, paths)
+    if not present:
+        return "nothing to export (paths missing from the commit or the mirror)"
+    for path in missing:
+        print(f"  skipped (not in the mirror): {path}", file=sys.stderr)
+    # Literal pathspecs, in batches to stay below the command-line limit.
+    for start in range(0, len(present), 500):
+        batch = [f":(literal){path}" for path in present[start:start + 500]]
+        error = archive_into(git_dir, commit, batch, tree)
+        if error:
+            return error
     return None
 
 

@@ -439,6 +439,9 @@ pub enum DirectiveKind {
         value: Item,
         layers: Vec<Rc<Block>>,
     },
+    /// A whole file whose directives cut across braces, kept as text and run token by
+    /// token (as a text macro's body is).
+    TextRun { text: Rc<str>, span: Span },
     /// `#undef Name` or `#undef Name[i]..` (the element becomes uninitialised).
     Undef(Target),
     /// `#if`, `#ifdef`, `#ifndef` with `#elseif`/`#else` branches (an `#ifdef` test is

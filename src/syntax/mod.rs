@@ -18,7 +18,9 @@ use mapping::OffsetMap;
 use pest::Parser;
 use std::rc::Rc;
 
-/// Parses one file's text into its top-level items.
+/// Parses one file's text into its top-level items. A file whose directives cut across
+/// braces (`#if (C) union { #else merge { #end ... }`) has no tree shape: it becomes one
+/// [`ast::DirectiveKind::TextRun`] item, run token by token as POV-Ray reads it.
 pub fn parse(text: &str, file: FileId) -> Result<Rc<[ast::Item]>, Box<Diagnostic>> {
     match SdlParser::parse(Rule::file, text) {
         Ok(mut pairs) => {
@@ -26,8 +28,60 @@ pub fn parse(text: &str, file: FileId) -> Result<Rc<[ast::Item]>, Box<Diagnostic
             let items = file_pair.into_inner().next().expect("items");
             Ok(lower::Lowerer::new(file).items(items))
         }
+        Err(_) if braces_cross_directives(text) => {
+            let span = Span {
+                file,
+                start: 0,
+                end: u32::try_from(text.len()).unwrap_or(u32::MAX),
+            };
+            let run = ast::DirectiveKind::TextRun {
+                text: Rc::from(text),
+                span,
+            };
+            let directive = ast::Directive { kind: run, span };
+            Ok(Rc::from([ast::Item::Directive(Rc::new(directive))]))
+        }
         Err(error) => Err(Box::new(syntax_diagnostic(text, file, error))),
     }
+}
+
+/// Whether braces opened under a conditional or loop directive close under another branch
+/// or after its `#end` (outside macro bodies, which are handled on their own). A file
+/// with unbalanced directives answers `false`, so its syntax error is reported as usual.
+pub fn braces_cross_directives(text: &str) -> bool {
+    // For each open directive: its word and the brace depth where it opened. Branches are
+    // alternatives: each starts from the depth where the directive opened.
+    let mut open: Vec<(&str, usize)> = Vec::new();
+    let mut depth = 0usize;
+    let mut crossed = false;
+    let mut position = 0;
+    while let Some(token) = tokens::next_token(text, position) {
+        position = token.end;
+        let in_macro = open.iter().any(|(word, _)| *word == "macro");
+        match (token.kind, token.text(text)) {
+            (tokens::TokenKind::Punctuation, "{") => depth += 1,
+            (tokens::TokenKind::Punctuation, "}") => depth = depth.saturating_sub(1),
+            (tokens::TokenKind::Directive, _) => match token.directive_word(text) {
+                word @ ("if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro") => {
+                    open.push((word, depth))
+                }
+                "else" | "elseif" | "case" | "range" => match open.last() {
+                    Some(&(_, opened)) => {
+                        crossed |= !in_macro && opened != depth;
+                        depth = opened;
+                    }
+                    None => return false,
+                },
+                "end" => match open.pop() {
+                    Some((_, opened)) => crossed |= !in_macro && opened != depth,
+                    None => return false,
+                },
+                _ => {}
+            },
+            _ => {}
+        }
+    }
+    crossed && open.is_empty()
 }
 
 /// Parses generated text (a text macro's expansion) into items; spans, including a syntax
@@ -289,4 +343,40 @@ fn unbalanced(text: &str, file: FileId) -> Option<Diagnostic> {
             .with_label(format!("this `#{word}` has no matching `#end`"))
             .with_help("add `#end` where the directive's body ends")
     })
+}
+
+#[cfg(test)]
+mod crossing_tests {
+    use super::braces_cross_directives;
+
+    #[test]
+    fn braces_cut_across_branches_are_found() {
+        assert!(braces_cross_directives(
+            "#if (A) merge { #else union { #end sphere { 0, 1 } }"
+        ));
+        assert!(braces_cross_directives(
+            "#switch (K) #case (1) box { 0, 1 #break #else sphere { 0, 1 #end pigment { rgb 1 } }"
+        ));
+        assert!(braces_cross_directives(
+            "sphere { 0, 1 #if (A) pigment { rgb 1 } } #else } #end"
+        ));
+    }
+
+    #[test]
+    fn balanced_files_and_macro_bodies_are_not_crossings() {
+        assert!(!braces_cross_directives(
+            "#if (A) sphere { 0, 1 } #else box { 0, 1 } #end"
+        ));
+        // A macro body that cuts across braces is a text macro of its own.
+        assert!(!braces_cross_directives(
+            "#macro M() #if (F) mesh2 { #else union { #end } #end"
+        ));
+        // Unbalanced directives: the syntax error is reported as usual.
+        assert!(!braces_cross_directives("#if (A) union { #else merge { "));
+        assert!(!braces_cross_directives("} #end"));
+        // Braces in strings and comments do not count.
+        assert!(!braces_cross_directives(
+            "#if (A) #debug \"{\" // {\n #else /* { */ #end"
+        ));
+    }
 }

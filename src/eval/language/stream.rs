@@ -300,6 +300,10 @@ impl Evaluator {
                 let value = self.layer_textures(value, layers)?;
                 self.assign(*local, target, value)?;
             }
+            DirectiveKind::TextRun { text, span } => {
+                let items = self.expand_text_macro(text, *span)?;
+                stream.push(items, FrameKind::Plain);
+            }
             DirectiveKind::Undef(target) if !target.indices.is_empty() => {
                 self.undefine_element(target)?;
             }

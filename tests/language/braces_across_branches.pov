@@ -1,0 +1,41 @@
+// Braces opened in one #if/#case branch and closed in another, or after #end: POV-Ray reads
+// its token stream, so real scenes write this; durer runs such a file token by token.
+// (Checked with povray: this file parses there too.)
+#version 3.7;
+#macro Check(Condition, Message)
+  #if (!(Condition)) #error concat("failed: ", Message) #end
+#end
+
+#declare Smooth = 1;
+#declare Pair =
+#if (Smooth)
+  merge {
+#else
+  union {
+#end
+    sphere { <-0.5, 0, 0>, 0.8 }
+    sphere { <0.5, 0, 0>, 0.8 }
+  }
+Check(inside(Pair, <0.9, 0, 0>), "the branch's merge holds both spheres")
+Check((abs(max_extent(Pair).x - 1.3) < 1e-6), "the block closed after #end")
+
+#declare K = 2;
+#switch (K)
+  #case (1)
+    #declare Shape = box { -1, 1
+  #break
+  #case (2)
+    #declare Shape = cylinder { <0, -1, 0>, <0, 1, 0>, 0.5
+  #break
+#end
+  translate 2*x }
+Check((inside(Shape, <2.4, 0.9, 0>) & !inside(Shape, <2.6, 0, 0>)), "the case's cylinder, moved after #end")
+
+#declare Count = 0;
+#for (I, 0, 2)
+  #declare Ball = sphere { <I, 0, 0>, 0.3
+  #if (I = 1) scale 2 } #else } #end
+  #declare Count = Count + max_extent(Ball).x;
+#end
+Check((abs(Count - (0.3 + 2.6 + 2.3)) < 1e-6), "each pass closes its own sphere")
+camera { location <0, 0, -5> look_at 0 }
