@@ -60,6 +60,18 @@ impl Evaluator {
                 size: 0.1,
             },
             "gradient" => PatternKind::Gradient(self.expect_vector(stream, "a direction")?),
+            // POV-Ray 3.5's form, `slope DIRECTION` without braces (no range, no altitude),
+            // which povray 3.7 still reads (advanced/balcony's terrain.inc).
+            "slope" => {
+                let direction = self.expect_vector(stream, "a slope direction")?;
+                if direction == DVec3::ZERO {
+                    return Err(self
+                        .runtime
+                        .error(span, "the `slope` direction must not be zero")
+                        .into());
+                }
+                PatternKind::Slope(Slope::new(direction))
+            }
             "granite" => PatternKind::Granite,
             "hexagon" => PatternKind::Hexagon,
             "julia" => {
