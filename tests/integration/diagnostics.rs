@@ -409,3 +409,29 @@ fn annotations_shown_in_a_report_do_not_match_themselves() {
     assert!(!searched.contains("never closed"), "{searched}");
     assert!(searched.contains("unclosed `{`"), "{searched}");
 }
+
+/// `text { internal N }` names the POV-Ray font file it stands for when that file is not on
+/// the search path (POV-Ray's installed include folder left out here on purpose).
+#[test]
+fn a_missing_internal_font_names_its_file() {
+    let dir = crate::scratch("internal-font");
+    let path = dir.join("internal.pov");
+    std::fs::write(&path, "text { internal 3 \"abc\" 0.1, 0 }\n").expect("write scene");
+    let options = durer::eval::EvalOptions {
+        search_installed_povray: false,
+        ..durer::eval::EvalOptions::default()
+    };
+    let evaluated = crate::evaluate_with(&path, options);
+    let error = evaluated
+        .diagnostics
+        .iter()
+        .find(|d| d.severity == Severity::Error)
+        .expect("the font is not found");
+    let report = durer::report::render_plain(error, &evaluated.sources);
+    assert!(
+        report.contains("font file `crystal.ttf` not found"),
+        "{report}"
+    );
+    assert!(report.contains("POV-Ray's `crystal.ttf`"), "{report}");
+    assert_eq!(error.span.start, 16, "at the font number");
+}

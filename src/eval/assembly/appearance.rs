@@ -886,7 +886,7 @@ pub(super) fn grey_ramp() -> Vec<(f64, Colour)> {
 
 /// Applies a texture's `uv_mapping` to the pigments and normals of the texture and of the
 /// textures it is made of.
-fn map_texture_by_uv(texture: &mut Texture) {
+pub(crate) fn map_texture_by_uv(texture: &mut Texture) {
     if let Some(normal) = &mut texture.normal {
         normal.uv_mapped = true;
     }

@@ -85,6 +85,7 @@ impl Evaluator {
                     }
                 });
                 object.light_group = group;
+                let mut uv_mapping = false;
                 while let Some(item) = self.next_item(stream)? {
                     let child = match &item {
                         Item::Keyword(word, _) if group.is_some() && &**word == "global_lights" => {
@@ -98,7 +99,7 @@ impl Evaluator {
                             if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
                                 if matches!(&**w, "clipped_by" | "bounded_by" | "interior_texture" | "material" | "photons")) =>
                         {
-                            self.object_modifier(&mut object, item, stream, head)?;
+                            self.object_modifier(&mut object, item, stream, head, &mut uv_mapping)?;
                             None
                         }
                         Item::Block(b) => match self.eval_block(b)? {
@@ -119,12 +120,13 @@ impl Evaluator {
                                 None
                             }
                             other => {
+                                let other = uv_mapped_if(other, uv_mapping);
                                 self.object_modifier_value(&mut object, other, item.span())?;
                                 None
                             }
                         },
                         _ => {
-                            self.object_modifier(&mut object, item, stream, head)?;
+                            self.object_modifier(&mut object, item, stream, head, &mut uv_mapping)?;
                             None
                         }
                     };
@@ -138,8 +140,9 @@ impl Evaluator {
             }
             _ => Object::new(self.eval_shape(head, block, stream)?),
         };
+        let mut uv_mapping = false;
         while let Some(item) = self.next_item(stream)? {
-            self.object_modifier(&mut object, item, stream, head)?;
+            self.object_modifier(&mut object, item, stream, head, &mut uv_mapping)?;
         }
         Ok(Some(object))
     }
@@ -256,16 +259,31 @@ impl Evaluator {
         })
     }
 
-    /// Applies one modifier item to an object.
+    /// Applies one modifier item to an object. `uv_mapping` is set by the object's own
+    /// `uv_mapping` item, which maps every texture, pigment and normal given after it by uv.
     fn object_modifier(
         &mut self,
         object: &mut Object,
         item: Item,
         stream: &mut Stream,
         head: &str,
+        uv_mapping: &mut bool,
     ) -> EvalResult<()> {
         match &item {
             Item::Keyword(word, span) => match &**word {
+                // As povray: every texture, pigment and normal of the object is uv-mapped;
+                // one given before is refused.
+                "uv_mapping" => {
+                    if object.texture.is_some() || object.interior_texture.is_some() {
+                        return Err(self
+                            .runtime
+                            .error(*span, "`uv_mapping` must come before the object's texture")
+                            .with_label("the object has a texture already")
+                            .with_help("write it before `texture`, `pigment` and `normal`")
+                            .into());
+                    }
+                    *uv_mapping = true;
+                }
                 "translate" | "rotate" | "scale" | "matrix" | "transform" => {
                     let t = self.transform_keyword(word, *span, stream)?;
                     apply_transform(object, &t);
@@ -353,7 +371,7 @@ impl Evaluator {
                         return Ok(());
                     }
                 }
-                let value = self.eval_block(block)?;
+                let value = uv_mapped_if(self.eval_block(block)?, *uv_mapping);
                 self.object_modifier_value(object, value, block.span)?;
             }
             Item::Comma(_) => {}
@@ -365,6 +383,7 @@ impl Evaluator {
                 ) {
                     return Err(self.unexpected_in(&item, head));
                 }
+                let value = uv_mapped_if(value, *uv_mapping);
                 self.object_modifier_value(object, value, expr.span())?;
             }
             _ => return Err(self.unexpected_in(&item, head)),
@@ -673,4 +692,28 @@ pub(crate) fn matrix_transform(values: &[f64; 12]) -> Option<Transform> {
         m,
         DVec3::new(v[9], v[10], v[11]),
     ))
+}
+
+/// After an object's own `uv_mapping`, a texture, pigment or normal given to the object is
+/// evaluated at the surface's uv coordinates, as if it said `uv_mapping` itself.
+fn uv_mapped_if(value: Value, uv_mapping: bool) -> Value {
+    if !uv_mapping {
+        return value;
+    }
+    match value {
+        Value::Texture(texture) => {
+            let mut texture = Arc::unwrap_or_clone(texture);
+            super::appearance::map_texture_by_uv(&mut texture);
+            Value::Texture(Arc::new(texture))
+        }
+        Value::Pigment(pigment) if pigment.uv_mapped().is_none() => Value::Pigment(Rc::new(
+            crate::texture::Pigment::UvMapped(Box::new(Rc::unwrap_or_clone(pigment))),
+        )),
+        Value::Normal(normal) => {
+            let mut normal = Rc::unwrap_or_clone(normal);
+            normal.uv_mapped = true;
+            Value::Normal(Rc::new(normal))
+        }
+        other => other,
+    }
 }

@@ -129,15 +129,29 @@ impl Evaluator {
         })))
     }
 
-    /// `text { ttf "font.ttf" "string" thickness, offset }`.
+    /// `text { ttf "font.ttf" "string" thickness, offset }`, or `internal N` for one of
+    /// POV-Ray's four built-in fonts, read from the font files of the same names that
+    /// POV-Ray installs beside its include files.
     pub(crate) fn eval_text(&mut self, span: Span, stream: &mut Stream) -> EvalResult<Shape> {
-        match self.next_item(stream)? {
-            Some(Item::Keyword(word, _)) if &*word == "ttf" => {}
+        let mut internal = false;
+        let (font, font_span) = match self.next_item(stream)? {
+            Some(Item::Keyword(word, _)) if &*word == "ttf" => {
+                self.expect_string(stream, "the font file name")?
+            }
+            Some(Item::Keyword(word, _) | Item::Expr(Expr::Ident(word, _)))
+                if &*word == "internal" =>
+            {
+                let (value, number_span) = self.expect_value(stream, "a font number")?;
+                let number = self.to_float(value, number_span)?;
+                internal = true;
+                (internal_font(number).to_string(), number_span)
+            }
             Some(other) => {
                 return Err(self
                     .runtime
                     .error(other.span(), "expected `ttf` and a font file name")
                     .with_label("durer reads TrueType fonts only")
+                    .with_help("or `internal 0` to `internal 3` for POV-Ray's built-in fonts")
                     .into())
             }
             None => {
@@ -146,8 +160,7 @@ impl Evaluator {
                     .error(span, "expected `ttf` and a font file name")
                     .into())
             }
-        }
-        let (font, font_span) = self.expect_string(stream, "the font file name")?;
+        };
         let (string, _) = self.expect_string(stream, "the text")?;
         let thickness = self.expect_float(stream, "the thickness")?;
         let offset = self.expect_vector(stream, "the offset")?;
@@ -159,11 +172,17 @@ impl Evaluator {
         let path = match found {
             Ok(path) => path,
             Err(_) => {
-                return Err(self
+                let mut error = self
                     .runtime
                     .error(font_span, format!("font file `{font}` not found"))
-                    .with_label("looked next to the scene and on the include path")
-                    .into())
+                    .with_label("looked next to the scene and on the include path");
+                if internal {
+                    error = error.with_help(format!(
+                        "this built-in font is POV-Ray's `{font}`, installed with its include \
+                         files: add their folder with -L"
+                    ));
+                }
+                return Err(error.into());
             }
         };
         let bytes = text::font_bytes(&path).map_err(|error| {
@@ -279,4 +298,16 @@ fn block_word(block: &Block) -> &str {
         BlockHead::Word(word) => word,
         BlockHead::Conditional(_) => "",
     }
+}
+
+/// The font file standing for POV-Ray's built-in font `internal N`: its manual's list, and
+/// font 0 for a number out of range.
+fn internal_font(number: f64) -> &'static str {
+    const FONTS: [&str; 4] = ["povlogo.ttf", "timrom.ttf", "cyrvetic.ttf", "crystal.ttf"];
+    let index = if (0.0..4.0).contains(&number) {
+        number as usize
+    } else {
+        0
+    };
+    FONTS[index]
 }
