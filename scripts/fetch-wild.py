@@ -16,7 +16,8 @@ reported and skipped.
 For every scene it then exports, with `git archive <commit> -- <paths> | tar -x`, the
 scene's folder and its extra paths (comma-separated) into
 conformance-work/wild/owner+name/, keeping the paths of the repository. A stamp file
-there records the commit and what was exported, so reruns only export what is missing.
+there records which commit each path was exported from, so reruns only export what is
+missing (one repository may pin several commits, for different paths).
 
 --filter SUBSTR keeps the lines whose repository or scene path contains SUBSTR.
 The scene files are not committed to durer; only the pinned references are.
@@ -110,19 +111,30 @@ def find_git_dir(repo, commit, mirror):
     return clone if has_commit(clone, commit) else None
 
 
-def read_stamp(tree, commit):
-    """The paths already exported from this commit (empty if none or another commit)."""
+def read_stamp(tree):
+    """{repository path: commit} of what was already exported into the tree."""
     try:
         with open(os.path.join(tree, STAMP), encoding="utf-8") as handle:
-            lines = handle.read().splitlines()
+            pairs = [line.split("\t", 1) for line in handle.read().splitlines()
+                     if "\t" in line]
     except FileNotFoundError:
-        return set()
-    return set(lines[1:]) if lines and lines[0] == commit else None
+        return {}
+    return {path: commit for commit, path in pairs}
 
 
-def write_stamp(tree, commit, paths):
+def write_stamp(tree, exported):
     with open(os.path.join(tree, STAMP), "w", encoding="utf-8") as handle:
-        handle.write("\n".join([commit] + sorted(paths)) + "\n")
+        for path in sorted(exported):
+            handle.write(f"{exported[path]}\t{path}\n")
+
+
+def remove_path(tree, path):
+    """Remove an earlier export of a repository path (from another commit)."""
+    target = os.path.join(tree, path)
+    if os.path.isdir(target) and path != ".":
+        shutil.rmtree(target)
+    elif os.path.isfile(target):
+        os.remove(target)
 
 
 def archive_into(git_dir, commit, paths, tree):
@@ -184,24 +196,23 @@ def export(git_dir, commit, paths, tree):
 
 
 def prepare_repo(repo, commit, scenes, git_dir):
-    """Export every scene of one repository; returns the number of scenes ready."""
+    """Export every scene of one repository at one commit; returns the number ready."""
     tree = os.path.join(TREES, repo.replace("/", "+"))
-    exported = read_stamp(tree, commit)
-    if exported is None:
-        # Exported from another commit: start again.
-        shutil.rmtree(tree)
-        exported = set()
     os.makedirs(tree, exist_ok=True)
+    exported = read_stamp(tree)
     ready = 0
     for scene in scenes:
-        missing = [path for path in scene.export_paths if path not in exported]
+        missing = [path for path in scene.export_paths if exported.get(path) != commit]
         if missing:
+            for path in missing:
+                if path in exported:
+                    remove_path(tree, path)
             error = export(git_dir, commit, missing, tree)
             if error:
                 print(f"  {repo}: {scene.path}: {error}", file=sys.stderr)
                 continue
-            exported.update(missing)
-            write_stamp(tree, commit, exported)
+            exported.update((path, commit) for path in missing)
+            write_stamp(tree, exported)
         if os.path.isfile(os.path.join(tree, scene.path)):
             ready += 1
         else:

@@ -247,16 +247,18 @@ impl Evaluator {
                 .with_label("unreadable image")
         })?;
         let working_gamma = self.working_gamma();
-        let as_stored = gamma.is_none() && raster.encoding == StoredEncoding::AsStored;
+        // PPM files, and PNG files stating no gamma in a scene older than 3.7, give their
+        // stored values as scene colours under any `assumed_gamma` (measured: a stored
+        // 100/255 in a `#version 3.6` scene renders as 100 at `assumed_gamma` 2.2 and as
+        // 168, the same 100/255 displayed, at `assumed_gamma` 1).
+        let legacy_png =
+            self.runtime.version().0 < 3.7 && raster.encoding == StoredEncoding::UnstatedPng;
+        let as_stored =
+            gamma.is_none() && (raster.encoding == StoredEncoding::AsStored || legacy_png);
         let decoding = match gamma {
             _ if purpose == ImageUse::StoredValues || as_stored => ImageGamma::Linear,
             Some(gamma) => gamma,
             None if raster.encoding == StoredEncoding::Linear || working_gamma.is_none() => {
-                ImageGamma::Linear
-            }
-            None if self.runtime.version().0 < 3.7
-                && raster.encoding == StoredEncoding::UnstatedPng =>
-            {
                 ImageGamma::Linear
             }
             None => ImageGamma::Srgb,
