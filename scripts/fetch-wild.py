@@ -42,6 +42,8 @@ CLONE_TIMEOUT = 600
 
 
 class Scene:
+    """One line of the list: a scene file pinned to a repository commit."""
+
     def __init__(self, repo, commit, path, extra_paths):
         self.repo = repo
         self.commit = commit
@@ -56,6 +58,7 @@ class Scene:
 
 
 def read_list(path, substring):
+    """The scenes of the list whose repository or scene path contains the substring."""
     scenes = []
     with open(path, encoding="utf-8") as handle:
         for number, line in enumerate(handle, 1):
@@ -75,9 +78,10 @@ def read_list(path, substring):
     return scenes
 
 
-def git(git_dir, *arguments, input=None, **options):
-    return subprocess.run(["git", "--git-dir", git_dir, *arguments], input=input,
-                          stdin=None if input is not None else subprocess.DEVNULL,
+def git(git_dir, *arguments, stdin_data=None, **options):
+    """Run a git command on a git directory; returns the CompletedProcess."""
+    return subprocess.run(["git", "--git-dir", git_dir, *arguments], input=stdin_data,
+                          stdin=None if stdin_data is not None else subprocess.DEVNULL,
                           capture_output=True, **options)
 
 
@@ -169,7 +173,8 @@ def present_files(git_dir, commit, paths):
         kind, object_id = meta.split()[1:3]
         if kind == "blob":
             blobs[path] = object_id
-    check = git(git_dir, "cat-file", "--batch-check", input="\n".join(blobs.values()).encode())
+    check = git(git_dir, "cat-file", "--batch-check",
+                stdin_data="\n".join(blobs.values()).encode())
     missing_ids = {line.split()[0] for line in check.stdout.decode().splitlines()
                    if line.endswith(" missing")}
     present = [path for path, object_id in blobs.items() if object_id not in missing_ids]
@@ -234,7 +239,7 @@ def main():
     for scene in read_list(options.list, options.filter):
         by_repo.setdefault((scene.repo, scene.commit), []).append(scene)
 
-    found, unavailable, ready, total = 0, [], 0, 0
+    found, unavailable, ready, total = set(), [], 0, 0
     for (repo, commit), scenes in by_repo.items():
         total += len(scenes)
         git_dir = find_git_dir(repo, commit, options.mirror)
@@ -242,10 +247,10 @@ def main():
             unavailable.append(f"{repo}@{commit[:12]}")
             print(f"  {repo}: unavailable (no mirror, clone failed)", file=sys.stderr)
             continue
-        found += 1
+        found.add(repo)
         ready += prepare_repo(repo, commit, scenes, git_dir)
 
-    print(f"repositories: {found} found, {len(unavailable)} unavailable")
+    print(f"repositories: {len(found)} found, {len(unavailable)} unavailable")
     for name in unavailable:
         print(f"  unavailable: {name}")
     print(f"scenes ready: {ready} of {total} in {os.path.relpath(TREES, REPO)}/")

@@ -113,6 +113,13 @@ impl InteriorStack {
         self.entries[..self.len].iter().map(|entry| entry.0)
     }
 
+    /// Whether the ray is inside an object with this material.
+    fn contains(&self, material: u32) -> bool {
+        self.entries[..self.len]
+            .iter()
+            .any(|entry| entry.0 == material)
+    }
+
     /// The stack after entering an object with this material and index.
     fn entered(&self, material: u32, ior: f64) -> InteriorStack {
         let mut stack = *self;
@@ -572,7 +579,11 @@ impl<'a> Tracer<'a> {
     ) -> Shaded {
         let surface = hit_surface(hit.point, ray.direction, hit.normal);
         let pigment = pigment_at_hit(&texture.pigment, hit, &surface);
-        let entering = ray.direction.dot(hit.normal) <= 0.0;
+        // Whether the ray goes into the hit object's own volume: by the objects it is known
+        // to be in, not by the side of the surface, so that a subtracted child's surface
+        // (an air bubble cut out of glass) is entered from the glass and left into it, as
+        // povray refracts there (measured: the bubble shows the sky above it upright).
+        let entering = !inside.contains(hit.material);
         let normal = match &texture.normal {
             Some(perturbation) => perturbed_normal_at(perturbation, hit.point, hit.uv, &surface),
             None => surface.normal,
@@ -696,8 +707,13 @@ impl<'a> Tracer<'a> {
             }
         }
 
+        // Under total internal reflection the layer that lets light through (the bottom one)
+        // makes the surface a perfect mirror: an upper layer's own reflection adds nothing
+        // (measured: a reflective top layer over a clear one renders as one clear layer with
+        // that reflection, where light is totally reflected inside a glass box).
+        let mirrored_below = !passes_light && bends && bent.is_none();
         // Mirror reflection.
-        if reflection_weight.0 > 0.0 && reflection_weight.0 >= self.adc_bailout {
+        if !mirrored_below && reflection_weight.0 > 0.0 && reflection_weight.0 >= self.adc_bailout {
             if let Some(direction) = reflected_direction(ray.direction, normal, surface.normal) {
                 let reflected = Ray {
                     origin: hit.point,
