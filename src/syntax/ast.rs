@@ -385,6 +385,8 @@ pub enum MacroBody {
 pub struct Directive {
     /// What it is.
     pub kind: DirectiveKind,
+    /// Written without its `#` (`declare A = 1;`, POV-Ray 2's spelling).
+    pub without_hash: bool,
     /// The whole directive.
     pub span: Span,
 }

@@ -530,6 +530,7 @@ impl<'m> Lowerer<'m> {
     fn directive(&self, pair: Pair<Rule>) -> Directive {
         let span = self.span(&pair);
         let rule = pair.as_rule();
+        let without_hash = !pair.as_str().starts_with('#');
         let mut inner = pair
             .into_inner()
             .filter(|p| !is_directive_word(p.as_rule()));
@@ -731,7 +732,11 @@ impl<'m> Lowerer<'m> {
             }
             other => unreachable!("grammar rule {other:?} is not a directive"),
         };
-        Directive { kind, span }
+        Directive {
+            kind,
+            without_hash,
+            span,
+        }
     }
 }
 

@@ -38,7 +38,11 @@ pub fn parse(text: &str, file: FileId) -> Result<Rc<[ast::Item]>, Box<Diagnostic
                 text: Rc::from(text),
                 span,
             };
-            let directive = ast::Directive { kind: run, span };
+            let directive = ast::Directive {
+                kind: run,
+                without_hash: false,
+                span,
+            };
             Ok(Rc::from([ast::Item::Directive(Rc::new(directive))]))
         }
         Err(error) => Err(Box::new(syntax_diagnostic(text, file, error))),
@@ -46,7 +50,8 @@ pub fn parse(text: &str, file: FileId) -> Result<Rc<[ast::Item]>, Box<Diagnostic
 }
 
 /// Whether braces opened under a conditional or loop directive close under another branch
-/// or after its `#end` (outside macro bodies, which are handled on their own). A file
+/// or after its `#end`, or a block's `{` follows an `#end` that chose its keyword (outside
+/// macro bodies, which are handled on their own). A file
 /// with unbalanced directives answers `false`, so its syntax error is reported as usual.
 pub fn braces_cross_directives(text: &str) -> bool {
     // For each open directive: its word and the brace depth where it opened. Branches are
@@ -73,7 +78,13 @@ pub fn braces_cross_directives(text: &str) -> bool {
                     None => return false,
                 },
                 "end" => match open.pop() {
-                    Some((_, opened)) => crossed |= !in_macro && opened != depth,
+                    Some((_, opened)) => {
+                        crossed |= !in_macro && opened != depth;
+                        // A block whose keyword a branch chose: `#if (V) material #else
+                        // texture #end { .. }` (LDView's output).
+                        let next = tokens::next_token(text, position).map(|t| t.text(text));
+                        crossed |= !in_macro && next == Some("{");
+                    }
                     None => return false,
                 },
                 _ => {}
@@ -359,6 +370,9 @@ mod crossing_tests {
         ));
         assert!(braces_cross_directives(
             "sphere { 0, 1 #if (A) pigment { rgb 1 } } #else } #end"
+        ));
+        assert!(braces_cross_directives(
+            "sphere { 0, 1 #if (V) material #else texture #end { T } }"
         ));
     }
 

@@ -39,3 +39,7 @@ Check((inside(Shape, <2.4, 0.9, 0>) & !inside(Shape, <2.6, 0, 0>)), "the case's 
 #end
 Check((abs(Count - (0.3 + 2.6 + 2.3)) < 1e-6), "each pass closes its own sphere")
 camera { location <0, 0, -5> look_at 0 }
+
+// A block whose keyword a branch chose (LDView writes `material` or `texture` by version).
+#declare Chosen = sphere { 0, 1 #if (version >= 3.1) material #else texture #end { texture { pigment { rgb <1, 0, 0> } } } }
+Check((abs(max_extent(Chosen).x - 1) < 1e-6), "the branch chose the block's keyword")

@@ -75,3 +75,7 @@ Check((Sum = 8 & Base = 4), "directives before a declared value run first")
   #else texture { pigment { rgb 0 } }
 #end
 sphere { 0, 1 texture { Picked } }
+
+// `#include` of a name without an extension reads NAME.inc, as povray tries.
+#include "lenient_without_extension"
+Check(FromExtensionless, "the include without an extension read lenient_without_extension.inc")

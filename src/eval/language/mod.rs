@@ -302,6 +302,18 @@ impl Runtime {
         Err(folders)
     }
 
+    /// The file `#include "name"` reads: the name as written, then, for a name without an
+    /// extension, with `.inc` added, as povray tries (not `.pov`: measured).
+    pub(crate) fn find_included(&self, name: &str, span: Span) -> EvalResult<PathBuf> {
+        let found = self.find_file(name, span, "include file", "included here");
+        match found {
+            Err(error) if Path::new(name).extension().is_none() => {
+                self.find_include(&format!("{name}.inc")).map_err(|_| error)
+            }
+            found => found,
+        }
+    }
+
     /// Runs `#include`: parses the file once and streams its items in a new local scope.
     pub(crate) fn include(
         &mut self,
@@ -309,7 +321,7 @@ impl Runtime {
         span: Span,
         stream: &mut Stream,
     ) -> EvalResult<()> {
-        let path = self.find_file(name, span, "include file", "included here")?;
+        let path = self.find_included(name, span)?;
         self.enter_nesting(span)?;
         self.trace.push(Entered {
             what: Entering::File(Rc::from(name)),

@@ -278,6 +278,20 @@ impl Evaluator {
         stream: &mut Stream,
     ) -> EvalResult<()> {
         let span = directive.span;
+        if directive.without_hash {
+            let word = if matches!(directive.kind, DirectiveKind::Include(..)) {
+                "include"
+            } else {
+                "declare"
+            };
+            self.runtime.warn(
+                Span {
+                    end: span.start + word.len() as u32,
+                    ..span
+                },
+                format!("`{word}` should be `#{word}` (POV-Ray 2's spelling, still read)"),
+            );
+        }
         match &directive.kind {
             DirectiveKind::Declare {
                 local,

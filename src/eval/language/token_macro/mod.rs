@@ -425,9 +425,7 @@ impl Evaluator {
     /// own: its tokens join the macro's wherever they fall (it may close a block the macro
     /// opened).
     fn splice_include(&mut self, name: &str, span: Span, sink: &mut Sink) -> EvalResult<()> {
-        let path = self
-            .runtime
-            .find_file(name, span, "include file", "included here")?;
+        let path = self.runtime.find_included(name, span)?;
         self.runtime.enter_nesting(span)?;
         self.runtime.trace.push(Entered {
             what: Entering::File(Rc::from(name)),
