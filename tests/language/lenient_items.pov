@@ -79,3 +79,16 @@ sphere { 0, 1 texture { Picked } }
 // `#include` of a name without an extension reads NAME.inc, as povray tries.
 #include "lenient_without_extension"
 Check(FromExtensionless, "the include without an extension read lenient_without_extension.inc")
+
+// A colour vector shorter than its type asks for has the missing components 0.
+#declare Short = rgbf <1, 0.5, 0.2>;
+Check((Short.filter = 0 & abs(Short.blue - 0.2) < 1e-6), "`rgbf <r, g, b>` has filter 0")
+#declare Pair = rgb <1, 0.5>;
+Check((Pair.blue = 0), "`rgb <r, g>` has blue 0")
+// A second diffuse value without its comma (Blender's exporter writes `diffuse 0.8 0`).
+#declare Matte = finish { diffuse 0.8 0 ambient 0.1 }
+
+// `light_source { Object_Ident .. }` is that object, as `object { }` (a lamp union with its light).
+#declare LampUnion = union { light_source { <0, 3, 0> rgb 1 } sphere { 0, 0.5 } }
+// (povray gives such a union infinite extents and refuses it to `inside`, so it is only placed.)
+light_source { LampUnion translate 2*x }

@@ -140,6 +140,13 @@ impl Evaluator {
             }
             "camera" => Ok(Value::Camera(Rc::new(self.eval_camera(stream)?))),
             "spline" => self.eval_spline(block.span, stream),
+            // `light_source { Union_Ident .. }` is that object, as povray renders it.
+            "light_source" if self.starts_with_declared_object(stream)? => {
+                Ok(match self.eval_object("object", block, stream)? {
+                    Some(object) => Value::Object(std::sync::Arc::new(object)),
+                    None => Value::Nothing,
+                })
+            }
             "light_source" => Ok(Value::Light(Rc::new(self.eval_light(stream)?))),
             "fog" => Ok(atmospheric(AtmosphericEffect::Fog(self.eval_fog(stream)?))),
             "sky_sphere" => Ok(atmospheric(AtmosphericEffect::SkySphere(

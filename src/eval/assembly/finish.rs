@@ -218,6 +218,11 @@ impl Evaluator {
     fn optional_second_float(&mut self, stream: &mut Stream) -> EvalResult<Option<f64>> {
         match self.next_item(stream)? {
             Some(Item::Comma(_)) => Ok(Some(self.expect_float(stream, "a float")?)),
+            // Without the comma too (`diffuse 0.8 0`, Blender's exporter; povray reads it).
+            Some(Item::Expr(expr)) => {
+                let value = self.eval_expr(&expr)?;
+                Ok(Some(self.to_float(value, expr.span())?))
+            }
             Some(other) => {
                 stream.push_back(other);
                 Ok(None)

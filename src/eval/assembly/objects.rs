@@ -17,6 +17,16 @@ use std::rc::Rc;
 use std::sync::Arc;
 
 impl Evaluator {
+    /// Whether a block starts with the identifier of a declared object (not a light).
+    pub(crate) fn starts_with_declared_object(&mut self, stream: &mut Stream) -> EvalResult<bool> {
+        Ok(match self.peek_item(stream)? {
+            Some(Item::Expr(Expr::Ident(name, _))) => {
+                matches!(self.runtime.lookup(name), Some(Value::Object(_)))
+            }
+            _ => false,
+        })
+    }
+
     /// Evaluates the body of an object block (`head` is its keyword).
     /// `None` when the object is a feature durer leaves out (already warned about).
     pub(crate) fn eval_object(

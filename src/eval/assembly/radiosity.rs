@@ -59,6 +59,18 @@ impl Evaluator {
                 "adc_bailout" => radiosity.adc_bailout = self.expect_float(stream, "a float")?,
                 "max_sample" => radiosity.max_sample = self.expect_float(stream, "a float")?,
                 "always_sample" => radiosity.always_sample = self.optional_bool(stream)?,
+                // povray reuses a saved sample cache to skip its pretrace; durer computes
+                // the samples afresh, which gives the same picture.
+                "save_file" | "load_file" => {
+                    let _ = self.expect_value(stream, "a file name")?;
+                    self.runtime.warn(
+                        *span,
+                        format!(
+                            "radiosity sample files are not read or written; `{word}` is \
+                             ignored and the samples are computed for this render"
+                        ),
+                    );
+                }
                 "normal" => radiosity.use_normal = self.optional_bool(stream)?,
                 "media" => radiosity.use_media = self.optional_bool(stream)?,
                 other if IGNORED.contains(&other) => {

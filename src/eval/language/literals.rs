@@ -18,30 +18,22 @@ impl Evaluator {
             colour = match literal.kind {
                 None => self.to_colour(value, span)?,
                 Some(kind) => {
-                    let (count, srgb) = match kind {
-                        ColourType::Rgb => (3, false),
-                        ColourType::Rgbf | ColourType::Rgbt => (4, false),
-                        ColourType::Rgbft => (5, false),
-                        ColourType::Srgb => (3, true),
-                        ColourType::Srgbf | ColourType::Srgbt => (4, true),
-                        ColourType::Srgbft => (5, true),
-                    };
+                    let srgb = matches!(
+                        kind,
+                        ColourType::Srgb
+                            | ColourType::Srgbf
+                            | ColourType::Srgbt
+                            | ColourType::Srgbft
+                    );
                     let c: [f64; 5] = match value {
                         Value::Float(f) => [f, f, f, f, f],
+                        // A shorter vector has its missing components 0, as povray reads
+                        // `rgbf <r, g, b>` and `rgb <r, g>` (measured, no warning).
                         Value::Vector(v) => {
-                            if (v.len as usize) < count {
-                                return Err(self
-                                    .runtime
-                                    .error(
-                                        span,
-                                        format!(
-                                            "expected a vector of {count} components, found {}",
-                                            v.len
-                                        ),
-                                    )
-                                    .into());
-                            }
-                            v.components
+                            let mut components = [0.0; 5];
+                            let given = (v.len as usize).min(5);
+                            components[..given].copy_from_slice(&v.components[..given]);
+                            components
                         }
                         Value::Colour(c) => c.to_array(),
                         other => {
