@@ -87,10 +87,15 @@ impl Evaluator {
                 .into());
         }
         if uv_corner1.x == uv_corner2.x || uv_corner1.y == uv_corner2.y {
-            return Err(self
-                .runtime
-                .error(span, "the uv rectangle of a parametric has no area")
-                .into());
+            // povray renders nothing there (a scene's `<0, 0>, <2*pi, pi*clock>` at clock 0).
+            self.runtime.warn(
+                span,
+                "the uv rectangle of this parametric has no area: it shows nothing",
+            );
+            return Ok(Shape::Csg {
+                operation: crate::scene::CsgOperation::Union,
+                children: Vec::new(),
+            });
         }
         let [x, y, z]: [_; 3] = functions
             .try_into()
