@@ -438,7 +438,7 @@ impl Evaluator {
             if let Some((spec, list)) = self.block_pattern(&item)? {
                 let map = match (spec.block_count(), list) {
                     (Some(count), Some(mut list)) => {
-                        PigmentMap::Blocks(self.block_list(&mut list, count)?)
+                        PigmentMap::Blocks(self.block_list(&mut list, count, &spec)?)
                     }
                     _ => PigmentMap::Colours(grey_ramp()),
                 };
@@ -453,7 +453,7 @@ impl Evaluator {
                         return Err(self.pattern_not_first(word, *span, earlier));
                     }
                     let map = match spec.block_count() {
-                        Some(count) => PigmentMap::Blocks(self.block_list(stream, count)?),
+                        Some(count) => PigmentMap::Blocks(self.block_list(stream, count, &spec)?),
                         None => PigmentMap::Colours(default_colours(&spec)),
                     };
                     set_pattern(&mut pigment, spec, map);
@@ -648,14 +648,28 @@ impl Evaluator {
 
     /// The optional pigments of a block pattern (`checker A, B`), POV-Ray's default
     /// colours (blue, green, red, ...) for the ones left out.
-    fn block_list(&mut self, stream: &mut Stream, count: usize) -> EvalResult<Vec<Pigment>> {
-        const DEFAULTS: [(f64, f64, f64); 3] = [(0.0, 0.0, 1.0), (0.0, 1.0, 0.0), (1.0, 0.0, 0.0)];
+    /// The pigments of a block pattern (`checker A, B`, `hexagon A, B, C`, `brick A, B`).
+    /// Missing ones take the pattern's default colours, or black once a `pigment { }` block
+    /// was given (measured: `checker pigment { Green }` is green and black, `checker Green`
+    /// green and povray's default green, `brick Green` green and the default red brick).
+    fn block_list(
+        &mut self,
+        stream: &mut Stream,
+        count: usize,
+        pattern: &Pattern,
+    ) -> EvalResult<Vec<Pigment>> {
+        let defaults = pattern.default_block_colours();
         let mut blocks = Vec::with_capacity(count);
+        let mut block_given = false;
         for index in 0..count {
             if index > 0 {
                 self.skip_comma(stream)?;
             }
-            let (r, g, b) = DEFAULTS[index.min(DEFAULTS.len() - 1)];
+            let [r, g, b] = match defaults.get(index) {
+                Some(&default) if !block_given => default,
+                _ => [0.0; 3],
+            };
+            block_given |= matches!(self.peek_item(stream)?, Some(Item::Block(_)));
             let given = self.optional_pigment(stream)?;
             blocks.push(given.unwrap_or(Pigment::Solid(Colour::rgb(r, g, b))));
         }
