@@ -469,19 +469,27 @@ impl Evaluator {
             Value::Spline(spline) => self.with_argument_directives(call, |ev| {
                 super::splines::call_spline(ev, &spline, call)
             }),
-            other => Err(self
-                .runtime
-                .error(
-                    call.name_span,
-                    format!(
-                        "this element of `{}` is {}, not a function",
-                        call.name,
-                        other.type_name()
-                    ),
-                )
-                .with_label("called here")
-                .into()),
+            other => Err(self.element_not_a_function(call, &other, "called here")),
         }
+    }
+
+    /// The error for `array[i](..)` whose element is `found`, not a function.
+    pub(crate) fn element_not_a_function(
+        &self,
+        call: &Call,
+        found: &Value,
+        label: &str,
+    ) -> Box<crate::diag::Diagnostic> {
+        let message = format!(
+            "this element of `{}` is {}, not a function",
+            call.name,
+            found.type_name()
+        );
+        Box::new(
+            self.runtime
+                .error(call.name_span, message)
+                .with_label(label),
+        )
     }
 
     /// Evaluates the argument at `index` as a float.

@@ -427,18 +427,7 @@ impl Evaluator {
         }
         match self.eval_expr(element)? {
             Value::Function(function) => Ok(function),
-            other => Err(self
-                .runtime
-                .error(
-                    call.name_span,
-                    format!(
-                        "this element of `{}` is {}, not a function",
-                        call.name,
-                        other.type_name()
-                    ),
-                )
-                .with_label("called inside a function")
-                .into()),
+            other => Err(self.element_not_a_function(call, &other, "called inside a function")),
         }
     }
 
