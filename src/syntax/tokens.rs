@@ -74,7 +74,7 @@ pub fn skip_trivia(text: &str, mut position: usize) -> usize {
         match bytes[position] {
             b' ' | b'\t' | b'\r' | b'\n' | 0x0c | 0x1a => position += 1,
             b'/' if bytes.get(position + 1) == Some(&b'/') => {
-                while position < bytes.len() && bytes[position] != b'\n' {
+                while position < bytes.len() && !matches!(bytes[position], b'\n' | b'\r') {
                     position += 1;
                 }
             }

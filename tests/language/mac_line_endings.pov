@@ -1,0 +1,2 @@
+// Old Mac line endings: every line ends with a lone carriage return, as in some 1990s scenes.// A line comment ends at the carriage return, as POV-Ray reads it; before, the rest of the file was one comment.#declare Read = 1;#ifndef (Read) #error "failed: the line after a comment was not read" #endsphere { 0, 1 }  // a comment#declare Also = 2;#if (Also != 2) #error "failed: the declaration after a trailing comment was not read" #end
+#ifndef (Also) #error "failed: the lines ending in carriage returns were read as one comment" #end
