@@ -216,16 +216,13 @@ impl<'m> Lowerer<'m> {
                     Expr::Member(Rc::new(value), Name::from(name), span)
                 }
                 Rule::element_call => {
-                    let mut parts = post.into_inner();
-                    let index = parts.next().expect("element_call has an index");
-                    let index_span = value.span().join(self.span(&index));
-                    let index = self.full_expr(index.into_inner().next().expect("index"));
-                    let element = Expr::Index(Rc::new(value), Rc::new(index), index_span);
-                    let (arguments, directives) = self.arguments(parts.next());
+                    // Follows an index: the element just indexed is called.
+                    let (arguments, directives) = self.arguments(post.into_inner().next());
+                    let name_span = value.span();
                     Expr::Call(Rc::new(Call {
-                        name: root_name(&element),
-                        element: Some(Rc::new(element)),
-                        name_span: index_span,
+                        name: root_name(&value),
+                        element: Some(Rc::new(value)),
+                        name_span,
                         arguments,
                         directives,
                         span,

@@ -646,8 +646,6 @@ impl Evaluator {
         }
     }
 
-    /// The optional pigments of a block pattern (`checker A, B`), POV-Ray's default
-    /// colours (blue, green, red, ...) for the ones left out.
     /// The pigments of a block pattern (`checker A, B`, `hexagon A, B, C`, `brick A, B`).
     /// Missing ones take the pattern's default colours, or black once a `pigment { }` block
     /// was given (measured: `checker pigment { Green }` is green and black, `checker Green`

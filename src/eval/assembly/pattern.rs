@@ -62,16 +62,7 @@ impl Evaluator {
             "gradient" => PatternKind::Gradient(self.expect_vector(stream, "a direction")?),
             // POV-Ray 3.5's form, `slope DIRECTION` without braces (no range, no altitude),
             // which povray 3.7 still reads (advanced/balcony's terrain.inc).
-            "slope" => {
-                let direction = self.expect_vector(stream, "a slope direction")?;
-                if direction == DVec3::ZERO {
-                    return Err(self
-                        .runtime
-                        .error(span, "the `slope` direction must not be zero")
-                        .into());
-                }
-                PatternKind::Slope(Slope::new(direction))
-            }
+            "slope" => PatternKind::Slope(Slope::new(self.slope_direction(span, stream)?)),
             "granite" => PatternKind::Granite,
             "hexagon" => PatternKind::Hexagon,
             "julia" => {
@@ -233,14 +224,8 @@ impl Evaluator {
         };
         let direction = match point_at {
             Some(_) => DVec3::Y,
-            None => self.expect_vector(stream, "a slope direction")?,
+            None => self.slope_direction(span, stream)?,
         };
-        if point_at.is_none() && direction == DVec3::ZERO {
-            return Err(self
-                .runtime
-                .error(span, "the `slope` direction must not be zero")
-                .into());
-        }
         let mut slope = Slope::new(direction);
         slope.point_at = point_at;
         if let Some(range) = self.optional_range(stream)? {
@@ -272,6 +257,18 @@ impl Evaluator {
             Some(other) => return Err(self.unexpected_in(&other, "slope")),
         }
         Ok(slope)
+    }
+
+    /// A slope's direction vector, which must not be zero.
+    fn slope_direction(&mut self, span: Span, stream: &mut Stream) -> EvalResult<DVec3> {
+        let direction = self.expect_vector(stream, "a slope direction")?;
+        if direction == DVec3::ZERO {
+            return Err(self
+                .runtime
+                .error(span, "the `slope` direction must not be zero")
+                .into());
+        }
+        Ok(direction)
     }
 
     /// An optional `, LOW, HIGH` pair.

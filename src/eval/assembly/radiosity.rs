@@ -59,8 +59,8 @@ impl Evaluator {
                 "adc_bailout" => radiosity.adc_bailout = self.expect_float(stream, "a float")?,
                 "max_sample" => radiosity.max_sample = self.expect_float(stream, "a float")?,
                 "always_sample" => radiosity.always_sample = self.optional_bool(stream)?,
-                // povray reuses a saved sample cache to skip its pretrace; durer computes
-                // the samples afresh, which gives the same picture.
+                // povray reuses a saved sample cache to skip its pretrace; durer neither
+                // reads nor writes the file and computes the samples afresh.
                 "save_file" | "load_file" => {
                     let _ = self.expect_value(stream, "a file name")?;
                     self.runtime.warn(

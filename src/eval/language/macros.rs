@@ -17,7 +17,7 @@ impl Evaluator {
         let definition = self.bind_macro_call(call)?;
         let body = match &definition.body {
             MacroBody::Items(items, _) => items.clone(),
-            MacroBody::Text { text, span } => match self.expand_text_macro(text, *span) {
+            MacroBody::Text { text, span } => match self.expand_text_macro(text, *span, "macro") {
                 Ok(items) => items,
                 Err(error) => {
                     self.leave_macro_call();

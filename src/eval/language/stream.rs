@@ -315,7 +315,7 @@ impl Evaluator {
                 self.assign(*local, target, value)?;
             }
             DirectiveKind::TextRun { text, span } => {
-                let items = self.expand_text_macro(text, *span)?;
+                let items = self.expand_text_macro(text, *span, "file")?;
                 stream.push(items, FrameKind::Plain);
             }
             DirectiveKind::Undef(target) if !target.indices.is_empty() => {

@@ -252,9 +252,15 @@ impl Evaluator {
         parsed
     }
 
-    /// Runs a text macro's body (its arguments bound in the innermost scope) and returns the
-    /// items it produced.
-    pub(crate) fn expand_text_macro(&mut self, text: &str, span: Span) -> EvalResult<Rc<[Item]>> {
+    /// Runs a text macro's body (its arguments bound in the innermost scope), or a whole file
+    /// run as text, and returns the items it produced; `owner` ("macro" or "file") names it
+    /// in messages.
+    pub(crate) fn expand_text_macro(
+        &mut self,
+        text: &str,
+        span: Span,
+        owner: &str,
+    ) -> EvalResult<Rc<[Item]>> {
         let mut sink = Sink {
             emitted: Emitted::default(),
             pending: None,
@@ -267,7 +273,9 @@ impl Evaluator {
             return Err(self
                 .runtime
                 .error(pending.span, "this directive is never completed")
-                .with_label("its arguments or value do not end before the macro does")
+                .with_label(format!(
+                    "its arguments or value do not end before the {owner} does"
+                ))
                 .into());
         }
         let key = (sink.emitted.text, sink.emitted.map);
@@ -276,7 +284,7 @@ impl Evaluator {
         }
         let items = parse_generated(&key.0, &key.1).map_err(|mut d| {
             d.trace = self.runtime.trace_for_diagnostic();
-            d.message = format!("in the text this macro produced: {}", d.message);
+            d.message = format!("in the text this {owner} produced: {}", d.message);
             d
         })?;
         let cache = &mut self.runtime.text_macro_cache;
