@@ -109,7 +109,12 @@ impl Bvh {
         let mut stack = [(0u32, 0.0f64); STACK_SIZE];
         let mut stack_len = 0;
         let mut current = 0usize;
-        loop {
+        let mut tests = 0u64;
+        let mut test = |position: usize, closest: f64| {
+            tests += 1;
+            test(position, closest)
+        };
+        let found = 'walk: loop {
             let node = &self.nodes[current];
             let mut next = None;
             if node.count > 0 {
@@ -155,7 +160,7 @@ impl Bvh {
                 Some(index) => index,
                 None => loop {
                     if stack_len == 0 {
-                        return best;
+                        break 'walk best;
                     }
                     stack_len -= 1;
                     let (index, entry) = stack[stack_len];
@@ -164,7 +169,9 @@ impl Bvh {
                     }
                 },
             };
-        }
+        };
+        super::counters::add(super::counters::Counter::IntersectionTests, tests);
+        found
     }
 }
 

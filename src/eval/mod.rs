@@ -44,6 +44,17 @@ pub struct EvalOptions {
     pub image_height: u32,
     /// Value of `clock`.
     pub clock: f64,
+    /// The other animation identifiers (`clock_delta`, `frame_number` ...).
+    pub animation: AnimationValues,
+    /// Identifiers declared before the scene is read (`Declare=`, `--define`): name and
+    /// the text of an SDL expression, evaluated in order.
+    pub defines: Vec<(String, String)>,
+    /// A file included before the scene (`Include_Header`, `+HI`).
+    pub include_header: Option<PathBuf>,
+    /// The language version in force at the start (`+MV`), as an initial `#version`.
+    pub initial_version: Option<f64>,
+    /// Print `#debug` messages (POV-Ray's debug stream, `-GD` turns it off).
+    pub print_debug: bool,
     /// Folder of the output image: scenes may read and write data files there.
     pub output_folder: Option<PathBuf>,
     /// Search POV-Ray's installed include folder (before durer's own standard library).
@@ -57,10 +68,28 @@ impl Default for EvalOptions {
             image_width: 320,
             image_height: 240,
             clock: 0.0,
+            animation: AnimationValues::default(),
+            defines: Vec::new(),
+            include_header: None,
+            initial_version: None,
+            print_debug: true,
             output_folder: None,
             search_installed_povray: true,
         }
     }
+}
+
+/// The animation identifiers besides `clock`, as POV-Ray's animation loop sets them (all
+/// 0 for a still image).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct AnimationValues {
+    pub clock_delta: f64,
+    pub clock_on: bool,
+    pub frame_number: f64,
+    pub initial_frame: f64,
+    pub final_frame: f64,
+    pub initial_clock: f64,
+    pub final_clock: f64,
 }
 
 /// The outcome of evaluating a scene file.
@@ -120,7 +149,34 @@ impl Evaluator {
 
     fn run_main(&mut self, path: &Path) -> EvalResult<()> {
         self.runtime.set_main_file(path);
+        if let Some(version) = self.runtime.options().initial_version {
+            self.runtime.set_version(version);
+        }
+        self.run_prelude()?;
         let items = self.runtime.load_file(path, None)?;
+        let mut stream = Stream::new(items);
+        while let Some(item) = self.next_item(&mut stream)? {
+            self.scene_item(item)?;
+        }
+        Ok(())
+    }
+
+    /// The command line's `Declare`s / `--define`s and `Include_Header`, run as a small
+    /// file named `<command line>` before the scene (so its messages point into it).
+    fn run_prelude(&mut self) -> EvalResult<()> {
+        let options = self.runtime.options();
+        if options.defines.is_empty() && options.include_header.is_none() {
+            return Ok(());
+        }
+        let mut text = String::new();
+        for (name, value) in &options.defines {
+            text.push_str(&format!("#declare {name} = {value};\n"));
+        }
+        if let Some(header) = &options.include_header {
+            let name = header.to_string_lossy().replace('\\', "/").replace('"', "");
+            text.push_str(&format!("#include \"{name}\"\n"));
+        }
+        let items = self.runtime.parse_virtual_file("<command line>", &text)?;
         let mut stream = Stream::new(items);
         while let Some(item) = self.next_item(&mut stream)? {
             self.scene_item(item)?;

@@ -272,6 +272,10 @@ impl World {
         let inverse_direction = DVec3::ONE / ray.direction;
         let mut closest = max_distance;
         let mut best = None;
+        crate::accel::counters::add(
+            crate::accel::counters::Counter::IntersectionTests,
+            self.unbounded.len() as u64,
+        );
         for primitive in &self.unbounded {
             if let Some(found) = primitive.nearest(
                 ray,

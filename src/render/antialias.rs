@@ -28,7 +28,10 @@
 //! - jitter moves each supersample by up to ±amount/2 of its grid cell (POV-Ray draws the
 //!   offsets at random; durer hashes them, so renders with jitter match within tolerance).
 
-use glam::{DVec2, DVec3};
+use glam::{DVec2, DVec4};
+
+// Samples are `DVec4`s: red, green, blue and the share of background seen (for alpha).
+// Only the colour is compared; all four are averaged.
 
 /// POV-Ray's default anti-aliasing threshold (`+A` alone).
 pub const DEFAULT_THRESHOLD: f64 = 0.3;
@@ -75,17 +78,17 @@ impl Default for Antialias {
 }
 
 /// How different two colours look to the anti-aliasing test.
-pub fn difference(a: DVec3, b: DVec3) -> f64 {
-    let adjust = |c: DVec3| {
+pub fn difference(a: DVec4, b: DVec4) -> f64 {
+    let adjust = |c: DVec4| {
         let clip = |x: f64| if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
-        DVec3::new(clip(c.x), clip(c.y), clip(c.z)).powf(1.0 / COMPARISON_GAMMA)
+        glam::DVec3::new(clip(c.x), clip(c.y), clip(c.z)).powf(1.0 / COMPARISON_GAMMA)
     };
     (adjust(a) - adjust(b)).abs().element_sum()
 }
 
 /// Which pixels of a `width`-wide image of first samples differ from a neighbour by more
 /// than `threshold`: the pixels method 1 most likely supersamples (its scan decides).
-pub fn pixels_to_supersample(first: &[DVec3], width: usize, threshold: f64) -> Vec<bool> {
+pub fn pixels_to_supersample(first: &[DVec4], width: usize, threshold: f64) -> Vec<bool> {
     let mut marked = vec![false; first.len()];
     for index in 0..first.len() {
         let column = index % width;
@@ -106,11 +109,11 @@ pub fn pixels_to_supersample(first: &[DVec3], width: usize, threshold: f64) -> V
 /// supersampled or not); when they differ by more than `threshold`, both are supersampled
 /// (each at most once). `supersampled(index)` gives a pixel's supersampled colour.
 pub fn scan_supersample(
-    centres: &[DVec3],
+    centres: &[DVec4],
     width: u32,
     threshold: f64,
-    supersampled: impl Fn(usize) -> DVec3,
-) -> Vec<DVec3> {
+    supersampled: impl Fn(usize) -> DVec4,
+) -> Vec<DVec4> {
     let width = width.max(1) as usize;
     let mut colours = centres.to_vec();
     let mut done = vec![false; centres.len()];
@@ -136,10 +139,10 @@ pub fn scan_supersample(
 pub fn grid_mean(
     column: u32,
     row: u32,
-    centre: DVec3,
+    centre: DVec4,
     options: &Antialias,
-    sample: &impl Fn(f64, f64) -> DVec3,
-) -> DVec3 {
+    sample: &impl Fn(f64, f64) -> DVec4,
+) -> DVec4 {
     let n = options.depth.clamp(1, MAX_DEPTH);
     let cell = 1.0 / f64::from(n);
     let mut sum = centre;
@@ -159,10 +162,10 @@ pub fn grid_mean(
 pub fn recursive_mean(
     column: u32,
     row: u32,
-    corners: [DVec3; 4],
+    corners: [DVec4; 4],
     options: &Antialias,
-    sample: &impl Fn(f64, f64) -> DVec3,
-) -> DVec3 {
+    sample: &impl Fn(f64, f64) -> DVec4,
+) -> DVec4 {
     let levels = options.depth.clamp(1, MAX_DEPTH) - 1;
     let cell = Cell {
         x: f64::from(column),
@@ -183,11 +186,11 @@ struct Cell {
 /// The mean of a cell, splitting it while `levels` remain and its corners differ.
 fn cell_mean(
     cell: Cell,
-    corners: [DVec3; 4],
+    corners: [DVec4; 4],
     levels: u32,
     options: &Antialias,
-    sample: &impl Fn(f64, f64) -> DVec3,
-) -> DVec3 {
+    sample: &impl Fn(f64, f64) -> DVec4,
+) -> DVec4 {
     let mean = (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
     let differs =
         (0..4).any(|a| (a + 1..4).any(|b| difference(corners[a], corners[b]) > options.threshold));
@@ -222,7 +225,7 @@ fn cell_mean(
             [middle, right, bottom, bottom_right],
         ),
     ];
-    let mut sum = DVec3::ZERO;
+    let mut sum = DVec4::ZERO;
     for (part, part_corners) in parts {
         sum += cell_mean(part, part_corners, levels - 1, options, sample);
     }
@@ -267,8 +270,8 @@ mod tests {
     use super::*;
 
     /// White left of `edge` (in pixels from the image's left side), black right of it.
-    fn edge(edge: f64) -> impl Fn(f64, f64) -> DVec3 {
-        move |x, _| if x < edge { DVec3::ONE } else { DVec3::ZERO }
+    fn edge(edge: f64) -> impl Fn(f64, f64) -> DVec4 {
+        move |x, _| if x < edge { DVec4::ONE } else { DVec4::ZERO }
     }
 
     fn no_jitter(method: Method, depth: u32) -> Antialias {
@@ -284,9 +287,9 @@ mod tests {
     fn grid_mean_counts_the_centre_sample() {
         let options = no_jitter(Method::NonRecursive, 3);
         // Edge at 0.3 of the pixel: one column of three plus nothing else is white.
-        let value = grid_mean(0, 0, DVec3::ZERO, &options, &edge(0.3));
+        let value = grid_mean(0, 0, DVec4::ZERO, &options, &edge(0.3));
         assert!((value.x - 0.3).abs() < 1e-12);
-        let value = grid_mean(0, 0, DVec3::ONE, &options, &edge(0.6));
+        let value = grid_mean(0, 0, DVec4::ONE, &options, &edge(0.6));
         assert!((value.x - 0.7).abs() < 1e-12);
     }
 
@@ -309,18 +312,18 @@ mod tests {
 
     #[test]
     fn differences_use_the_comparison_gamma() {
-        let d = difference(DVec3::splat(0.2), DVec3::splat(0.4));
+        let d = difference(DVec4::splat(0.2), DVec4::splat(0.4));
         assert!(d > 0.49 && d < 0.51);
-        assert_eq!(difference(DVec3::ZERO, DVec3::ONE), 3.0);
-        assert_eq!(difference(DVec3::splat(f64::NAN), DVec3::ZERO), 0.0);
+        assert_eq!(difference(DVec4::ZERO, DVec4::ONE), 3.0);
+        assert_eq!(difference(DVec4::splat(f64::NAN), DVec4::ZERO), 0.0);
     }
 
     #[test]
     fn neighbours_are_marked_in_pairs() {
-        let first = [DVec3::ZERO, DVec3::ZERO, DVec3::ONE, DVec3::ONE];
+        let first = [DVec4::ZERO, DVec4::ZERO, DVec4::ONE, DVec4::ONE];
         let marked = pixels_to_supersample(&first, 2, 0.3);
         assert_eq!(marked, vec![true, true, true, true]);
-        let flat = [DVec3::ZERO; 4];
+        let flat = [DVec4::ZERO; 4];
         assert_eq!(pixels_to_supersample(&flat, 2, 0.3), vec![false; 4]);
     }
 
@@ -329,10 +332,10 @@ mod tests {
         // One row: black, white, white. The first pair differs, so pixels 0 and 1 become
         // grey (their supersampled value); pixel 2 then differs from grey pixel 1 by less
         // than the threshold and keeps its first sample.
-        let centres = [DVec3::ZERO, DVec3::ONE, DVec3::ONE];
-        let grey = DVec3::splat(0.9);
+        let centres = [DVec4::ZERO, DVec4::ONE, DVec4::ONE];
+        let grey = DVec4::splat(0.9);
         let colours = scan_supersample(&centres, 3, 0.3, |_| grey);
-        assert_eq!(colours, vec![grey, grey, DVec3::ONE]);
+        assert_eq!(colours, vec![grey, grey, DVec4::ONE]);
     }
 
     #[test]

@@ -43,6 +43,12 @@ impl OutputEncoding {
 
     /// The output byte for one traced colour channel.
     pub fn encode(&self, value: f64) -> u8 {
+        self.encode_to(value, 255.0) as u8
+    }
+
+    /// One traced colour channel as an integer sample from 0 to `max` (255 for 8-bit files,
+    /// 65535 for 16-bit ones): the same curve at another depth.
+    pub fn encode_to(&self, value: f64, max: f64) -> u32 {
         let clipped = if value.is_nan() {
             0.0
         } else {
@@ -59,7 +65,30 @@ impl OutputEncoding {
                 srgb_from_linear(linear)
             }
         };
-        (encoded * 255.0 + 0.5).floor().clamp(0.0, 255.0) as u8
+        (encoded * max + 0.5).floor().clamp(0.0, max) as u32
+    }
+
+    /// One traced colour channel as linear light, not clamped, for floating-point files
+    /// (measured from `povray`'s Radiance output: `assumed_gamma 1` writes the value, 2.2
+    /// writes its 2.2nd power, a legacy scene the sRGB-decoded value). Negative and NaN
+    /// values are 0.
+    pub fn to_linear(&self, value: f64) -> f64 {
+        if value.is_nan() || value <= 0.0 {
+            return 0.0;
+        }
+        match *self {
+            OutputEncoding::Unchanged => srgb_to_linear(value),
+            OutputEncoding::Srgb { assumed_gamma } => value.powf(assumed_gamma),
+        }
+    }
+}
+
+/// The inverse sRGB transfer function (extended beyond 1 by the same power curve).
+fn srgb_to_linear(encoded: f64) -> f64 {
+    if encoded <= 0.04045 {
+        encoded / 12.92
+    } else {
+        ((encoded + 0.055) / 1.055).powf(2.4)
     }
 }
 
@@ -134,6 +163,12 @@ mod tests {
             assert_eq!(encoding.encode(-1.0), 0);
             assert_eq!(encoding.encode(f64::NAN), 0);
             assert_eq!(encoding.encode(f64::INFINITY), 255);
+            assert_eq!(encoding.encode_to(1.0, 65535.0), 65535);
         }
+        // povray's Radiance file: 0.5 and 2.0 under gamma 1, 2.2 and a legacy scene.
+        assert_eq!(srgb1.to_linear(2.0), 2.0);
+        assert!((srgb22.to_linear(2.0) - 4.5948).abs() < 1e-3);
+        assert!((OutputEncoding::Unchanged.to_linear(2.0) - 4.9538).abs() < 1e-3);
+        assert_eq!(srgb1.to_linear(f64::NAN), 0.0);
     }
 }

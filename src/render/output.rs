@@ -1,10 +1,22 @@
-//! Writing the rendered image as a PNG file, atomically.
+//! Writing rendered images: every output format, written atomically.
 //!
-//! In: an [`Image`] and a path. Out: an 8-bit RGB PNG at that path, carrying the same `gAMA`
-//! (1/2.2) and `sRGB` chunks POV-Ray 3.7 writes. Holds: the file appears complete or not at
-//! all: the data goes to a temporary file in the same folder, which is then renamed over the
-//! target, so a failed write never destroys an existing image.
+//! In: a [`RenderedImage`] (traced colours with coverage) or an 8-bit [`Image`], a
+//! [`FileFormat`] with bit depth and alpha, a path. Out: the file's bytes, and the file
+//! itself written through a temporary file and a rename, so it appears complete or not at
+//! all and a failed write never destroys an existing image.
+//!
+//! How values are stored (measured against `povray` 3.7's files):
+//! - PNG, TGA, BMP, PPM, JPEG: the traced value goes through the scene's output encoding
+//!   ([`OutputEncoding`]: `assumed_gamma`, sRGB curve) at the file's depth (8 bits, or up
+//!   to 16 for PNG and PPM); PNG carries the `gAMA` (1/2.2) and `sRGB` chunks POV-Ray
+//!   writes. With alpha the colour is stored straight (divided by the coverage), as
+//!   POV-Ray 3.7 does for PNG, TGA and BMP.
+//! - OpenEXR and Radiance HDR: linear light, not clamped: the traced value raised to
+//!   `assumed_gamma` (a scene without one, before 3.7, is sRGB-decoded), as `povray`
+//!   writes them; EXR stores associated (premultiplied) alpha, as POV-Ray documents.
+//! - `File_Gamma` other than sRGB replaces the sRGB curve by that power.
 
+use super::encoding::OutputEncoding;
 use super::Image;
 use image::codecs::png::PngEncoder;
 use image::{ExtendedColorType, ImageEncoder};
@@ -16,9 +28,391 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// Distinguishes temporary files of concurrent writes from one process.
 static TEMPORARY_COUNTER: AtomicU64 = AtomicU64::new(0);
 
-/// Writes `image` as a PNG to `path` via a temporary file and a rename.
-pub fn write_png_atomic(path: &Path, image: &Image) -> io::Result<()> {
-    let bytes = encode_png(image)?;
+/// An output file format (POV-Ray's `+F` letters).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileFormat {
+    /// `N`: PNG, 8 or 16 bits, alpha.
+    Png,
+    /// `P`: binary PPM, 8 or 16 bits.
+    Ppm,
+    /// `T`: uncompressed Targa, alpha.
+    Tga,
+    /// `C`: run-length compressed Targa, alpha.
+    TgaCompressed,
+    /// `B`: BMP, alpha.
+    Bmp,
+    /// `J`: JPEG.
+    Jpeg,
+    /// `E`: OpenEXR, 32-bit float, linear.
+    Exr,
+    /// `H`: Radiance RGBE, linear.
+    Hdr,
+}
+
+impl FileFormat {
+    /// The format of a `+F` letter (`S`, the system format, is TGA on Unix as in POV-Ray).
+    pub fn from_letter(letter: char) -> Option<FileFormat> {
+        Some(match letter.to_ascii_uppercase() {
+            'N' => FileFormat::Png,
+            'P' => FileFormat::Ppm,
+            'T' | 'S' => FileFormat::Tga,
+            'C' => FileFormat::TgaCompressed,
+            'B' => FileFormat::Bmp,
+            'J' => FileFormat::Jpeg,
+            'E' => FileFormat::Exr,
+            'H' => FileFormat::Hdr,
+            _ => return None,
+        })
+    }
+
+    /// The format a file name's extension names, if any.
+    pub fn from_extension(path: &Path) -> Option<FileFormat> {
+        let extension = path.extension()?.to_str()?.to_ascii_lowercase();
+        Some(match extension.as_str() {
+            "png" => FileFormat::Png,
+            "ppm" | "pnm" => FileFormat::Ppm,
+            "tga" => FileFormat::Tga,
+            "bmp" => FileFormat::Bmp,
+            "jpg" | "jpeg" => FileFormat::Jpeg,
+            "exr" => FileFormat::Exr,
+            "hdr" | "pic" => FileFormat::Hdr,
+            _ => return None,
+        })
+    }
+
+    /// The extension POV-Ray gives files of this format.
+    pub fn extension(self) -> &'static str {
+        match self {
+            FileFormat::Png => "png",
+            FileFormat::Ppm => "ppm",
+            FileFormat::Tga | FileFormat::TgaCompressed => "tga",
+            FileFormat::Bmp => "bmp",
+            FileFormat::Jpeg => "jpg",
+            FileFormat::Exr => "exr",
+            FileFormat::Hdr => "hdr",
+        }
+    }
+
+    /// Whether files of this format can hold an alpha channel.
+    pub fn has_alpha(self) -> bool {
+        matches!(
+            self,
+            FileFormat::Png
+                | FileFormat::Tga
+                | FileFormat::TgaCompressed
+                | FileFormat::Bmp
+                | FileFormat::Exr
+        )
+    }
+}
+
+/// How to store a rendered image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OutputOptions {
+    pub format: FileFormat,
+    /// Bits per colour channel, 5 to 16 (PNG and PPM; the others store 8 or floats).
+    pub bits: u32,
+    /// Write the coverage as an alpha channel (formats that have one).
+    pub alpha: bool,
+    /// JPEG quality, 2 to 100.
+    pub jpeg_quality: u8,
+    /// `File_Gamma`: `None` for the sRGB curve, else `1 / gamma` is applied to linear light.
+    pub file_gamma: Option<f64>,
+}
+
+impl OutputOptions {
+    /// 8-bit PNG without alpha, POV-Ray's default.
+    pub fn png() -> OutputOptions {
+        OutputOptions {
+            format: FileFormat::Png,
+            bits: 8,
+            alpha: false,
+            jpeg_quality: 85,
+            file_gamma: None,
+        }
+    }
+}
+
+/// A rendered image before it is stored: per pixel the traced colour (in the scene's working
+/// space, premultiplied by coverage) and the coverage (1 where no background shows; with
+/// alpha off always 1).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RenderedImage {
+    pub width: u32,
+    pub height: u32,
+    /// Row by row, top row first: red, green, blue, coverage.
+    pub pixels: Vec<[f64; 4]>,
+    /// How traced values become file values.
+    pub encoding: OutputEncoding,
+}
+
+impl RenderedImage {
+    /// The 8-bit image POV-Ray writes to an RGB PNG.
+    pub fn to_image(&self) -> Image {
+        let pixels = self
+            .pixels
+            .iter()
+            .map(|p| {
+                let [r, g, b] = straight(*p);
+                [
+                    self.encoding.encode(r),
+                    self.encoding.encode(g),
+                    self.encoding.encode(b),
+                ]
+            })
+            .collect();
+        Image {
+            width: self.width,
+            height: self.height,
+            pixels,
+        }
+    }
+
+    /// The pixel's colour as linear light, straight (not premultiplied), not clamped.
+    fn linear(&self, pixel: [f64; 4]) -> [f32; 3] {
+        straight(pixel).map(|v| self.encoding.to_linear(v) as f32)
+    }
+
+    /// One channel at `max` (255, 65535 ...) through the output curve.
+    fn quantise(&self, value: f64, max: f64, options: &OutputOptions) -> u32 {
+        match options.file_gamma {
+            None => self.encoding.encode_to(value, max),
+            Some(gamma) => {
+                let linear = self.encoding.to_linear(value);
+                let clipped = if linear.is_nan() {
+                    0.0
+                } else {
+                    linear.clamp(0.0, 1.0)
+                };
+                (clipped.powf(1.0 / gamma) * max + 0.5)
+                    .floor()
+                    .clamp(0.0, max) as u32
+            }
+        }
+    }
+
+    /// Integer samples: `channels` (3 or 4) per pixel at `bits` (5..=16), each scaled into
+    /// the container of 8 or 16 bits.
+    fn samples(&self, channels: usize, bits: u32, options: &OutputOptions) -> Vec<u16> {
+        let bits = bits.clamp(1, 16);
+        let max = f64::from((1u32 << bits) - 1);
+        let container = if bits <= 8 { 255.0 } else { 65535.0 };
+        let scale = |q: u32| -> u16 {
+            if max == container {
+                q as u16
+            } else {
+                (f64::from(q) * container / max + 0.5).floor() as u16
+            }
+        };
+        let mut out = Vec::with_capacity(self.pixels.len() * channels);
+        for pixel in &self.pixels {
+            for value in straight(*pixel) {
+                out.push(scale(self.quantise(value, max, options)));
+            }
+            if channels == 4 {
+                let coverage = pixel[3];
+                let coverage = if coverage.is_nan() {
+                    1.0
+                } else {
+                    coverage.clamp(0.0, 1.0)
+                };
+                out.push(scale((coverage * max + 0.5).floor() as u32));
+            }
+        }
+        out
+    }
+}
+
+/// A pixel's colour divided by its coverage (0 where nothing is covered).
+fn straight(pixel: [f64; 4]) -> [f64; 3] {
+    let coverage = pixel[3];
+    let rgb = [pixel[0], pixel[1], pixel[2]];
+    if coverage >= 1.0 || coverage.is_nan() {
+        rgb
+    } else if coverage <= 0.0 {
+        [0.0; 3]
+    } else {
+        rgb.map(|v| v / coverage)
+    }
+}
+
+/// The bytes of `image` stored in the format `options` names.
+pub fn encode(image: &RenderedImage, options: &OutputOptions) -> io::Result<Vec<u8>> {
+    let expected = (image.width as usize).checked_mul(image.height as usize);
+    if image.width == 0 || image.height == 0 || expected != Some(image.pixels.len()) {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!(
+                "image of {}x{} pixels holds {} pixels",
+                image.width,
+                image.height,
+                image.pixels.len()
+            ),
+        ));
+    }
+    let (width, height) = (image.width, image.height);
+    let alpha = options.alpha && options.format.has_alpha();
+    let channels = if alpha { 4 } else { 3 };
+    let mut encoded = Vec::new();
+    let bytes8 = |bits: u32| -> Vec<u8> {
+        image
+            .samples(channels, bits.min(8), options)
+            .into_iter()
+            .map(|v| v as u8)
+            .collect()
+    };
+    let bytes16 = |big_endian: bool| -> Vec<u8> {
+        image
+            .samples(channels, options.bits, options)
+            .into_iter()
+            .flat_map(|v| {
+                if big_endian {
+                    v.to_be_bytes()
+                } else {
+                    v.to_ne_bytes()
+                }
+            })
+            .collect()
+    };
+    let colour_type = |wide: bool| match (alpha, wide) {
+        (false, false) => ExtendedColorType::Rgb8,
+        (true, false) => ExtendedColorType::Rgba8,
+        (false, true) => ExtendedColorType::Rgb16,
+        (true, true) => ExtendedColorType::Rgba16,
+    };
+    let failed = io::Error::other;
+    match options.format {
+        FileFormat::Png => {
+            let wide = options.bits > 8;
+            let data = if wide {
+                bytes16(false)
+            } else {
+                bytes8(options.bits)
+            };
+            PngEncoder::new(&mut encoded)
+                .write_image(&data, width, height, colour_type(wide))
+                .map_err(failed)?;
+            return Ok(with_colour_space_chunks(encoded));
+        }
+        FileFormat::Ppm => {
+            use image::codecs::pnm::{PnmEncoder, PnmSubtype, SampleEncoding};
+            let wide = options.bits > 8;
+            let three = OutputOptions {
+                alpha: false,
+                ..*options
+            };
+            let samples = image.samples(
+                3,
+                if wide {
+                    options.bits
+                } else {
+                    options.bits.min(8)
+                },
+                &three,
+            );
+            let data: Vec<u8> = if wide {
+                samples.iter().flat_map(|v| v.to_ne_bytes()).collect()
+            } else {
+                samples.iter().map(|&v| v as u8).collect()
+            };
+            let kind = if wide {
+                ExtendedColorType::Rgb16
+            } else {
+                ExtendedColorType::Rgb8
+            };
+            PnmEncoder::new(&mut encoded)
+                .with_subtype(PnmSubtype::Pixmap(SampleEncoding::Binary))
+                .write_image(&data, width, height, kind)
+                .map_err(failed)?;
+        }
+        FileFormat::Tga | FileFormat::TgaCompressed => {
+            use image::codecs::tga::TgaEncoder;
+            let mut encoder = TgaEncoder::new(&mut encoded);
+            if options.format == FileFormat::Tga {
+                encoder = encoder.disable_rle();
+            }
+            encoder
+                .write_image(&bytes8(8), width, height, colour_type(false))
+                .map_err(failed)?;
+        }
+        FileFormat::Bmp => {
+            use image::codecs::bmp::BmpEncoder;
+            BmpEncoder::new(&mut encoded)
+                .write_image(&bytes8(8), width, height, colour_type(false))
+                .map_err(failed)?;
+        }
+        FileFormat::Jpeg => {
+            use image::codecs::jpeg::JpegEncoder;
+            let three = OutputOptions {
+                alpha: false,
+                ..*options
+            };
+            let data: Vec<u8> = image
+                .samples(3, 8, &three)
+                .into_iter()
+                .map(|v| v as u8)
+                .collect();
+            JpegEncoder::new_with_quality(&mut encoded, options.jpeg_quality.clamp(1, 100))
+                .write_image(&data, width, height, ExtendedColorType::Rgb8)
+                .map_err(failed)?;
+        }
+        FileFormat::Exr => {
+            use image::codecs::openexr::OpenExrEncoder;
+            let mut data = Vec::with_capacity(image.pixels.len() * channels * 4);
+            for pixel in &image.pixels {
+                let linear = image.linear(*pixel);
+                let coverage = if alpha {
+                    pixel[3].clamp(0.0, 1.0) as f32
+                } else {
+                    1.0
+                };
+                for value in linear {
+                    let value = if value.is_finite() { value } else { 0.0 };
+                    data.extend_from_slice(&(value * coverage).to_ne_bytes());
+                }
+                if alpha {
+                    data.extend_from_slice(&coverage.to_ne_bytes());
+                }
+            }
+            let kind = if alpha {
+                ExtendedColorType::Rgba32F
+            } else {
+                ExtendedColorType::Rgb32F
+            };
+            OpenExrEncoder::new(io::Cursor::new(&mut encoded))
+                .write_image(&data, width, height, kind)
+                .map_err(failed)?;
+        }
+        FileFormat::Hdr => {
+            use image::codecs::hdr::HdrEncoder;
+            let data: Vec<image::Rgb<f32>> = image
+                .pixels
+                .iter()
+                .map(|p| {
+                    let coverage = if options.alpha {
+                        p[3].clamp(0.0, 1.0) as f32
+                    } else {
+                        1.0
+                    };
+                    image::Rgb(image.linear(*p).map(|v| {
+                        if v.is_finite() {
+                            (v * coverage).max(0.0)
+                        } else {
+                            0.0
+                        }
+                    }))
+                })
+                .collect();
+            HdrEncoder::new(&mut encoded)
+                .encode(&data, width as usize, height as usize)
+                .map_err(failed)?;
+        }
+    }
+    Ok(encoded)
+}
+
+/// Writes `bytes` to `path` via a temporary file in the same folder and a rename.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
     let file_name = path.file_name().ok_or_else(|| {
         io::Error::new(io::ErrorKind::InvalidInput, "the output path names no file")
     })?;
@@ -31,12 +425,18 @@ pub fn write_png_atomic(path: &Path, image: &Image) -> io::Result<()> {
     temporary_name.push(file_name);
     temporary_name.push(format!(".{}-{serial}.tmp", std::process::id()));
     let temporary = folder.join(temporary_name);
-    let result = write_then_rename(&temporary, path, &bytes);
+    let result = write_then_rename(&temporary, path, bytes);
     if result.is_err() {
         // Best effort: the temporary may not even exist.
         let _ = fs::remove_file(&temporary);
     }
     result
+}
+
+/// Writes `image` as an 8-bit PNG to `path`, atomically.
+pub fn write_png_atomic(path: &Path, image: &Image) -> io::Result<()> {
+    let bytes = encode_png(image)?;
+    write_atomic(path, &bytes)
 }
 
 /// Writes `bytes` to `temporary`, flushes them to disk and renames the file to `target`.
@@ -51,7 +451,7 @@ fn write_then_rename(temporary: &Path, target: &Path, bytes: &[u8]) -> io::Resul
     fs::rename(temporary, target)
 }
 
-/// The PNG file contents for `image`.
+/// The PNG file contents for an 8-bit `image`.
 pub fn encode_png(image: &Image) -> io::Result<Vec<u8>> {
     let expected = (image.width as usize).checked_mul(image.height as usize);
     if image.width == 0 || image.height == 0 || expected != Some(image.pixels.len()) {

@@ -590,6 +590,7 @@ impl Shooter<'_> {
         if !self.budget.take_trace() {
             return false;
         }
+        crate::accel::counters::add(crate::accel::counters::Counter::PhotonRays, 1);
         let Some(hit) = self.next_hit(&ray, 1) else {
             return false;
         };

@@ -35,7 +35,7 @@
 
 use super::radiosity_index::SampleIndex;
 use crate::scene::RadiositySettings;
-use glam::DVec3;
+use glam::{DVec3, DVec4};
 use rayon::prelude::*;
 use std::cell::RefCell;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
@@ -423,10 +423,10 @@ pub fn map_rows_storing(
     width: u32,
     height: u32,
     progress: Option<&(dyn Fn(u32) + Sync)>,
-    colour: impl Fn(u32, u32) -> DVec3 + Sync,
-) -> Vec<DVec3> {
+    colour: impl Fn(u32, u32) -> DVec4 + Sync,
+) -> Vec<DVec4> {
     let row_length = width.max(1) as usize;
-    let mut colours = vec![DVec3::ZERO; row_length * height as usize];
+    let mut colours = vec![DVec4::ZERO; row_length * height as usize];
     for (block, rows) in colours.chunks_mut(row_length * ROWS_PER_BLOCK).enumerate() {
         let gathered: Vec<Vec<Cache>> = rows
             .par_chunks_mut(row_length)
@@ -437,8 +437,10 @@ pub fn map_rows_storing(
                     .map(|_| Cache::default())
                     .collect();
                 ROW_SAMPLES.with(|samples| *samples.borrow_mut() = Some(fresh));
-                for (column, slot) in line.iter_mut().enumerate() {
-                    *slot = colour(column as u32, row);
+                if !super::interrupted() {
+                    for (column, slot) in line.iter_mut().enumerate() {
+                        *slot = colour(column as u32, row);
+                    }
                 }
                 if let Some(progress) = progress {
                     progress(1);
@@ -489,7 +491,7 @@ pub fn pretrace(
     radiosity: &Radiosity,
     width: u32,
     height: u32,
-    trace_pixel: &dyn Fn(u32, u32) -> DVec3,
+    trace_pixel: &dyn Fn(u32, u32) -> DVec4,
 ) {
     radiosity.set_filling(true);
     for step in radiosity.pretrace_steps(width) {
@@ -631,11 +633,13 @@ mod tests {
         };
         let image = map_rows_storing(&radiosity, 4, 2, None, |column, _row| {
             let point = DVec3::new(f64::from(column) * 0.01, 0.0, 0.0);
-            radiosity.irradiance(point, DVec3::Y, 0, &counting_sky)
+            radiosity
+                .irradiance(point, DVec3::Y, 0, &counting_sky)
+                .extend(0.0)
         });
         assert!(image
             .iter()
-            .all(|light| (*light - DVec3::ONE).length() < 1e-12));
+            .all(|light| (light.truncate() - DVec3::ONE).length() < 1e-12));
         // Each row of the block gathers one sample that its other pixels reuse.
         assert_eq!(rays.load(Ordering::Relaxed), 2 * 35);
         // After the block, the samples are in the cache for everyone.

@@ -127,6 +127,7 @@ pub fn shadow_filter(
     distance: f64,
     photon_targets_block: Option<LightPhotons>,
 ) -> DVec3 {
+    crate::accel::counters::add(crate::accel::counters::Counter::ShadowRays, 1);
     let ray = Ray {
         origin: point,
         direction,

@@ -84,6 +84,8 @@ fn centre_pixel(scene: &Scene) -> [u8; 3] {
         width: 3,
         height: 3,
         antialias: None,
+        region: None,
+        alpha: false,
     };
     render(scene, &world, &options, &|_| {})
         .pixel(1, 1)
@@ -347,11 +349,7 @@ fn busy_scene() -> Scene {
 /// `scene` rendered at `width` x `height` without anti-aliasing on a pool of `threads`.
 fn render_on_threads(scene: &Scene, width: u32, height: u32, threads: usize) -> Image {
     let world = World::build(scene);
-    let options = RenderOptions {
-        width,
-        height,
-        antialias: None,
-    };
+    let options = RenderOptions::new(width, height);
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -403,6 +401,8 @@ fn progress_counts_every_row() {
         width: 8,
         height: 7,
         antialias: None,
+        region: None,
+        alpha: false,
     };
     let image = render(&busy, &world, &options, &|n| {
         rows.fetch_add(n, Ordering::Relaxed);
@@ -428,6 +428,8 @@ fn hostile_values_do_not_panic() {
             width: 4,
             height: 3,
             antialias: None,
+            region: None,
+            alpha: false,
         },
         &|_| {},
     );
@@ -439,6 +441,8 @@ fn hostile_values_do_not_panic() {
             width: 0,
             height: 3,
             antialias: None,
+            region: None,
+            alpha: false,
         },
         &|_| {},
     );
@@ -472,6 +476,8 @@ fn hostile_values_do_not_panic() {
             width: 5,
             height: 4,
             antialias: None,
+            region: None,
+            alpha: false,
         },
         &|_| {},
     );

@@ -52,11 +52,12 @@ use super::photons::PhotonMap;
 use super::radiosity::{Gathered, Radiosity};
 use super::shading::{local_light, SurfaceSample};
 use super::surface::{for_each_component, pigment_at_hit};
+use crate::accel::counters::{self, Counter};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
 use crate::texture::normal::perturbed_normal_at;
 use crate::texture::pigment::hit_surface;
 use crate::{scene::Scene, texture::Texture};
-use glam::DVec3;
+use glam::{DVec3, DVec4};
 use std::cell::Cell;
 
 /// POV-Ray's upper limit for `max_trace_level`.
@@ -83,6 +84,10 @@ pub struct InteriorStack {
     in_solid: bool,
     /// Radiosity bounces behind the ray (0 for camera rays and their continuations).
     radiosity_depth: u32,
+    /// The ray descends from a mirror reflection: the background it meets counts as
+    /// opaque for the alpha channel (POV-Ray: reflections of the background are not
+    /// transparent).
+    reflected: bool,
 }
 
 impl InteriorStack {
@@ -93,6 +98,7 @@ impl InteriorStack {
         band: None,
         in_solid: false,
         radiosity_depth: 0,
+        reflected: false,
     };
 
     /// Index of refraction of the innermost medium.
@@ -195,6 +201,9 @@ pub struct Tracer<'a> {
     radiosity: Option<Radiosity>,
     /// Caustics, when the scene has a photons block.
     photons: Option<PhotonMap>,
+    /// Rays keep count of the background they see, for an alpha channel (`+UA`): the
+    /// background then adds only its opaque part to the colour.
+    alpha: bool,
 }
 
 /// What a ray is for, which decides the objects it can see.
@@ -247,7 +256,23 @@ impl<'a> Tracer<'a> {
                 .as_ref()
                 .map(|radiosity| Radiosity::new(radiosity, scene.camera.location)),
             photons: PhotonMap::build(scene, world),
+            alpha: false,
         }
+    }
+
+    /// This tracer, computing how much background each camera ray sees (for `+UA`).
+    pub fn with_alpha(mut self, alpha: bool) -> Tracer<'a> {
+        self.alpha = alpha;
+        self
+    }
+
+    /// How much of the background shows where a ray meets it, as POV-Ray's alpha output
+    /// measures it: its transmit plus its filter times the grey of its colour (measured:
+    /// `rgbf <0.2, 0.3, 0.4, 1>` leaves 0.282 of the pixel transparent).
+    fn background_transparency(&self) -> f64 {
+        let background = &self.scene.background;
+        (background.filter * background.rgb_vec().dot(GREY_WEIGHTS) + background.transmit)
+            .clamp(0.0, 1.0)
     }
 
     /// The scene's radiosity state, if it has radiosity.
@@ -280,7 +305,7 @@ impl<'a> Tracer<'a> {
                 origin: point,
                 direction,
             };
-            let (colour, distance) = self.trace_measuring(
+            let (colour, distance, _) = self.trace_measuring(
                 ray,
                 level + 1,
                 RayWeight::CAMERA,
@@ -293,17 +318,24 @@ impl<'a> Tracer<'a> {
 
     /// The colour seen along a camera ray.
     pub fn trace_camera_ray(&self, ray: &Ray) -> DVec3 {
-        let colour = self.trace(
+        self.trace_camera_sample(ray).truncate()
+    }
+
+    /// The colour seen along a camera ray and (with alpha, [`Self::with_alpha`]) the share
+    /// of background seen through transparent surfaces and refraction (not reflection),
+    /// as the fourth component.
+    pub fn trace_camera_sample(&self, ray: &Ray) -> DVec4 {
+        let (colour, _, background) = self.trace_measuring(
             *ray,
             1,
             RayWeight::CAMERA,
             &self.camera_interiors,
             RayKind::Camera,
         );
-        if colour.is_finite() {
-            colour
+        if colour.is_finite() && background.is_finite() {
+            colour.extend(background)
         } else {
-            DVec3::ZERO
+            DVec4::ZERO
         }
     }
 
@@ -320,9 +352,8 @@ impl<'a> Tracer<'a> {
         self.trace_measuring(ray, level, weight, inside, kind).0
     }
 
-    /// [`Self::trace`]'s colour and the distance to the first surface the ray meets
-    /// (infinite when it meets none).
-    fn trace_measuring(
+    /// [`Self::trace`]'s colour and the share of background seen along the ray.
+    fn trace_seeing_background(
         &self,
         ray: Ray,
         level: u32,
@@ -330,6 +361,29 @@ impl<'a> Tracer<'a> {
         inside: &InteriorStack,
         kind: RayKind,
     ) -> (DVec3, f64) {
+        let (colour, _, background) = self.trace_measuring(ray, level, weight, inside, kind);
+        (colour, background)
+    }
+
+    /// [`Self::trace`]'s colour, the distance to the first surface the ray meets (infinite
+    /// when it meets none) and the share of background it sees (0 without alpha).
+    fn trace_measuring(
+        &self,
+        ray: Ray,
+        level: u32,
+        weight: RayWeight,
+        inside: &InteriorStack,
+        kind: RayKind,
+    ) -> (DVec3, f64, f64) {
+        counters::add(
+            match kind {
+                RayKind::Camera => Counter::CameraRays,
+                RayKind::Reflected => Counter::ReflectedRays,
+                RayKind::Refracted => Counter::RefractedRays,
+                RayKind::Gathering => Counter::RadiosityRays,
+            },
+            1,
+        );
         // Distance to the first surface met, once one is met.
         let mut first_distance = f64::INFINITY;
         let mut inside = *inside;
@@ -338,6 +392,11 @@ impl<'a> Tracer<'a> {
         // Product of the transmission of the surfaces passed so far without bending.
         let mut carried = DVec3::ONE;
         let mut colour = DVec3::ZERO;
+        // With alpha: the share of background seen, and the product of the transparency
+        // (grey of what each surface lets through) of the surfaces passed.
+        let counts_background = self.alpha && !inside.reflected && inside.radiosity_depth == 0;
+        let mut background = 0.0;
+        let mut carried_transparency = 1.0;
         // Where the stretch of the ray not yet passed through the atmosphere starts.
         let mut segment_start = 0.0;
         let mut travelled = 0.0;
@@ -365,14 +424,19 @@ impl<'a> Tracer<'a> {
                 carried *= keep;
             }
             let Some(hit) = hit else {
-                return (
-                    colour + carried * self.atmosphere.sky(ray.direction),
-                    first_distance,
-                );
+                let sky = self.atmosphere.sky(ray.direction);
+                if counts_background {
+                    background += carried_transparency * self.background_transparency();
+                    let opacity =
+                        (1.0 - self.scene.background.filter - self.scene.background.transmit)
+                            .clamp(0.0, 1.0);
+                    return (colour + carried * sky * opacity, first_distance, background);
+                }
+                return (colour + carried * sky, first_distance, background);
             };
             first_distance = first_distance.min(hit.distance);
             let Some(material) = self.world.materials.get(hit.material as usize) else {
-                return (colour, first_distance);
+                return (colour, first_distance, background);
             };
             // Light from beyond this hit fades on its way through the object the ray is in,
             // when the hit is on that object (measured: povray fades nothing on the way to
@@ -395,16 +459,18 @@ impl<'a> Tracer<'a> {
                 &ray, &hit, material, level, weight, &inside, &indirect, &caustics,
             );
             colour += carried * (surface.colour + fade * surface.through);
+            background += carried_transparency * fade.dot(GREY_WEIGHTS) * surface.background;
             let Some(continued) = surface.continued else {
-                return (colour, first_distance);
+                return (colour, first_distance, background);
             };
             carried *= fade * continued.filter;
+            carried_transparency *= (fade * continued.filter).dot(GREY_WEIGHTS);
             weight = continued.weight;
             inside = continued.inside;
             // The same ray is searched again beyond this hit, which avoids drift along it.
             min_distance = hit.distance + SURFACE_EPSILON;
         }
-        (colour, first_distance)
+        (colour, first_distance, background)
     }
 
     /// Whether every object of `inside` is hollow (so fog and media fill it).
@@ -504,6 +570,7 @@ impl<'a> Tracer<'a> {
             let mut total = Shaded {
                 colour: DVec3::ZERO,
                 through: DVec3::ZERO,
+                background: 0.0,
                 continued: None,
             };
             for (&corner, &share) in blend.materials.iter().zip(&blend.weights) {
@@ -538,6 +605,7 @@ impl<'a> Tracer<'a> {
         let mut total = Shaded {
             colour: DVec3::ZERO,
             through: DVec3::ZERO,
+            background: 0.0,
             continued: None,
         };
         let surface = hit_surface(hit.point, ray.direction, hit.normal);
@@ -631,6 +699,7 @@ impl<'a> Tracer<'a> {
         let mut shaded = Shaded {
             colour: opacity * local.body + local.highlights,
             through: DVec3::ZERO,
+            background: 0.0,
             continued: None,
         };
         if level >= self.max_trace_level {
@@ -698,8 +767,15 @@ impl<'a> Tracer<'a> {
                     origin: hit.point,
                     direction: bent,
                 };
-                let seen = self.trace(through, level + 1, pass_weight, &beyond, RayKind::Refracted);
+                let (seen, background) = self.trace_seeing_background(
+                    through,
+                    level + 1,
+                    pass_weight,
+                    &beyond,
+                    RayKind::Refracted,
+                );
                 shaded.through += pass * seen;
+                shaded.background += pass.dot(GREY_WEIGHTS) * background;
             } else {
                 // Total internal reflection: the surface becomes a perfect mirror.
                 reflection = DVec3::ONE;
@@ -723,7 +799,10 @@ impl<'a> Tracer<'a> {
                     reflected,
                     level + 1,
                     reflection_weight,
-                    inside,
+                    &InteriorStack {
+                        reflected: true,
+                        ..*inside
+                    },
                     RayKind::Reflected,
                 );
                 let mirrored = reflection * apply_exponent(seen, finish.reflection_exponent);
@@ -827,6 +906,8 @@ struct Shaded {
     /// Light that came through the surface from beyond: bent transmitted rays, and the
     /// total internal reflection standing in for them (what an interior's fading dims).
     through: DVec3,
+    /// The share of background seen through the surface by bent rays (alpha only).
+    background: f64,
     /// How the ray goes on when it passes the surface without bending.
     continued: Option<Continued>,
 }
@@ -836,6 +917,7 @@ impl Shaded {
     fn add(&mut self, share: DVec3, part: Shaded) {
         self.colour += share * part.colour;
         self.through += share * part.through;
+        self.background += share.dot(GREY_WEIGHTS) * part.background;
         if let Some(part) = part.continued {
             let continued = self.continued.get_or_insert(Continued {
                 filter: DVec3::ZERO,

@@ -6,7 +6,7 @@
 //! A module is placed in the layer of its first path segment (`texture::pattern::warp` is in
 //! `texture`). Imports are read from the source text: `use` trees (groups, renames, globs,
 //! `self`, `super`, child modules) and paths written in code (`crate::a::b`, `super::c`),
-//! with comments and string literals skipped. The binary (`main.rs`, `cli.rs`) sits above
+//! with comments and string literals skipped. The binary (`main.rs`, `cli/`) sits above
 //! every layer and is not checked.
 //!
 //! `cargo test --test integration architecture -- --nocapture` prints the layer graph.
@@ -539,7 +539,7 @@ fn source_files(src: &Path, dir: &Path, files: &mut Vec<(String, String)>) {
                 .expect("under src")
                 .to_string_lossy()
                 .replace('\\', "/");
-            if relative == "main.rs" || relative == "cli.rs" {
+            if relative == "main.rs" || relative.starts_with("cli/") {
                 continue;
             }
             let text = fs::read_to_string(&path).expect("source is UTF-8");

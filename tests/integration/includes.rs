@@ -122,6 +122,8 @@ fn render_scene(
                 width,
                 height,
                 antialias: None,
+                region: None,
+                alpha: false,
             };
             Ok(durer::render::render(&scene, &world, &options, &|_| {}))
         }
@@ -1012,6 +1014,8 @@ fn stdlib_scene_renders_like_povray(name: &str, installed: bool) {
         width: reference.width(),
         height: reference.height(),
         antialias: None,
+        region: None,
+        alpha: false,
     };
     let ours = durer::render::render(&scene, &world, &options, &|_| {});
     let over = reference

@@ -216,6 +216,21 @@ impl Runtime {
         Ok(items)
     }
 
+    /// The options from outside the scene.
+    pub(crate) fn options(&self) -> &EvalOptions {
+        &self.options
+    }
+
+    /// Parses text that stands for a file of its own (the command line's declarations).
+    pub(crate) fn parse_virtual_file(&mut self, name: &str, text: &str) -> EvalResult<Rc<[Item]>> {
+        let text: Arc<str> = Arc::from(text);
+        let file = self.sources.add(Path::new(name), text.clone());
+        crate::syntax::parse(&text, file).map_err(|mut d| {
+            d.trace = self.trace_for_diagnostic();
+            d
+        })
+    }
+
     /// Reads a file (or the embedded file standing for it) and adds it to the sources.
     pub(crate) fn read_source(
         &mut self,

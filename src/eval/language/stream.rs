@@ -409,7 +409,11 @@ impl Evaluator {
             DirectiveKind::Message { level, text } => {
                 let text = self.eval_string(text)?;
                 match level {
-                    MessageLevel::Debug => eprint!("{text}"),
+                    MessageLevel::Debug => {
+                        if self.runtime.options.print_debug {
+                            eprint!("{text}");
+                        }
+                    }
                     MessageLevel::Warning => {
                         let mut d =
                             crate::diag::Diagnostic::warning(span, text.trim_end().to_string());

@@ -1,0 +1,508 @@
+//! Command-line interface: `durer render`, `durer check`, and POV-Ray's own command line
+//! (`durer +Iscene.pov +W640 +H480`, `durer scene.ini[Section]`).
+//!
+//! `render` takes durer's flags and POV-Ray's `+`/`-` switches and `.ini` files mixed
+//! ([`povray_options`]); durer's flags win over POV-Ray options. A command line that does
+//! not start with a subcommand is read as POV-Ray reads its own: POV-Ray's defaults (160 x
+//! 120), its default INI file (`$POVINI`, `./povray.ini`, `~/.povray/3.7/povray.ini`,
+//! `/etc/povray/3.7/povray.ini`), then the words in order.
+//!
+//! Exit codes: 0 success, 1 scene error (or a file that cannot be written), 2 usage error,
+//! 130 interrupted (Ctrl-C: the render stops, the previous image is left as it was).
+
+mod animation;
+mod povray_options;
+mod render_job;
+mod stats;
+
+use clap::{Args, Parser, Subcommand};
+use durer::diag::Severity;
+use durer::eval::{evaluate_file, EvalOptions, Evaluated};
+use povray_options::{OptionReader, Origin, Settings};
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Stack size of the thread that evaluates scenes: deep macro recursion needs room.
+const EVALUATION_STACK_BYTES: usize = 1 << 30;
+
+/// Exit code of a scene error.
+pub const EXIT_SCENE_ERROR: i32 = 1;
+/// Exit code of a usage error.
+pub const EXIT_USAGE: i32 = 2;
+/// Exit code after Ctrl-C (128 + SIGINT, as shells report it).
+pub const EXIT_INTERRUPTED: i32 = 130;
+
+const AFTER_HELP: &str = "\
+POV-Ray's command line works too: `durer +Iscene.pov +W640 +H480 +A0.3 +FN16 +UA`,
+`durer scene.ini[Section] +KFF24`, and such switches and .ini files may follow `durer render`.
+Exit codes: 0 success, 1 scene error or unwritable output, 2 usage error, 130 interrupted
+(Ctrl-C stops the render and leaves the previous image intact).";
+
+#[derive(Parser)]
+#[command(
+    name = "durer",
+    version,
+    about = "Render POV-Ray 3.7 scenes with a recursive ray tracer",
+    after_help = AFTER_HELP
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a scene (or an animation) to image files.
+    Render(RenderArgs),
+    /// Parse and evaluate a scene without rendering; print diagnostics and a summary.
+    Check(SceneArgs),
+}
+
+#[derive(Args)]
+struct SceneArgs {
+    /// The scene file (.pov).
+    scene: PathBuf,
+    /// Add a folder to the #include search path (repeatable).
+    #[arg(short = 'L', long = "library", value_name = "DIR")]
+    include_paths: Vec<PathBuf>,
+    /// Image width seen by the scene as `image_width`.
+    #[arg(long, default_value_t = 320)]
+    width: u32,
+    /// Image height seen by the scene as `image_height`.
+    #[arg(long, default_value_t = 240)]
+    height: u32,
+    /// Declare an identifier before the scene is read: NAME=EXPR, any SDL value
+    /// (`--define Size=2`, `--define 'Colour=<1,0,0>'`, `--define 'Name="text"'`).
+    #[arg(long = "define", value_name = "NAME=EXPR")]
+    defines: Vec<String>,
+}
+
+#[derive(Args)]
+#[command(after_help = AFTER_HELP)]
+struct RenderArgs {
+    /// The scene file (.pov); or give it with +I or Input_File_Name in an .ini file.
+    scene: Option<PathBuf>,
+    /// Add a folder to the #include search path (repeatable).
+    #[arg(short = 'L', long = "library", value_name = "DIR")]
+    include_paths: Vec<PathBuf>,
+    /// Image width in pixels (default 320).
+    #[arg(long)]
+    width: Option<u32>,
+    /// Image height in pixels (default 240).
+    #[arg(long)]
+    height: Option<u32>,
+    /// Declare an identifier before the scene is read: NAME=EXPR, any SDL value.
+    #[arg(long = "define", value_name = "NAME=EXPR")]
+    defines: Vec<String>,
+    /// Output file (default: the scene's path with the format's extension); its extension
+    /// chooses the format unless +F does (png, tga, bmp, ppm, jpg, exr, hdr); `-` writes
+    /// the image to standard output.
+    #[arg(short, long, value_name = "FILE")]
+    output: Option<String>,
+    /// Number of render threads (default: all cores).
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Print nothing but errors.
+    #[arg(short, long)]
+    quiet: bool,
+    /// Render the animation frames A to B (POV-Ray's +KFI A +KFF B).
+    #[arg(long, value_name = "A..B", value_parser = parse_frame_range)]
+    frames: Option<(i64, i64)>,
+    /// Render only frame N of the animation (POV-Ray's +SF N +EF N).
+    #[arg(long, value_name = "N")]
+    frame: Option<i64>,
+    /// Print render statistics at the end: `text` (as POV-Ray's +GS) or `json` (on
+    /// standard output, for scripts).
+    #[arg(long, value_name = "text|json", num_args = 0..=1, default_missing_value = "text",
+          value_parser = ["text", "json"])]
+    stats: Option<String>,
+    #[command(flatten)]
+    antialias: AntialiasArgs,
+    /// POV-Ray switches and .ini files (collected from the command line).
+    #[arg(skip)]
+    povray_words: Vec<String>,
+}
+
+/// Anti-aliasing options, as POV-Ray's `+A`, `+AM`, `+R` and `+J`.
+#[derive(Args)]
+struct AntialiasArgs {
+    /// Turn anti-aliasing on: supersample pixels differing from a neighbour by more than
+    /// THRESHOLD (0 to 3; without a value 0.3, as POV-Ray's +A).
+    #[arg(long, value_name = "THRESHOLD", value_parser = parse_threshold,
+          num_args = 0..=1, default_missing_value = "0.3")]
+    antialias: Option<f64>,
+    /// Supersampling method: 1 non-recursive grid, 2 recursive (POV-Ray's +AM).
+    #[arg(long, value_name = "1|2", value_parser = clap::value_parser!(u32).range(1..=2),
+          requires = "antialias")]
+    aa_method: Option<u32>,
+    /// Grid size (method 1) or recursion depth (method 2), 1 to 9 (POV-Ray's +R; default 3).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=9),
+          requires = "antialias")]
+    aa_depth: Option<u32>,
+    /// Jitter of the supersamples, 0 (off) to 1 (POV-Ray's +J; default 1).
+    #[arg(long, value_name = "AMOUNT", value_parser = parse_jitter, requires = "antialias")]
+    jitter: Option<f64>,
+}
+
+/// A float from `text` within `range`, or a message naming the range.
+fn parse_float_in(text: &str, range: std::ops::RangeInclusive<f64>) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(value) if range.contains(&value) => Ok(value),
+        _ => Err(format!(
+            "expected a number from {} to {}",
+            range.start(),
+            range.end()
+        )),
+    }
+}
+
+/// `--antialias`: a threshold from 0 to 3.
+fn parse_threshold(text: &str) -> Result<f64, String> {
+    parse_float_in(text, 0.0..=3.0)
+}
+
+/// `--jitter`: an amount from 0 to 1.
+fn parse_jitter(text: &str) -> Result<f64, String> {
+    parse_float_in(text, 0.0..=1.0)
+}
+
+/// `--frames A..B`.
+fn parse_frame_range(text: &str) -> Result<(i64, i64), String> {
+    let (a, b) = text
+        .split_once("..")
+        .ok_or_else(|| "expected A..B, such as 1..24".to_string())?;
+    let a: i64 = a.trim().parse().map_err(|_| "A must be a whole number")?;
+    let b: i64 = b.trim().parse().map_err(|_| "B must be a whole number")?;
+    if b < a || a < 0 {
+        return Err("expected 0 <= A <= B".into());
+    }
+    Ok((a, b))
+}
+
+/// Durer's flags that take a value in the next word.
+const VALUE_FLAGS: &[&str] = &[
+    "-o",
+    "--output",
+    "-L",
+    "--library",
+    "--width",
+    "--height",
+    "--threads",
+    "--define",
+    "--frames",
+    "--frame",
+    "--aa-method",
+    "--aa-depth",
+    "--jitter",
+];
+
+/// Whether `word` is a POV-Ray switch rather than one of durer's flags: it starts with `+`,
+/// or with a single `-` followed by a letter, and is not `-o`, `-L`, `-q`, `-h` (durer's
+/// short flags, whose POV-Ray namesakes mean the same or are written in upper case).
+fn is_povray_switch(word: &str) -> bool {
+    if word.starts_with('+') && word.len() > 1 {
+        return true;
+    }
+    let Some(rest) = word.strip_prefix('-') else {
+        return false;
+    };
+    if rest.starts_with('-') || rest.is_empty() {
+        return false;
+    }
+    !(rest.starts_with('o') || rest.starts_with('L') || rest == "q" || rest == "h")
+}
+
+/// Splits `render`'s words into durer's flags (for clap) and POV-Ray's words, keeping each
+/// list's order.
+fn split_words(words: &[String], povray_mode: bool) -> (Vec<String>, Vec<String>) {
+    let mut durer = Vec::new();
+    let mut povray = Vec::new();
+    let mut index = 0;
+    while index < words.len() {
+        let word = &words[index];
+        index += 1;
+        if VALUE_FLAGS.contains(&word.as_str()) {
+            durer.push(word.clone());
+            if let Some(value) = words.get(index) {
+                durer.push(value.clone());
+                index += 1;
+            }
+        } else if word == "--antialias" || word == "--stats" {
+            durer.push(word.clone());
+            let takes = |next: &str| {
+                if word == "--stats" {
+                    next == "text" || next == "json"
+                } else {
+                    next.parse::<f64>().is_ok()
+                }
+            };
+            if let Some(value) = words.get(index).filter(|next| takes(next)) {
+                durer.push(value.clone());
+                index += 1;
+            }
+        } else if is_povray_switch(word)
+            || povray_options::looks_like_ini(word)
+            || povray_options::looks_like_key(word)
+        {
+            povray.push(word.clone());
+        } else if povray_mode && !word.starts_with('-') && !looks_like_scene(word) {
+            // POV-Ray reads a bare word as an INI file (`povray myopts` reads myopts.ini).
+            povray.push(word.clone());
+        } else {
+            durer.push(word.clone());
+        }
+    }
+    (durer, povray)
+}
+
+/// A word naming a scene file rather than an INI file.
+fn looks_like_scene(word: &str) -> bool {
+    let lower = word.to_ascii_lowercase();
+    lower.ends_with(".pov") || lower.ends_with(".inc") || lower.ends_with(".mcr")
+}
+
+/// Runs the command line and returns the process exit code.
+pub fn run() -> i32 {
+    let words: Vec<String> = std::env::args_os()
+        .skip(1)
+        .map(|w| w.to_string_lossy().into_owned())
+        .collect();
+    match words.first().map(String::as_str) {
+        Some("render") => render_command(&words[1..], false),
+        Some("check") | Some("help") | Some("--help") | Some("-h") | Some("--version") | None => {
+            match Cli::try_parse() {
+                Ok(Cli {
+                    command: Command::Check(args),
+                }) => check(args),
+                Ok(Cli {
+                    command: Command::Render(_),
+                }) => render_command(&words[1..], false),
+                Err(error) => {
+                    let _ = error.print();
+                    if error.use_stderr() {
+                        EXIT_USAGE
+                    } else {
+                        0
+                    }
+                }
+            }
+        }
+        Some(_) => render_command(&words, true),
+    }
+}
+
+/// `durer render ...` (or POV-Ray's command line when `povray_mode`).
+fn render_command(words: &[String], povray_mode: bool) -> i32 {
+    let (durer_words, povray_words) = split_words(words, povray_mode);
+    #[derive(Parser)]
+    #[command(name = "durer render", after_help = AFTER_HELP)]
+    struct RenderCli {
+        #[command(flatten)]
+        args: RenderArgs,
+    }
+    let mut args = match RenderCli::try_parse_from(
+        std::iter::once("durer render".to_string()).chain(durer_words),
+    ) {
+        Ok(cli) => cli.args,
+        Err(error) => {
+            let _ = error.print();
+            return if error.use_stderr() { EXIT_USAGE } else { 0 };
+        }
+    };
+    args.povray_words = povray_words;
+    let settings = match settings_for(&args, povray_mode) {
+        Ok(settings) => settings,
+        Err(message) => {
+            eprintln!("durer: {message}");
+            return EXIT_USAGE;
+        }
+    };
+    render_job::run(settings, &args, povray_mode)
+}
+
+/// The settings of a render: defaults, default INI (POV-Ray mode), POV-Ray words in order,
+/// then durer's flags.
+fn settings_for(args: &RenderArgs, povray_mode: bool) -> Result<Settings, String> {
+    let mut defaults = Settings::povray_defaults();
+    if !povray_mode {
+        defaults.width = 320;
+        defaults.height = 240;
+    }
+    let mut reader = OptionReader::new(defaults);
+    if povray_mode {
+        if let Some(ini) = povray_options::default_ini() {
+            let origin = Origin {
+                place: "default INI".into(),
+            };
+            reader
+                .ini(&ini.to_string_lossy(), &origin)
+                .map_err(|e| e.to_string())?;
+        }
+    }
+    let origin = Origin {
+        place: "command line".into(),
+    };
+    for word in &args.povray_words {
+        let result = if word.starts_with('+') || word.starts_with('-') {
+            reader.switch(word, &origin)
+        } else if let Some((key, value)) = word
+            .split_once('=')
+            .filter(|_| povray_options::looks_like_key(word))
+        {
+            // POV-Ray takes INI options on its command line too (`Declare=Size=2`).
+            reader.key(key, value, &origin)
+        } else {
+            reader.ini(word, &origin)
+        };
+        result.map_err(|e| e.to_string())?;
+    }
+    let mut settings = reader.settings;
+    if let Some(scene) = &args.scene {
+        settings.input = Some(scene.clone());
+    }
+    settings
+        .library_paths
+        .extend(args.include_paths.iter().cloned());
+    if let Some(width) = args.width {
+        settings.width = width.max(1);
+    }
+    if let Some(height) = args.height {
+        settings.height = height.max(1);
+    }
+    for define in &args.defines {
+        settings.declares.push(parse_define(define)?);
+    }
+    if let Some(output) = &args.output {
+        settings.output = Some(output.clone());
+    }
+    if let Some(threads) = args.threads {
+        settings.threads = Some(threads.max(1));
+    }
+    if args.quiet {
+        settings.streams.render = false;
+        settings.streams.warning = false;
+        settings.streams.statistics = false;
+        settings.streams.debug = false;
+    }
+    if let Some(threshold) = args.antialias.antialias {
+        settings.antialias = true;
+        settings.antialias_threshold = threshold;
+        if let Some(method) = args.antialias.aa_method {
+            settings.sampling_method = method;
+        }
+        if let Some(depth) = args.antialias.aa_depth {
+            settings.antialias_depth = depth;
+        }
+        if let Some(jitter) = args.antialias.jitter {
+            settings.jitter = jitter > 0.0;
+            settings.jitter_amount = jitter;
+        }
+    }
+    if let Some((first, last)) = args.frames {
+        settings.initial_frame = Some(first);
+        settings.final_frame = Some(last);
+    }
+    if let Some(frame) = args.frame {
+        if settings.final_frame.is_none() {
+            return Err("--frame N needs an animation: give --frames A..B or +KFF".into());
+        }
+        settings.subset_start = Some(frame as f64);
+        settings.subset_end = Some(frame as f64);
+    }
+    Ok(settings)
+}
+
+/// `--define NAME=EXPR`.
+fn parse_define(text: &str) -> Result<(String, String), String> {
+    let (name, value) = text
+        .split_once('=')
+        .ok_or_else(|| format!("--define `{text}`: expected NAME=EXPR"))?;
+    let name = name.trim();
+    let valid = name
+        .chars()
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !valid || value.trim().is_empty() {
+        return Err(format!(
+            "--define `{text}`: expected NAME=EXPR with an identifier and a value"
+        ));
+    }
+    Ok((name.to_string(), value.trim().to_string()))
+}
+
+/// Evaluates on a thread with a large stack, so deep recursion cannot overflow.
+fn evaluate(path: &Path, options: EvalOptions) -> Evaluated {
+    let path = path.to_path_buf();
+    let worker = std::thread::Builder::new()
+        .stack_size(EVALUATION_STACK_BYTES)
+        .spawn(move || evaluate_file(&path, &options));
+    match worker.map(|handle| handle.join()) {
+        Ok(Ok(evaluated)) => evaluated,
+        _ => {
+            eprintln!("durer: internal error while evaluating the scene");
+            std::process::exit(EXIT_SCENE_ERROR);
+        }
+    }
+}
+
+/// Prints the diagnostics (warnings only when `warnings`); true when one is an error.
+fn print_diagnostics(evaluated: &Evaluated, warnings: bool) -> bool {
+    let mut failed = false;
+    let colour = std::io::stderr().is_terminal();
+    for diagnostic in &evaluated.diagnostics {
+        if diagnostic.severity == Severity::Error {
+            failed = true;
+        } else if !warnings {
+            continue;
+        }
+        let report = durer::report::to_report(diagnostic, &evaluated.sources);
+        if colour {
+            eprintln!("{:?}", miette::Report::new(report));
+        } else {
+            eprint!(
+                "{}",
+                durer::report::render_plain(diagnostic, &evaluated.sources)
+            );
+        }
+    }
+    failed
+}
+
+fn check(args: SceneArgs) -> i32 {
+    let start = Instant::now();
+    let mut defines = Vec::new();
+    for define in &args.defines {
+        match parse_define(define) {
+            Ok(define) => defines.push(define),
+            Err(message) => {
+                eprintln!("durer: {message}");
+                return EXIT_USAGE;
+            }
+        }
+    }
+    let options = EvalOptions {
+        include_paths: args.include_paths.clone(),
+        image_width: args.width,
+        image_height: args.height,
+        defines,
+        ..EvalOptions::default()
+    };
+    let evaluated = evaluate(&args.scene, options);
+    let failed = print_diagnostics(&evaluated, true);
+    let Some(mut scene) = evaluated.scene.filter(|_| !failed) else {
+        return EXIT_SCENE_ERROR;
+    };
+    let object_count = scene.objects.len();
+    let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+    println!(
+        "{}: ok, {} objects ({} primitives), {} lights, {:.3} s",
+        args.scene.display(),
+        object_count,
+        world.object_count(),
+        scene.lights.len(),
+        start.elapsed().as_secs_f64()
+    );
+    0
+}
