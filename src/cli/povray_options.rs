@@ -1049,8 +1049,18 @@ impl OptionReader {
                 continue;
             }
             if line.starts_with('+') || line.starts_with('-') {
+                // Switches; povray also takes `Key=value` and INI names among them
+                // (its own splinefollow.ini: `+kf0.1666 +kff20 +kc declare=fp=0`).
                 for word in split_words(line) {
-                    self.switch(&word, &origin)?;
+                    if word.starts_with('+') || word.starts_with('-') {
+                        self.switch(&word, &origin)?;
+                    } else if let Some((key, value)) =
+                        word.split_once('=').filter(|_| looks_like_key(&word))
+                    {
+                        self.key(key, value, &origin)?;
+                    } else {
+                        self.ini(&word, &origin)?;
+                    }
                 }
             } else if let Some((key, value)) = line.split_once('=') {
                 self.key(key, value, &origin)?;

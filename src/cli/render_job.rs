@@ -278,7 +278,7 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
                             "frame {} ({} of {frame_count}, clock {}): {name}, {}x{} in {:.3} s",
                             frame.frame_number,
                             index + 1,
-                            frame.clock,
+                            trimmed(frame.clock),
                             settings.width,
                             settings.height,
                             time.as_secs_f64()
@@ -346,6 +346,17 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
         }
     }
     0
+}
+
+/// A clock value for messages: at most 6 decimals, trailing zeros dropped.
+fn trimmed(value: f64) -> String {
+    let text = format!("{value:.6}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.into()
+    }
 }
 
 enum FrameOutcome {

@@ -295,35 +295,35 @@ pub fn encode(image: &RenderedImage, options: &OutputOptions) -> io::Result<Vec<
             return Ok(with_colour_space_chunks(encoded));
         }
         FileFormat::Ppm => {
-            use image::codecs::pnm::{PnmEncoder, PnmSubtype, SampleEncoding};
-            let wide = options.bits > 8;
             let three = OutputOptions {
                 alpha: false,
                 ..*options
             };
-            let samples = image.samples(
-                3,
-                if wide {
-                    options.bits
-                } else {
-                    options.bits.min(8)
-                },
-                &three,
-            );
-            let data: Vec<u8> = if wide {
-                samples.iter().flat_map(|v| v.to_ne_bytes()).collect()
+            if options.bits > 8 {
+                // Binary PPM with 16-bit samples (maximum 65535, big-endian). image's PNM
+                // encoder writes 16-bit samples only as PAM, not as P6, so the three header
+                // lines are written here.
+                let max = (1u32 << options.bits.min(16)) - 1;
+                encoded.extend_from_slice(format!("P6\n{width} {height}\n{max}\n").as_bytes());
+                let bits = options.bits;
+                let samples = image.samples(3, bits, &three);
+                // samples() scales into the 16-bit container; PPM keeps the file's own maximum.
+                for value in samples {
+                    let own = (f64::from(value) * f64::from(max) / 65535.0 + 0.5).floor() as u16;
+                    encoded.extend_from_slice(&own.to_be_bytes());
+                }
             } else {
-                samples.iter().map(|&v| v as u8).collect()
-            };
-            let kind = if wide {
-                ExtendedColorType::Rgb16
-            } else {
-                ExtendedColorType::Rgb8
-            };
-            PnmEncoder::new(&mut encoded)
-                .with_subtype(PnmSubtype::Pixmap(SampleEncoding::Binary))
-                .write_image(&data, width, height, kind)
-                .map_err(failed)?;
+                use image::codecs::pnm::{PnmEncoder, PnmSubtype, SampleEncoding};
+                let data: Vec<u8> = image
+                    .samples(3, options.bits.min(8), &three)
+                    .into_iter()
+                    .map(|v| v as u8)
+                    .collect();
+                PnmEncoder::new(&mut encoded)
+                    .with_subtype(PnmSubtype::Pixmap(SampleEncoding::Binary))
+                    .write_image(&data, width, height, ExtendedColorType::Rgb8)
+                    .map_err(failed)?;
+            }
         }
         FileFormat::Tga | FileFormat::TgaCompressed => {
             use image::codecs::tga::TgaEncoder;

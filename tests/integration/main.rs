@@ -5,6 +5,7 @@ mod cli;
 mod diagnostics;
 mod includes;
 mod language;
+mod povray_cli;
 mod reference_images;
 mod robustness;
 

@@ -35,9 +35,9 @@ const RENDER_TIMEOUT: Duration = Duration::from_secs(300);
 
 /// The metric for one pair of equally sized images.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Comparison {
+pub(crate) struct Comparison {
     /// Fraction of pixels with a channel differing by more than `PIXEL_THRESHOLD`.
-    fraction_over: f64,
+    pub(crate) fraction_over: f64,
     /// Mean absolute difference of 4x4-block channel means, in 0..255.
     block_diff: f64,
     /// Largest channel difference.
@@ -55,7 +55,7 @@ impl Comparison {
 }
 
 /// Compares two images; `None` when their sizes differ.
-fn compare(a: &RgbImage, b: &RgbImage) -> Option<Comparison> {
+pub(crate) fn compare(a: &RgbImage, b: &RgbImage) -> Option<Comparison> {
     if a.dimensions() != b.dimensions() {
         return None;
     }
@@ -146,7 +146,7 @@ fn tolerance_override(source: &str) -> Result<Option<f64>, String> {
 }
 
 /// durer's command-line options for the scene's `// povray-options:` line (none without
-/// one); `Err` for a POV-Ray option that has no durer equivalent.
+/// one): POV-Ray's own switches, which `durer render` takes as they are.
 fn durer_options(source: &str) -> Result<Vec<String>, String> {
     let Some(line) = source
         .lines()
@@ -154,34 +154,14 @@ fn durer_options(source: &str) -> Result<Vec<String>, String> {
     else {
         return Ok(Vec::new());
     };
-    let mut options = Vec::new();
-    let mut add = |flag: &str, value: &str| {
-        options.push(flag.to_string());
-        options.push(value.to_string());
-    };
-    for word in line.split_whitespace() {
-        if let Some(method) = word.strip_prefix("+AM") {
-            add("--aa-method", method);
-        } else if let Some(threshold) = word.strip_prefix("+A") {
-            add(
-                "--antialias",
-                if threshold.is_empty() {
-                    "0.3"
-                } else {
-                    threshold
-                },
-            );
-        } else if let Some(depth) = word.strip_prefix("+R") {
-            add("--aa-depth", depth);
-        } else if let Some(amount) = word.strip_prefix("+J") {
-            add("--jitter", if amount.is_empty() { "1" } else { amount });
-        } else if word == "-J" {
-            add("--jitter", "0");
-        } else if word != "-A" {
-            return Err(format!("povray option `{word}` has no durer equivalent"));
-        }
+    let words: Vec<String> = line.split_whitespace().map(str::to_string).collect();
+    match words
+        .iter()
+        .find(|w| !w.starts_with('+') && !w.starts_with('-'))
+    {
+        Some(word) => Err(format!("`{word}` in povray-options is not a switch")),
+        None => Ok(words),
     }
-    Ok(options)
 }
 
 /// The reference, darkened, with pixels over the threshold in red.
@@ -618,25 +598,14 @@ fn tolerance_comment_is_read() {
 }
 
 #[test]
-fn povray_options_become_durer_options() {
+fn povray_options_are_passed_to_durer_as_they_are() {
     let scene = "// povray-options: +A0.1 +AM2 +R4 -J\nsphere { 0, 1 }\n";
-    let expected = [
-        "--antialias",
-        "0.1",
-        "--aa-method",
-        "2",
-        "--aa-depth",
-        "4",
-        "--jitter",
-        "0",
-    ];
-    assert_eq!(durer_options(scene).unwrap(), expected);
     assert_eq!(
-        durer_options("// povray-options: +A +J0.5\n").unwrap(),
-        ["--antialias", "0.3", "--jitter", "0.5"]
+        durer_options(scene).unwrap(),
+        ["+A0.1", "+AM2", "+R4", "-J"]
     );
     assert!(durer_options("sphere { 0, 1 }\n").unwrap().is_empty());
-    assert!(durer_options("// povray-options: +Q3\n").is_err());
+    assert!(durer_options("// povray-options: +A0.3 scene.ini\n").is_err());
 }
 
 #[test]
