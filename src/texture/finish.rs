@@ -64,7 +64,7 @@ pub struct Subsurface {
     /// scene units by `mm_per_unit`); POV-Ray's example gives marble Jensen et al.'s
     /// `1 / (σ's + σa)`.
     pub translucency: DVec3,
-    /// The Henyey-Greenstein mean cosine of single scattering per channel (default 0).
+    /// `anisotropy` (default 0): read, and like POV-Ray 3.7 (measured) not used.
     pub anisotropy: DVec3,
 }
 
