@@ -272,7 +272,7 @@ impl<'a> SubsurfaceShader<'a> {
                 continue;
             };
             let cosine = normal.dot(arriving.direction);
-            if !(cosine > 0.0) {
+            if cosine.is_nan() || cosine <= 0.0 {
                 continue;
             }
             let array = light
@@ -290,11 +290,7 @@ impl<'a> SubsurfaceShader<'a> {
     fn diffuse(&self, at: &SubsurfacePoint, free_path: DVec3, seed: u64) -> DVec3 {
         let a = boundary(at.ior);
         let channels: [Channel; 3] = std::array::from_fn(|c| {
-            Channel::new(
-                channel_of(at.reflectance, c),
-                channel_of(free_path, c),
-                a,
-            )
+            Channel::new(channel_of(at.reflectance, c), channel_of(free_path, c), a)
         });
         let active = || channels.iter().filter(|c| c.reflectance > 0.0);
         if active().next().is_none() {
@@ -309,7 +305,9 @@ impl<'a> SubsurfaceShader<'a> {
             .fold(0.0, f64::max)
             .max(longest);
         let stretch = (1.0 + reach / (0.05 * shortest)).ln().max(1e-9);
-        let radius_at = |j: usize| reach * ((stretch * j as f64 / BINS as f64).exp() - 1.0) / (stretch.exp() - 1.0);
+        let radius_at = |j: usize| {
+            reach * ((stretch * j as f64 / BINS as f64).exp() - 1.0) / (stretch.exp() - 1.0)
+        };
         // Per bin: the sampling mass (the channels' profiles, each normalised) and each
         // channel's integral.
         let mut radii = [0.0; BINS + 1];
@@ -337,7 +335,7 @@ impl<'a> SubsurfaceShader<'a> {
             cumulative[j + 1] = cumulative[j] + m;
         }
         let total_mass = cumulative[BINS];
-        if !(total_mass > 0.0) {
+        if total_mass.is_nan() || total_mass <= 0.0 {
             return DVec3::ZERO;
         }
         let scale: [f64; 3] = std::array::from_fn(|c| {
@@ -361,7 +359,8 @@ impl<'a> SubsurfaceShader<'a> {
             let fraction = ((u - cumulative[j]) / mass[j]).clamp(0.0, 1.0);
             let r = radii[j] + fraction * width;
             let density = mass[j] / (total_mass * width);
-            let angle = 2.0 * PI * (f64::from(k) * 0.618_033_988_749_894_8 + unit(mix64(bits))).fract();
+            let angle =
+                2.0 * PI * (f64::from(k) * 0.618_033_988_749_894_8 + unit(mix64(bits))).fract();
             let base = at.point + r * (angle.cos() * t1 + angle.sin() * t2);
             let height = r + 1e-3;
             let probe = Ray {
@@ -373,9 +372,9 @@ impl<'a> SubsurfaceShader<'a> {
             let mut start = 0.0;
             let mut limit = 2.0 * height;
             for _ in 0..MAX_CROSSINGS {
-                let Some(found) =
-                    self.world
-                        .first_hit_skipping(&probe, start, limit, &|m| m != at.material)
+                let Some(found) = self
+                    .world
+                    .first_hit_skipping(&probe, start, limit, &|m| m != at.material)
                 else {
                     break;
                 };
@@ -421,8 +420,8 @@ impl<'a> SubsurfaceShader<'a> {
         }
         let mut active = [0usize; 3];
         let mut active_count = 0;
-        for c in 0..3 {
-            if sigma_t[c] > 0.0 {
+        for (c, &t) in sigma_t.iter().enumerate() {
+            if t > 0.0 {
                 active[active_count] = c;
                 active_count += 1;
             }
@@ -450,7 +449,7 @@ impl<'a> SubsurfaceShader<'a> {
             let u = (f64::from(k) + unit(bits)) / f64::from(count);
             let chosen = active[k as usize % active.len()];
             let s = -(1.0 - u).ln() / sigma_t[chosen];
-            if !(s < exit) {
+            if s.is_nan() || s >= exit {
                 continue;
             }
             let density: f64 = active
@@ -458,7 +457,7 @@ impl<'a> SubsurfaceShader<'a> {
                 .map(|&c| sigma_t[c] * (-sigma_t[c] * s).exp())
                 .sum::<f64>()
                 / active.len() as f64;
-            if !(density > 0.0) {
+            if density.is_nan() || density <= 0.0 {
                 continue;
             }
             let inside = at.point + s * inward;
@@ -480,7 +479,7 @@ impl<'a> SubsurfaceShader<'a> {
                     continue;
                 };
                 let cos_in = entry.normal.dot(towards.direction);
-                if !(cos_in > 0.0) {
+                if cos_in.is_nan() || cos_in <= 0.0 {
                     continue;
                 }
                 let Some(arriving) = incoming(&light.source, entry.point) else {
@@ -516,5 +515,53 @@ impl<'a> SubsurfaceShader<'a> {
             }
         }
         sum / f64::from(count)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reduced_albedo_inverts_the_total_reflectance() {
+        for eta in [1.0, 1.3, 1.5, 2.0] {
+            let a = boundary(eta);
+            for reflectance in [0.05, 0.2, 0.5, 0.83, 0.99] {
+                let albedo = reduced_albedo(reflectance, a);
+                assert!((total_reflectance(albedo, a) - reflectance).abs() < 1e-5);
+            }
+        }
+        // Marble (Jensen et al.'s table: Rd 0.83 with σ's 2.19, σa 0.0021 per mm) at ior 1.5.
+        let albedo = reduced_albedo(0.83, boundary(1.5));
+        assert!((albedo - 2.19 / 2.1921).abs() < 2e-3, "{albedo}");
+    }
+
+    #[test]
+    fn the_dipole_profile_integrates_to_the_total_reflectance() {
+        let a = boundary(1.5);
+        let channel = Channel::new(0.5, 0.1, a);
+        let steps = 200_000;
+        let reach = 40.0;
+        let integral: f64 = (0..steps)
+            .map(|i| {
+                let r = (f64::from(i) + 0.5) / f64::from(steps) * reach;
+                2.0 * PI * r * channel.rd(r) * reach / f64::from(steps)
+            })
+            .sum();
+        assert!((integral - 0.5).abs() < 2e-3, "{integral}");
+    }
+
+    #[test]
+    fn degenerate_channels_scatter_nothing() {
+        let a = boundary(1.5);
+        for (reflectance, path) in [
+            (0.0, 1.0),
+            (0.5, 0.0),
+            (f64::NAN, 1.0),
+            (0.5, f64::INFINITY),
+        ] {
+            assert_eq!(Channel::new(reflectance, path, a).rd(0.3), 0.0);
+        }
+        assert!(Channel::new(1.5, 1.0, a).rd(0.3).is_finite());
     }
 }

@@ -619,8 +619,12 @@ impl<'a> Tracer<'a> {
                     finish: &classic,
                     ..sample
                 };
-                let mut local =
-                    local_light(&without_diffuse, &self.lights, settings.ambient_light, self.world);
+                let mut local = local_light(
+                    &without_diffuse,
+                    &self.lights,
+                    settings.ambient_light,
+                    self.world,
+                );
                 let shader = SubsurfaceShader::new(
                     settings.subsurface,
                     settings.mm_per_unit,

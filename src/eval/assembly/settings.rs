@@ -84,9 +84,11 @@ impl Evaluator {
             match &item {
                 Item::Keyword(word, _) => match &**word {
                     "samples" => {
-                        subsurface.diffuse_samples = sample_count(self.expect_float(stream, "a count")?);
+                        subsurface.diffuse_samples =
+                            sample_count(self.expect_float(stream, "a count")?);
                         self.skip_comma(stream)?;
-                        subsurface.single_samples = sample_count(self.expect_float(stream, "a count")?);
+                        subsurface.single_samples =
+                            sample_count(self.expect_float(stream, "a count")?);
                     }
                     "radiosity" => subsurface.radiosity = self.optional_bool(stream)?,
                     _ => return Err(self.unexpected_in(&item, "subsurface")),
