@@ -35,6 +35,7 @@ pub mod radiosity;
 pub mod radiosity_index;
 pub mod shading;
 pub mod shadows;
+pub mod subsurface;
 pub mod surface;
 pub mod trace;
 

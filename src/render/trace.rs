@@ -51,12 +51,16 @@ use super::optics::{
 use super::photons::PhotonMap;
 use super::radiosity::{Gathered, Radiosity};
 use super::shading::{local_light, SurfaceSample};
+use super::subsurface::{SubsurfacePoint, SubsurfaceShader};
 use super::surface::{for_each_component, pigment_at_hit};
 use crate::accel::counters::{self, Counter};
 use crate::geometry::{Material, Ray, SurfaceHit, World};
 use crate::texture::normal::perturbed_normal_at;
 use crate::texture::pigment::hit_surface;
-use crate::{scene::Scene, texture::Texture};
+use crate::{
+    scene::Scene,
+    texture::{finish::Finish, Texture},
+};
 use glam::{DVec3, DVec4};
 use std::cell::Cell;
 
@@ -666,7 +670,51 @@ impl<'a> Tracer<'a> {
             light_group: material.light_group,
         };
         let settings = &self.scene.settings;
-        let mut local = local_light(&sample, &self.lights, settings.ambient_light, self.world);
+        let subsurface = match (&settings.subsurface, &texture.finish.subsurface) {
+            (Some(_), Some(block)) if texture.finish.diffuse != 0.0 => Some(block),
+            _ => None,
+        };
+        let mut local = match subsurface {
+            None => local_light(&sample, &self.lights, settings.ambient_light, self.world),
+            Some(block) => {
+                // The light sources' diffuse light is scattered under the surface instead.
+                let classic = Finish {
+                    diffuse: 0.0,
+                    diffuse_back: 0.0,
+                    ..Finish::clone(&texture.finish)
+                };
+                let without_diffuse = SurfaceSample {
+                    finish: &classic,
+                    ..sample
+                };
+                let mut local = local_light(
+                    &without_diffuse,
+                    &self.lights,
+                    settings.ambient_light,
+                    self.world,
+                );
+                let shader = SubsurfaceShader::new(
+                    settings.subsurface,
+                    settings.mm_per_unit,
+                    self.world,
+                    &self.lights,
+                );
+                if let Some(shader) = shader {
+                    local.body += shader.scattered(&SubsurfacePoint {
+                        point: hit.point,
+                        normal,
+                        facing: surface.normal,
+                        view: ray.direction,
+                        reflectance: pigment.rgb_vec() * texture.finish.diffuse,
+                        ior: sanitise_ior(material.interior.ior),
+                        material: hit.material,
+                        light_group: material.light_group,
+                        subsurface: block,
+                    });
+                }
+                local
+            }
+        };
         if self.radiosity.is_some() && texture.finish.diffuse != 0.0 {
             let radiosity = self.scene.settings.radiosity.as_ref();
             let oriented = if radiosity.is_some_and(|r| r.use_normal) {

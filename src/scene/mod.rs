@@ -95,6 +95,33 @@ pub struct GlobalSettings {
     pub radiosity: Option<RadiositySettings>,
     /// The `photons { }` block, when given: caustics from photon mapping.
     pub photons: Option<PhotonSettings>,
+    /// `mm_per_unit` (default 10): how many millimetres one scene unit stands for, which
+    /// scales the `translucency` of subsurface finishes.
+    pub mm_per_unit: f64,
+    /// The `subsurface { }` block, when given: finishes with `subsurface` scatter light under
+    /// their surface.
+    pub subsurface: Option<SubsurfaceSettings>,
+}
+
+/// `global_settings { subsurface { samples D, S radiosity B } }`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SubsurfaceSettings {
+    /// Samples of the diffuse (dipole) part per shaded point (default 50).
+    pub diffuse_samples: u32,
+    /// Samples of the single-scattering part per shaded point (default 50).
+    pub single_samples: u32,
+    /// `radiosity`: whether radiosity light is scattered too (read; not used).
+    pub radiosity: bool,
+}
+
+impl Default for SubsurfaceSettings {
+    fn default() -> Self {
+        SubsurfaceSettings {
+            diffuse_samples: 50,
+            single_samples: 50,
+            radiosity: false,
+        }
+    }
 }
 
 impl Default for GlobalSettings {
@@ -114,6 +141,8 @@ impl Default for GlobalSettings {
             wave_sources: crate::texture::pattern::SceneWaveSources::default(),
             radiosity: None,
             photons: None,
+            mm_per_unit: 10.0,
+            subsurface: None,
         }
     }
 }

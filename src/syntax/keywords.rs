@@ -21,6 +21,7 @@ pub const ALL: &[&str] = &[
     "always_sample",
     "ambient",
     "ambient_light",
+    "anisotropy",
     "angle",
     "aoi",
     "aperture",

@@ -52,6 +52,20 @@ pub struct Finish {
     pub conserve_energy: bool,
     /// `irid { .. }`: thin-film interference colours.
     pub irid: Option<Irid>,
+    /// `subsurface { translucency .. }`: light scattered under the surface (used only when
+    /// `global_settings` has a `subsurface` block).
+    pub subsurface: Option<Subsurface>,
+}
+
+/// `subsurface { translucency C anisotropy G }` in a finish.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Subsurface {
+    /// The reduced mean free path `1 / σ't` per colour channel, in millimetres (scaled to
+    /// scene units by `mm_per_unit`); POV-Ray's example gives marble Jensen et al.'s
+    /// `1 / (σ's + σa)`.
+    pub translucency: DVec3,
+    /// `anisotropy` (default 0): read, and like POV-Ray 3.7 (measured) not used.
+    pub anisotropy: DVec3,
 }
 
 impl Default for Finish {
@@ -76,6 +90,7 @@ impl Default for Finish {
             reflect_metallic: 0.0,
             conserve_energy: false,
             irid: None,
+            subsurface: None,
         }
     }
 }

@@ -15,7 +15,7 @@ use crate::eval::{EvalResult, Evaluator};
 use crate::syntax::ast::{BlockHead, Item};
 use crate::{
     scene::Interior,
-    texture::finish::{Finish, Irid},
+    texture::finish::{Finish, Irid, Subsurface},
 };
 use glam::DVec3;
 use std::rc::Rc;
@@ -103,10 +103,9 @@ impl Evaluator {
                             continue;
                         }
                         if &**w == "subsurface" {
-                            self.runtime.warn(
-                                block.head_span,
-                                "`subsurface` is not supported yet; it is ignored",
-                            );
+                            let mut body = Stream::new(block.body.clone());
+                            finish.subsurface =
+                                Some(self.eval_finish_subsurface(&mut body, finish.subsurface)?);
                             continue;
                         }
                     }
@@ -194,6 +193,31 @@ impl Evaluator {
             }
         }
         Ok(irid)
+    }
+
+    /// `subsurface { translucency C anisotropy G }` in a finish (both colours or floats;
+    /// an empty block is allowed, as POV-Ray parses it).
+    fn eval_finish_subsurface(
+        &mut self,
+        stream: &mut Stream,
+        base: Option<Subsurface>,
+    ) -> EvalResult<Subsurface> {
+        let mut subsurface = base.unwrap_or(Subsurface {
+            translucency: DVec3::ZERO,
+            anisotropy: DVec3::ZERO,
+        });
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, _) => match &**word {
+                    "translucency" => subsurface.translucency = self.expect_rgb(stream)?,
+                    "anisotropy" => subsurface.anisotropy = self.expect_rgb(stream)?,
+                    _ => return Err(self.unexpected_in(&item, "subsurface")),
+                },
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "subsurface")),
+            }
+        }
+        Ok(subsurface)
     }
 
     fn expect_rgb(&mut self, stream: &mut Stream) -> EvalResult<DVec3> {

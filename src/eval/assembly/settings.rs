@@ -39,8 +39,10 @@ impl Evaluator {
                         self.scene.settings.irid_wavelength =
                             self.to_colour(value, span)?.rgb_vec();
                     }
-                    "charset" | "max_intersections" | "hf_gray_16" | "mm_per_unit"
-                    | "subsurface" => {
+                    "mm_per_unit" => {
+                        self.scene.settings.mm_per_unit = self.expect_float(stream, "a float")?
+                    }
+                    "charset" | "max_intersections" | "hf_gray_16" | "subsurface" => {
                         self.runtime.warn(
                             *span,
                             format!("global setting `{word}` is not supported yet; it is ignored"),
@@ -61,8 +63,8 @@ impl Evaluator {
                         let mut body = Stream::new(block.body.clone());
                         self.eval_global_photons(&mut body, block.head_span)?;
                     } else if name == "subsurface" {
-                        let message = format!("`{name}` is not supported yet; it is ignored");
-                        self.runtime.warn(block.head_span, message);
+                        let mut body = Stream::new(block.body.clone());
+                        self.eval_global_subsurface(&mut body)?;
                     } else {
                         return Err(self.unexpected_in(&item, "global_settings"));
                     }
@@ -72,5 +74,39 @@ impl Evaluator {
             }
         }
         Ok(())
+    }
+
+    /// `subsurface { samples D, S radiosity B }`: both sample counts are required (POV-Ray
+    /// rejects `samples D` alone); counts are clamped to 1..=100000 (0 turns a part off).
+    fn eval_global_subsurface(&mut self, stream: &mut Stream) -> EvalResult<()> {
+        let mut subsurface = self.scene.settings.subsurface.unwrap_or_default();
+        while let Some(item) = self.next_item(stream)? {
+            match &item {
+                Item::Keyword(word, _) => match &**word {
+                    "samples" => {
+                        subsurface.diffuse_samples =
+                            sample_count(self.expect_float(stream, "a count")?);
+                        self.skip_comma(stream)?;
+                        subsurface.single_samples =
+                            sample_count(self.expect_float(stream, "a count")?);
+                    }
+                    "radiosity" => subsurface.radiosity = self.optional_bool(stream)?,
+                    _ => return Err(self.unexpected_in(&item, "subsurface")),
+                },
+                Item::Comma(_) => {}
+                _ => return Err(self.unexpected_in(&item, "subsurface")),
+            }
+        }
+        self.scene.settings.subsurface = Some(subsurface);
+        Ok(())
+    }
+}
+
+/// A sample count as the renderer uses it: non-finite or negative values give none.
+fn sample_count(value: f64) -> u32 {
+    if value.is_finite() {
+        value.clamp(0.0, 100_000.0) as u32
+    } else {
+        0
     }
 }
