@@ -243,6 +243,7 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
         antialias,
         region,
         alpha: settings.alpha,
+        quality: durer::render::quality::Quality(settings.quality),
     };
     let mut summary = super::stats::Summary::default();
     let start = Instant::now();

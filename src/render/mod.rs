@@ -31,6 +31,7 @@ pub mod mesh_camera;
 pub mod optics;
 pub mod output;
 pub mod photons;
+pub mod quality;
 pub mod radiosity;
 pub mod radiosity_index;
 pub mod shading;
@@ -68,6 +69,8 @@ pub struct RenderOptions {
     /// Compute coverage for an alpha channel: the background's share of each pixel (by
     /// the background's filter and transmit) leaves the colour and lowers the coverage.
     pub alpha: bool,
+    /// What is computed (`+Q`; [`quality`]).
+    pub quality: quality::Quality,
 }
 
 impl RenderOptions {
@@ -79,6 +82,7 @@ impl RenderOptions {
             antialias: None,
             region: None,
             alpha: false,
+            quality: quality::Quality::default(),
         }
     }
 }
@@ -206,8 +210,11 @@ pub fn render_image(
         .as_ref()
         .filter(|_| camera.has_focal_blur());
     let mesh = scene.camera.mesh.as_deref();
-    let tracer =
-        Tracer::new(scene, world).with_alpha(options.alpha && blur.is_none() && mesh.is_none());
+    let reduced = options.quality.reduced(scene);
+    let scene = reduced.as_ref().unwrap_or(scene);
+    let tracer = Tracer::new(scene, world)
+        .with_alpha(options.alpha && blur.is_none() && mesh.is_none())
+        .with_quality(options.quality);
     let point = |x: f64, y: f64| {
         camera
             .ray_at(x, y)

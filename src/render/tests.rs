@@ -86,6 +86,7 @@ fn centre_pixel(scene: &Scene) -> [u8; 3] {
         antialias: None,
         region: None,
         alpha: false,
+        quality: Default::default(),
     };
     render(scene, &world, &options, &|_| {})
         .pixel(1, 1)
@@ -403,6 +404,7 @@ fn progress_counts_every_row() {
         antialias: None,
         region: None,
         alpha: false,
+        quality: Default::default(),
     };
     let image = render(&busy, &world, &options, &|n| {
         rows.fetch_add(n, Ordering::Relaxed);
@@ -430,6 +432,7 @@ fn hostile_values_do_not_panic() {
             antialias: None,
             region: None,
             alpha: false,
+            quality: Default::default(),
         },
         &|_| {},
     );
@@ -443,6 +446,7 @@ fn hostile_values_do_not_panic() {
             antialias: None,
             region: None,
             alpha: false,
+            quality: Default::default(),
         },
         &|_| {},
     );
@@ -478,6 +482,7 @@ fn hostile_values_do_not_panic() {
             antialias: None,
             region: None,
             alpha: false,
+            quality: Default::default(),
         },
         &|_| {},
     );

@@ -49,6 +49,7 @@ use super::optics::{
     SURFACE_EPSILON,
 };
 use super::photons::PhotonMap;
+use super::quality::Quality;
 use super::radiosity::{Gathered, Radiosity};
 use super::shading::{local_light, SurfaceSample};
 use super::subsurface::{SubsurfacePoint, SubsurfaceShader};
@@ -208,6 +209,8 @@ pub struct Tracer<'a> {
     /// Rays keep count of the background they see, for an alpha channel (`+UA`): the
     /// background then adds only its opaque part to the colour.
     alpha: bool,
+    /// What is computed (`+Q`).
+    quality: Quality,
 }
 
 /// What a ray is for, which decides the objects it can see.
@@ -261,7 +264,16 @@ impl<'a> Tracer<'a> {
                 .map(|radiosity| Radiosity::new(radiosity, scene.camera.location)),
             photons: PhotonMap::build(scene, world),
             alpha: false,
+            quality: Quality::default(),
         }
+    }
+
+    /// This tracer at a quality level (the scene already reduced by [`Quality::reduced`]):
+    /// leaves out media in objects, transparency and mirror reflection as the level says.
+    pub fn with_quality(mut self, quality: Quality) -> Tracer<'a> {
+        self.quality = quality;
+        self.any_media &= quality.media_and_global_light();
+        self
     }
 
     /// This tracer, computing how much background each camera ray sees (for `+UA`).
@@ -651,6 +663,14 @@ impl<'a> Tracer<'a> {
     ) -> Shaded {
         let surface = hit_surface(hit.point, ray.direction, hit.normal);
         let pigment = pigment_at_hit(&texture.pigment, hit, &surface);
+        if self.quality.colours_only() {
+            return Shaded {
+                colour: pigment.rgb_vec(),
+                through: DVec3::ZERO,
+                background: 0.0,
+                continued: None,
+            };
+        }
         // Whether the ray goes into the hit object's own volume: by the objects it is known
         // to be in, not by the side of the surface, so that a subtracted child's surface
         // (an air bubble cut out of glass) is entered from the glass and left into it, as
@@ -768,11 +788,15 @@ impl<'a> Tracer<'a> {
         };
         let finish = &texture.finish;
         let cos_incidence = -ray.direction.dot(normal);
-        let mut reflection = reflection_colour(finish, cos_incidence, ratio, pigment.rgb_vec());
+        let mut reflection = if self.quality.reflection() {
+            reflection_colour(finish, cos_incidence, ratio, pigment.rgb_vec())
+        } else {
+            DVec3::ZERO
+        };
         let mut reflection_weight = weight.reflected(reflection);
 
         // Light coming through the surface.
-        let mut pass = if passes_light {
+        let mut pass = if passes_light && self.quality.transparency() {
             transmission(pigment)
         } else {
             DVec3::ZERO

@@ -124,6 +124,7 @@ fn render_scene(
                 antialias: None,
                 region: None,
                 alpha: false,
+                quality: Default::default(),
             };
             Ok(durer::render::render(&scene, &world, &options, &|_| {}))
         }
@@ -1016,6 +1017,7 @@ fn stdlib_scene_renders_like_povray(name: &str, installed: bool) {
         antialias: None,
         region: None,
         alpha: false,
+        quality: Default::default(),
     };
     let ours = durer::render::render(&scene, &world, &options, &|_| {});
     let over = reference
