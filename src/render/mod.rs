@@ -1,8 +1,9 @@
 //! The recursive ray tracer: camera rays, shading, lights, output image.
 //!
 //! In: a [`Scene`] (camera, lights, background, global settings) and the [`World`] built
-//! from it. Out: an 8-bit [`Image`] with the values POV-Ray 3.7 writes to its PNG, and
-//! [`write_png_atomic`] to store it. Holds: the image does not depend on the number of
+//! from it, [`RenderOptions`] (size, region, anti-aliasing, alpha, [`quality`]). Out: a
+//! [`RenderedImage`] of traced values and coverage, which [`output`] stores in any format
+//! (or an 8-bit [`Image`] with the values POV-Ray 3.7 writes to its PNG). Holds: the image does not depend on the number of
 //! threads (rows are traced independently with rayon, nothing random, nothing shared and
 //! mutable); tracing allocates nothing per ray; no input makes it panic (non-finite values
 //! end as black pixels).
@@ -13,7 +14,7 @@
 //! dimming shadow rays), [`media`] (media along viewing rays), [`shading`] (ambient,
 //! diffuse, highlights), [`optics`] (reflection, refraction, fading inside objects),
 //! [`trace`] (transparency, refraction, reflection, trace levels), [`encoding`] (gamma and
-//! rounding to bytes) and [`output`] (PNG file). Pigments, normals and image maps are
+//! rounding to bytes) and [`output`] (image files). Pigments, normals and image maps are
 //! [`crate::texture`]'s.
 
 pub mod antialias;
