@@ -270,6 +270,11 @@ pub fn run() -> i32 {
         .collect();
     match words.first().map(String::as_str) {
         Some("render") => render_command(&words[1..], false),
+        // `-V` alone is the version (POV-Ray's `-V`, verbose off, needs a scene with it).
+        Some("-V") if words.len() == 1 => {
+            println!("durer {}", env!("CARGO_PKG_VERSION"));
+            0
+        }
         Some("check") | Some("help") | Some("--help") | Some("-h") | Some("--version") | None => {
             match Cli::try_parse() {
                 Ok(Cli {
