@@ -26,6 +26,9 @@ use std::time::Instant;
 /// Stack size of the thread that evaluates scenes: deep macro recursion needs room.
 const EVALUATION_STACK_BYTES: usize = 1 << 30;
 
+/// The largest image rendered unless `--max-pixels` allows more.
+pub const DEFAULT_MAX_PIXELS: u64 = 40_000_000;
+
 /// Exit code of a scene error.
 pub const EXIT_SCENE_ERROR: i32 = 1;
 /// Exit code of a usage error.
@@ -87,10 +90,10 @@ struct RenderArgs {
     #[arg(short = 'L', long = "library", value_name = "DIR")]
     include_paths: Vec<PathBuf>,
     /// Image width in pixels (default 320).
-    #[arg(long)]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=65535))]
     width: Option<u32>,
     /// Image height in pixels (default 240).
-    #[arg(long)]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=65535))]
     height: Option<u32>,
     /// Declare an identifier before the scene is read: NAME=EXPR, any SDL value.
     #[arg(long = "define", value_name = "NAME=EXPR")]
@@ -100,12 +103,16 @@ struct RenderArgs {
     /// the image to standard output.
     #[arg(short, long, value_name = "FILE")]
     output: Option<String>,
-    /// Number of render threads (default: all cores).
-    #[arg(long)]
-    threads: Option<usize>,
+    /// Number of render threads, 1 to 512 (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=512))]
+    threads: Option<u32>,
     /// Print nothing but errors.
     #[arg(short, long)]
     quiet: bool,
+    /// Largest image, in pixels, durer agrees to render (default 40,000,000: about
+    /// 100 bytes of memory per pixel); raise it for larger images.
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_PIXELS)]
+    max_pixels: u64,
     /// Render the animation frames A to B (POV-Ray's +KFI A +KFF B).
     #[arg(long, value_name = "A..B", value_parser = parse_frame_range)]
     frames: Option<(i64, i64)>,
@@ -370,10 +377,10 @@ fn settings_for(args: &RenderArgs, povray_mode: bool) -> Result<Settings, String
         .library_paths
         .extend(args.include_paths.iter().cloned());
     if let Some(width) = args.width {
-        settings.width = width.max(1);
+        settings.width = width;
     }
     if let Some(height) = args.height {
-        settings.height = height.max(1);
+        settings.height = height;
     }
     for define in &args.defines {
         settings.declares.push(parse_define(define)?);
@@ -382,7 +389,15 @@ fn settings_for(args: &RenderArgs, povray_mode: bool) -> Result<Settings, String
         settings.output = Some(output.clone());
     }
     if let Some(threads) = args.threads {
-        settings.threads = Some(threads.max(1));
+        settings.threads = Some(threads as usize);
+    }
+    let pixels = u64::from(settings.width) * u64::from(settings.height);
+    if pixels > args.max_pixels {
+        return Err(format!(
+            "an image of {}x{} is {pixels} pixels, more than the limit of {} (about 100 bytes \
+             of memory each); give --max-pixels {pixels} to render it anyway",
+            settings.width, settings.height, args.max_pixels
+        ));
     }
     if args.quiet {
         settings.streams.render = false;

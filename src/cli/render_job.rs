@@ -23,6 +23,8 @@ use std::time::{Duration, Instant};
 enum Destination {
     /// Files named from this base (the name without the format's extension).
     Files { base: String },
+    /// One path taken as it is: a device, a FIFO or a symbolic link (written through).
+    Exact(PathBuf),
     /// Standard output.
     Stdout,
     /// No file (`-F`, `Output_to_File=off`).
@@ -59,6 +61,14 @@ fn output_plan(settings: &Settings, scene: &Path, povray_mode: bool) -> Result<O
             Destination::Files {
                 base: base.to_string_lossy().into_owned(),
             }
+        }
+        Some(name) if names_special_file(Path::new(name)) => {
+            if settings.file_type.is_none() {
+                if let Some(named) = FileFormat::from_extension(Path::new(name)) {
+                    format = named;
+                }
+            }
+            Destination::Exact(PathBuf::from(name))
         }
         Some(name) if name.ends_with('/') || Path::new(name).is_dir() => Destination::Files {
             base: Path::new(name).join(&stem).to_string_lossy().into_owned(),
@@ -99,6 +109,13 @@ fn output_plan(settings: &Settings, scene: &Path, povray_mode: bool) -> Result<O
             file_gamma: settings.file_gamma,
         },
     })
+}
+
+/// Whether `path` is something other than a regular file or folder (a device such as
+/// `/dev/stdout`, a FIFO) or a symbolic link: it is written as named, no extension added.
+fn names_special_file(path: &Path) -> bool {
+    std::fs::symlink_metadata(path)
+        .is_ok_and(|m| m.file_type().is_symlink() || (!m.file_type().is_file() && !m.is_dir()))
 }
 
 /// A region bound in pixels from 0: `value` is a pixel number from 1, or below 1 (1 for an
@@ -256,6 +273,7 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
                 animation.digits,
                 plan.options.format.extension(),
             ))),
+            Destination::Exact(path) => Some(path.clone()),
             _ => None,
         };
         let outcome = render_frame(

@@ -411,8 +411,22 @@ pub fn encode(image: &RenderedImage, options: &OutputOptions) -> io::Result<Vec<
     Ok(encoded)
 }
 
-/// Writes `bytes` to `path` via a temporary file in the same folder and a rename.
+/// Writes `bytes` to `path` via a temporary file in the same folder and a rename. A path
+/// that is a symbolic link is written through (the file it names is replaced, the link
+/// stays); one that is not a regular file (a device such as `/dev/null`, a FIFO) is opened
+/// and written, never replaced by a file.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    if let Ok(metadata) = fs::symlink_metadata(path) {
+        if metadata.file_type().is_symlink() {
+            let target = fs::canonicalize(path)?;
+            return write_atomic(&target, bytes);
+        }
+        if !metadata.file_type().is_file() && !metadata.is_dir() {
+            let mut file = File::options().write(true).open(path)?;
+            file.write_all(bytes)?;
+            return file.flush();
+        }
+    }
     let file_name = path.file_name().ok_or_else(|| {
         io::Error::new(io::ErrorKind::InvalidInput, "the output path names no file")
     })?;
@@ -533,6 +547,32 @@ mod tests {
             height: 1,
             pixels: vec![[255, 0, 0], [0, 128, 255]],
         }
+    }
+
+    #[test]
+    #[cfg(unix)]
+    fn devices_and_links_are_written_through() {
+        let folder = test_folder("through");
+        // A device stays a device.
+        write_atomic(Path::new("/dev/null"), b"image").unwrap();
+        assert!(!fs::metadata("/dev/null").unwrap().is_file());
+        // /dev/full refuses the bytes: an error, not a regular file in its place.
+        if Path::new("/dev/full").exists() {
+            assert!(write_atomic(Path::new("/dev/full"), b"image").is_err());
+            assert!(!fs::metadata("/dev/full").unwrap().is_file());
+        }
+        // A link keeps pointing at its file, which gets the bytes.
+        let target = folder.join("target.png");
+        fs::write(&target, b"old").unwrap();
+        let link = folder.join("link.png");
+        std::os::unix::fs::symlink(&target, &link).unwrap();
+        write_atomic(&link, b"new").unwrap();
+        assert!(fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
+        assert_eq!(fs::read(&target).unwrap(), b"new");
+        fs::remove_dir_all(&folder).unwrap();
     }
 
     #[test]

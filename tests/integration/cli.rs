@@ -177,3 +177,83 @@ fn bad_antialiasing_values_are_usage_errors() {
         assert!(stderr.contains(message), "{flag} {value}: {stderr}");
     }
 }
+
+#[test]
+fn huge_images_zero_sizes_and_too_many_threads_are_usage_errors() {
+    let dir = scratch("limits");
+    let scene = dir.join("scene.pov");
+    std::fs::write(&scene, SMALL_SCENE).unwrap();
+    let run = |args: &[&str]| {
+        let mut all = vec!["render", path(&scene)];
+        all.extend_from_slice(args);
+        durer().args(all).output().unwrap()
+    };
+    let huge = run(&["--width", "60000", "--height", "60000"]);
+    assert_eq!(huge.status.code(), Some(2));
+    let text = String::from_utf8_lossy(&huge.stderr);
+    assert!(text.contains("--max-pixels 3600000000"), "{text}");
+    assert_eq!(run(&["--width", "0"]).status.code(), Some(2));
+    assert_eq!(run(&["+W0"]).status.code(), Some(2));
+    assert_eq!(run(&["--threads", "100000"]).status.code(), Some(2));
+    assert_eq!(run(&["+WT100000"]).status.code(), Some(2));
+    // Raising the limit lets a large image through the check (here cut short by -F).
+    let raised = run(&[
+        "--width",
+        "8000",
+        "--height",
+        "6000",
+        "--max-pixels",
+        "48000000",
+        "+SR1",
+        "+ER1",
+        "-F",
+        "--quiet",
+    ]);
+    assert_eq!(
+        raised.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&raised.stderr)
+    );
+}
+
+#[test]
+fn output_to_a_device_is_written_through_not_replaced() {
+    let dir = scratch("device");
+    let scene = dir.join("scene.pov");
+    std::fs::write(&scene, SMALL_SCENE).unwrap();
+    let status = durer()
+        .args([
+            "render",
+            path(&scene),
+            "--width",
+            "8",
+            "--height",
+            "6",
+            "-o",
+            "/dev/null",
+            "-q",
+        ])
+        .status()
+        .unwrap();
+    assert_eq!(status.code(), Some(0));
+    assert!(!std::fs::metadata("/dev/null").unwrap().is_file());
+    if std::path::Path::new("/dev/full").exists() {
+        let full = durer()
+            .args([
+                "render",
+                path(&scene),
+                "--width",
+                "8",
+                "--height",
+                "6",
+                "-o",
+                "/dev/full",
+            ])
+            .output()
+            .unwrap();
+        assert_eq!(full.status.code(), Some(1));
+        assert!(String::from_utf8_lossy(&full.stderr).contains("cannot write /dev/full"));
+        assert!(!std::fs::metadata("/dev/full").unwrap().is_file());
+    }
+}
