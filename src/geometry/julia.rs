@@ -5,8 +5,11 @@
 //! Holds: a local point (x, y, z) is the 4D point (x, y, z, w) on the slicing hyperplane; it
 //! is inside when none of h₀ … h₍ₙ₋₁₎ of the orbit hₖ₊₁ = f(hₖ) + p leaves the bailout
 //! sphere (radius min(1 + |p|, 2) for quaternions, 4 for hypercomplex numbers, as measured
-//! with POV-Ray's `inside`). That sphere, a hair larger, also bounds the shape; POV-Ray 3.7
-//! iterates `hypercomplex cube` as `sqr`, and so does durer. Along a ray the search steps
+//! with POV-Ray's `inside`). That sphere, a hair larger (quaternions) or smaller
+//! (hypercomplex, whose sets may reach it: a ray then starts inside, as povray's), also
+//! bounds the shape; POV-Ray 3.7 iterates `hypercomplex cube` as `sqr`, and so does durer.
+//! The public inside test reads y for z for hypercomplex functions other than `sqr` and
+//! `reciprocal`, as povray's does; the ray search uses the true point. Along a ray the search steps
 //! by the distance estimate of escaping points, never less than 1 / precision, and bisects
 //! each change between inside and outside down to [`TOLERANCE`]; the hit is the inside end.
 //! The normal is the gradient of |hₙ|² by the point, carried forward through the orbit.
@@ -97,10 +100,11 @@ impl JuliaFractal {
     }
 
     /// True when an orbit point of squared length `norm_squared` has left the bailout sphere
-    /// (or overflowed).
+    /// (an infinite one has). A NaN orbit point (ln 0, atanh 1, ...) never escapes, as in
+    /// povray (measured with `inside`: those points are inside).
     #[inline]
     fn escaped(&self, norm_squared: f64) -> bool {
-        norm_squared.is_nan() || norm_squared > self.bailout_squared
+        norm_squared > self.bailout_squared
     }
 
     /// One step of the orbit: f(h) + p.
@@ -122,8 +126,32 @@ impl JuliaFractal {
         image + self.parameter
     }
 
-    /// True when the orbit of `p` stays in the bailout sphere.
+    /// True when `p` is inside as POV-Ray 3.7's inside test answers (`inside()`, CSG): the
+    /// orbit of `p` stays in the bailout sphere. For hypercomplex functions other than `sqr`
+    /// (and `cube`, iterated as `sqr`) and `reciprocal`, povray's test reads the point's y
+    /// where z belongs, so its answer does not depend on z (measured: 1,200 random points,
+    /// 12 functions, default slice, all agree); its ray search uses the true point.
     pub fn inside(&self, p: DVec3) -> bool {
+        let reads_y_for_z = self.algebra == JuliaAlgebra::Hypercomplex
+            && !matches!(
+                self.function,
+                JuliaFunction::Sqr | JuliaFunction::Reciprocal
+            );
+        let p = if reads_y_for_z {
+            DVec3::new(p.x, p.y, p.y)
+        } else {
+            p
+        };
+        let mut start = self.lift(p);
+        if reads_y_for_z {
+            start.z = start.y;
+        }
+        self.orbit_stays_from(start)
+    }
+
+    /// True when the orbit of the local point `p` stays in the bailout sphere (the ray
+    /// search's test).
+    fn orbit_inside(&self, p: DVec3) -> bool {
         self.orbit_stays_from(self.lift(p))
     }
 
@@ -277,7 +305,15 @@ impl JuliaFractal {
         let direction = direction / length;
         // The part of the line inside the (slightly enlarged) bailout sphere.
         let half_b = origin.dot(direction);
-        let bound_squared = self.bailout_squared * (1.0 + BOUND_MARGIN).powi(2);
+        // Quaternion sets may fill their bailout sphere (p = 0 gives the unit ball), which
+        // povray shows: its search starts outside. Its hypercomplex search starts on the
+        // sphere, inside where the set reaches it, and the first crossing is then the way
+        // out (measured with `trace`: a ray inside all the way misses).
+        let margin = match self.algebra {
+            JuliaAlgebra::Quaternion => 1.0 + BOUND_MARGIN,
+            JuliaAlgebra::Hypercomplex => 1.0 - BOUND_MARGIN,
+        };
+        let bound_squared = self.bailout_squared * margin * margin;
         let discriminant = half_b * half_b - (origin.length_squared() - bound_squared);
         if discriminant.is_nan() || discriminant <= 0.0 {
             return;
@@ -324,7 +360,7 @@ impl JuliaFractal {
             let mut near = depth;
             while step > TOLERANCE {
                 step *= 0.5;
-                if self.inside(origin + direction * (near + step)) == current.inside {
+                if self.orbit_inside(origin + direction * (near + step)) == current.inside {
                     near += step;
                 }
             }

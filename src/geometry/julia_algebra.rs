@@ -134,6 +134,8 @@ pub fn complex_function(function: JuliaFunction, z: DVec2) -> (DVec2, DVec2) {
             (value, complex_div(ONE, ONE - square))
         }
         JuliaFunction::Ln => (complex_ln(z), complex_div(ONE, z)),
+        // 0^p is 0, as povray iterates it (measured with `inside`: the orbit of 0 stays).
+        JuliaFunction::Power(_) if z == DVec2::ZERO => (DVec2::ZERO, DVec2::ZERO),
         JuliaFunction::Power(exponent) => {
             // z^p = e^(p ln z); its derivative is p z^p / z.
             let value = complex_exp(complex_mul(exponent, complex_ln(z)));

@@ -1,6 +1,6 @@
-// error: 6:14 `f_comma`: POV-Ray's internal function 9 is not implemented in durer
+// error: 6:14 `f_spare`: POV-Ray's internal function 77 is not implemented in durer
 // error-text: called here
-// error-text: every function of functions.inc except f_comma (9)
+// error-text: internal(0) to internal(76) and internal(78)
 
-#declare f_comma = function { internal(9) }
-#declare V = f_comma(0, 0, 0, 1);
+#declare f_spare = function { internal(77) }
+#declare V = f_spare(0, 0, 0, 1);

@@ -229,8 +229,8 @@ impl Evaluator {
                 )
                 .with_label("called through this definition")
                 .with_help(
-                    "durer implements every function of functions.inc except f_comma (9), \
-                 f_dupin_cyclid (16), f_enneper (18) and f_helical_torus (24)",
+                    "durer implements every function of functions.inc: internal(0) to \
+                 internal(76) and internal(78)",
                 )
                 .into()
         })

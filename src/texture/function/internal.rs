@@ -4,7 +4,8 @@
 //! In: the number N and the call's arguments `x, y, z, P0, P1, ..`. Out: the function's
 //! value, each formula checked against values povray 3.7 prints with `#debug` (the table in
 //! internal_known_answers.txt). Holds: pure functions; numbers durer does not implement are
-//! refused when compiled. The formulas live in internal_shapes.rs and internal_fractals.rs.
+//! refused when compiled. The formulas live in internal_shapes.rs, internal_surfaces.rs and
+//! internal_fractals.rs.
 
 use super::internal_fractals::{
     generator_parameter, hetero_multifractal, ridge, ridged_multifractal, Multifractal,
@@ -13,6 +14,7 @@ use super::internal_shapes::{
     algebraic, axis_ellipsoids, blob, blob2, curve_plane, helix1, helix2, hexagonal_lines,
     hexagonal_prisms, mesh1, polytubes, quantum, quartic, spikes, spiral, with_strength,
 };
+use super::internal_surfaces::{comma, dupin_cyclid, enneper, helical_torus};
 use super::internal_table::Internal;
 use crate::noise::{noise, NoiseGenerator};
 use glam::DVec3;
@@ -103,6 +105,14 @@ impl Internal {
                     _ => exponents.iter().map(|exponent| (-exponent).exp()).sum(),
                 };
                 threshold - scale * field
+            }
+            Internal::Comma => comma((x, y, z), argument(3)),
+            Internal::DupinCyclid => {
+                dupin_cyclid((x, y, z), std::array::from_fn(|i| argument(3 + i)))
+            }
+            Internal::Enneper => enneper((x, y, z), argument(3)),
+            Internal::HelicalTorus => {
+                helical_torus((x, y, z), std::array::from_fn(|i| argument(3 + i)))
             }
             Internal::HexagonalPrisms => hexagonal_prisms(x, y),
             Internal::HexagonalLines => hexagonal_lines(x, y),

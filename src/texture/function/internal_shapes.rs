@@ -389,7 +389,11 @@ pub fn algebraic(function: Internal, (x, y, z): (f64, f64, f64), p: &[f64]) -> f
         | Internal::Torus
         | Internal::Torus2
         | Internal::Noise3d
-        | Internal::NoiseGenerator => 0.0,
+        | Internal::NoiseGenerator
+        | Internal::Comma
+        | Internal::DupinCyclid
+        | Internal::Enneper
+        | Internal::HelicalTorus => 0.0,
     }
 }
 

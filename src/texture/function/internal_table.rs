@@ -26,6 +26,8 @@ pub enum Internal {
     Blob2,
     /// 8, `f_boy_surface(x,y,z, strength, scale)`.
     BoySurface,
+    /// 9, `f_comma(x,y,z, scale)`.
+    Comma,
     /// 10, `f_cross_ellipsoids(x,y,z, eccentricity, inverse size, diameter, threshold)`.
     CrossEllipsoids,
     /// 11, `f_crossed_trough(x,y,z, strength)`.
@@ -38,8 +40,12 @@ pub enum Internal {
     DevilsCurve,
     /// 15, `f_devils_curve_2d(x,y,z, strength, x factor, y factor, sor switch, sor offset, sor angle)`.
     DevilsCurve2d,
+    /// 16, `f_dupin_cyclid(x,y,z, strength, major, minor, x shift, y shift, inversion radius)`.
+    DupinCyclid,
     /// 17, `f_ellipsoid(x,y,z, sx, sy, sz): |(sx x, sy y, sz z)|`.
     Ellipsoid,
+    /// 18, `f_enneper(x,y,z, strength)`.
+    Enneper,
     /// 19, `f_flange_cover(x,y,z, spikiness, inverse size, flange, threshold)`.
     FlangeCover,
     /// 20, `f_folium_surface(x,y,z, strength, neck, divergence)`.
@@ -50,6 +56,9 @@ pub enum Internal {
     Glob,
     /// 23, `f_heart(x,y,z, strength)`.
     Heart,
+    /// 24, `f_helical_torus(x,y,z, major, loops, twist, fatness, threshold, inner, winding
+    /// fatness, groove period, groove amplitude, groove phase)`.
+    HelicalTorus,
     /// 25, `f_helix1(x,y,z, count, period, minor, major, shape, section, section angle)`.
     Helix1,
     /// 26, `f_helix2(x,y,z, unused, period, minor, major, unused, section, unused angle)`.
@@ -161,7 +170,7 @@ pub enum Internal {
 
 /// Each implemented function with POV-Ray's number and its number of arguments (`x, y, z`
 /// included), in the order of [`Internal`]'s variants.
-const FUNCTIONS: [(Internal, u8, usize); 74] = [
+const FUNCTIONS: [(Internal, u8, usize); 78] = [
     (Internal::AlgebraicCylinder1, 0, 8),
     (Internal::AlgebraicCylinder2, 1, 8),
     (Internal::AlgebraicCylinder3, 2, 8),
@@ -171,18 +180,22 @@ const FUNCTIONS: [(Internal, u8, usize); 74] = [
     (Internal::Blob, 6, 8),
     (Internal::Blob2, 7, 7),
     (Internal::BoySurface, 8, 5),
+    (Internal::Comma, 9, 4),
     (Internal::CrossEllipsoids, 10, 7),
     (Internal::CrossedTrough, 11, 4),
     (Internal::CubicSaddle, 12, 4),
     (Internal::Cushion, 13, 4),
     (Internal::DevilsCurve, 14, 4),
     (Internal::DevilsCurve2d, 15, 9),
+    (Internal::DupinCyclid, 16, 9),
     (Internal::Ellipsoid, 17, 6),
+    (Internal::Enneper, 18, 4),
     (Internal::FlangeCover, 19, 7),
     (Internal::FoliumSurface, 20, 6),
     (Internal::FoliumSurface2d, 21, 9),
     (Internal::Glob, 22, 4),
     (Internal::Heart, 23, 4),
+    (Internal::HelicalTorus, 24, 13),
     (Internal::Helix1, 25, 10),
     (Internal::Helix2, 26, 10),
     (Internal::HexagonalPrisms, 27, 4),
@@ -272,9 +285,10 @@ mod tests {
             assert_eq!(*function as usize, index);
             assert_eq!(Internal::from_number(f64::from(*number)), Some(*function));
             assert_eq!(function.number(), *number);
-            assert!((3..=10).contains(arity));
+            assert!((3..=13).contains(arity));
         }
-        assert_eq!(Internal::from_number(9.0), None);
+        assert_eq!(Internal::from_number(77.0), None);
+        assert_eq!(Internal::from_number(79.0), None);
         assert_eq!(Internal::from_number(61.5), None);
     }
 }

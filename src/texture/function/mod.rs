@@ -12,6 +12,7 @@
 pub mod internal;
 mod internal_fractals;
 mod internal_shapes;
+mod internal_surfaces;
 pub mod internal_table;
 pub mod spline;
 mod vector;
