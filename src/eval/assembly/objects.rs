@@ -271,7 +271,7 @@ impl Evaluator {
 
     /// Applies one modifier item to an object. `uv_mapping` is set by the object's own
     /// `uv_mapping` item, which maps every texture, pigment and normal given after it by uv.
-    fn object_modifier(
+    pub(crate) fn object_modifier(
         &mut self,
         object: &mut Object,
         item: Item,
@@ -402,7 +402,7 @@ impl Evaluator {
     }
 
     /// Applies an evaluated modifier (texture, pigment, transform...) to an object.
-    fn object_modifier_value(
+    pub(crate) fn object_modifier_value(
         &mut self,
         object: &mut Object,
         value: Value,
