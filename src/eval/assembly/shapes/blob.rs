@@ -5,9 +5,9 @@
 //! Holds: the stream is left at the blob's object modifiers.
 
 use crate::eval::language::stream::Stream;
+use crate::eval::language::value::Value;
 use crate::eval::{EvalResult, Evaluator};
 use crate::syntax::ast::{BlockHead, Item};
-use crate::eval::language::value::Value;
 use crate::{
     math::{Colour, Transform},
     scene::{Blob, BlobComponent, BlobKind, Object, Shape},
@@ -83,7 +83,7 @@ impl Evaluator {
     }
 
     /// The modifiers of a `sphere { .. }` or `cylinder { .. }` component after its strength:
-    /// transformations and its own `texture`, `pigment`, `normal`, `finish` or `material`,
+    /// transformations and its own `texture`, `pigment`, `normal` or `finish`,
     /// read as for an object (a texture given after a transformation is not moved by it; a
     /// second texture is layered on the first; a lone `pigment` starts from the default
     /// texture, not the blob's). Returns the component's transform and its texture in the
@@ -115,8 +115,7 @@ impl Evaluator {
                         &mut uv_mapping,
                     )?;
                 }
-                Item::Block(block)
-                    if matches!(&block.head, BlockHead::Word(w) if matches!(&**w, "finish" | "material")) =>
+                Item::Block(block) if matches!(&block.head, BlockHead::Word(w) if &**w == "finish") =>
                 {
                     self.object_modifier(
                         &mut part,
