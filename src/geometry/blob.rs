@@ -605,6 +605,47 @@ mod tests {
     }
 
     #[test]
+    fn component_textures_blend_by_the_absolute_field_shares() {
+        // Components 0 and 2 show material 7, component 1 (negative) material 9.
+        let blob = Blob::new(&SceneBlob {
+            threshold: 0.5,
+            components: vec![
+                sphere(DVec3::new(-0.6, 0.0, 0.0), 1.2, 1.0),
+                sphere(DVec3::ZERO, 0.8, -0.3),
+                sphere(DVec3::new(0.6, 0.0, 0.0), 1.2, 2.0),
+            ],
+        })
+        .unwrap();
+        assert!(!blob.is_textured() && blob.texture_blend(DVec3::ZERO).is_none());
+        let blob = blob.with_materials(&[7, 9, 7]);
+        let point = DVec3::new(0.1, 0.2, -0.5);
+        let field = |centre: DVec3, radius: f64, strength: f64| {
+            let falloff = 1.0 - (point - centre).length_squared() / (radius * radius);
+            strength * falloff.max(0.0).powi(2)
+        };
+        let positive = field(DVec3::new(-0.6, 0.0, 0.0), 1.2, 1.0)
+            + field(DVec3::new(0.6, 0.0, 0.0), 1.2, 2.0);
+        let negative = field(DVec3::ZERO, 0.8, -0.3).abs();
+        let parts: Vec<(u32, f64)> = blob.texture_blend(point).unwrap().iter().collect();
+        assert_eq!(parts.len(), 2);
+        let share = |material: u32| parts.iter().find(|p| p.0 == material).unwrap().1;
+        assert!((share(7) - positive / (positive + negative)).abs() < 1e-12);
+        assert!((share(9) - negative / (positive + negative)).abs() < 1e-12);
+        // Far from every component: nothing to blend.
+        assert!(blob.texture_blend(DVec3::splat(5.0)).is_none());
+    }
+
+    #[test]
+    fn a_blend_keeps_its_heaviest_materials() {
+        let blend = TextureBlend::weighted((0..10).map(|m| (m, 1.0 + m as f64))).unwrap();
+        let parts: Vec<(u32, f64)> = blend.iter().collect();
+        assert_eq!(parts.len(), crate::geometry::BLEND_SLOTS);
+        assert!(parts.iter().all(|&(m, _)| m >= 4));
+        assert!((parts.iter().map(|p| p.1).sum::<f64>() - 1.0).abs() < 1e-12);
+        assert!(TextureBlend::weighted([(1, 0.0), (2, f64::NAN)]).is_none());
+    }
+
+    #[test]
     fn blob_crossings_agree_with_inside_test() {
         let mut cylinder = sphere(DVec3::ZERO, 0.8, 1.5);
         cylinder.kind = BlobKind::Cylinder {

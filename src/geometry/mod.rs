@@ -136,7 +136,7 @@ impl TextureBlend {
             merged.truncate(BLEND_SLOTS);
         }
         let total: f64 = merged.iter().map(|(_, weight)| weight).sum();
-        if !(total > 0.0) {
+        if !total.is_finite() || total <= 0.0 {
             return None;
         }
         let mut blend = TextureBlend {
