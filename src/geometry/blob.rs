@@ -11,6 +11,7 @@
 //! uses per-thread scratch vectors that are reused.
 
 use super::roots::{real_roots_between, Roots, MAX_DEGREE, MAX_ROOTS};
+use super::TextureBlend;
 use crate::accel::{Aabb, Bvh};
 use crate::scene::{Blob as SceneBlob, BlobKind};
 use glam::{DAffine3, DVec3};
@@ -32,6 +33,8 @@ struct Element {
     slab: (f64, f64),
     inverse_radius_squared: f64,
     strength: f64,
+    /// The material of the component's texture (see [`Blob::with_materials`]).
+    material: u32,
 }
 
 impl Element {
@@ -101,6 +104,26 @@ impl Element {
         })
     }
 
+    /// The field at blob-space `point`.
+    fn value(&self, point: DVec3) -> f64 {
+        let q = self.component_from_blob.transform_point3(point);
+        let offset = q - self.centre;
+        let along = offset.dot(self.axis);
+        if self.axis != DVec3::ZERO && (along < self.slab.0 || along > self.slab.1) {
+            return 0.0;
+        }
+        let radial = if self.perpendicular {
+            offset - self.axis * along
+        } else {
+            offset
+        };
+        let falloff = 1.0 - radial.length_squared() * self.inverse_radius_squared;
+        if falloff <= 0.0 {
+            return 0.0;
+        }
+        self.strength * falloff * falloff
+    }
+
     /// The field at blob-space `point`, and its gradient.
     fn field(&self, point: DVec3) -> (f64, DVec3) {
         let q = self.component_from_blob.transform_point3(point);
@@ -135,6 +158,8 @@ pub struct Blob {
     /// Hierarchy over the blob-space boxes of the elements' regions of influence.
     tree: Bvh,
     bounds: Aabb,
+    /// The elements carry the materials of their components' textures.
+    textured: bool,
 }
 
 /// An interval of the ray where one element is active, with its field as a quartic
@@ -190,7 +215,7 @@ impl Blob {
     pub fn new(blob: &SceneBlob) -> Option<Blob> {
         let mut elements = Vec::new();
         let mut element_bounds = Vec::new();
-        for component in &blob.components {
+        for (index, component) in blob.components.iter().enumerate() {
             let radius = component.radius;
             let forward = component.transform.outer_from_inner;
             let backward = component.transform.inner_from_outer;
@@ -211,6 +236,7 @@ impl Blob {
                 slab: (f64::NEG_INFINITY, f64::INFINITY),
                 inverse_radius_squared: 1.0 / (radius * radius),
                 strength: component.strength,
+                material: index as u32,
             };
             let reach = DVec3::splat(radius);
             // Blob-space box around the balls of influence at `points` (component space).
@@ -274,7 +300,48 @@ impl Blob {
             elements,
             tree,
             bounds,
+            textured: false,
         })
+    }
+
+    /// The blob with each component's texture shown: `materials[k]` is the material of
+    /// component `k` (its own texture, or the blob's for a component without one).
+    pub fn with_materials(mut self, materials: &[u32]) -> Blob {
+        if materials.is_empty() {
+            return self;
+        }
+        for element in &mut self.elements {
+            let index = (element.material as usize).min(materials.len() - 1);
+            element.material = materials[index];
+        }
+        self.textured = true;
+        self
+    }
+
+    /// True when the components' textures blend on the surface.
+    pub fn is_textured(&self) -> bool {
+        self.textured
+    }
+
+    /// How the components' textures blend at `point` (measured in POV-Ray 3.7: each
+    /// component weighs in by the absolute value of its field there, negative components
+    /// too, the weights scaled to sum to 1; each texture is shaded on its own and the
+    /// colours blended). `None` for a blob without component textures, or a point no
+    /// component reaches.
+    pub fn texture_blend(&self, point: DVec3) -> Option<TextureBlend> {
+        if !self.textured {
+            return None;
+        }
+        let mut parts: Vec<(u32, f64)> = Vec::new();
+        self.tree.any_containing(point, |position| {
+            let element = &self.elements[position];
+            let value = element.value(point).abs();
+            if value > 0.0 {
+                parts.push((element.material, value));
+            }
+            false
+        });
+        TextureBlend::weighted(parts)
     }
 
     /// The summed field at `point`, and its gradient.
@@ -467,6 +534,7 @@ mod tests {
             radius,
             strength,
             transform: Transform::IDENTITY,
+            texture: None,
         }
     }
 
@@ -534,6 +602,47 @@ mod tests {
             close(&found, &expected(8.0, &[5.0, 7.0, 9.0, 11.0])),
             "{found:?}"
         );
+    }
+
+    #[test]
+    fn component_textures_blend_by_the_absolute_field_shares() {
+        // Components 0 and 2 show material 7, component 1 (negative) material 9.
+        let blob = Blob::new(&SceneBlob {
+            threshold: 0.5,
+            components: vec![
+                sphere(DVec3::new(-0.6, 0.0, 0.0), 1.2, 1.0),
+                sphere(DVec3::ZERO, 0.8, -0.3),
+                sphere(DVec3::new(0.6, 0.0, 0.0), 1.2, 2.0),
+            ],
+        })
+        .unwrap();
+        assert!(!blob.is_textured() && blob.texture_blend(DVec3::ZERO).is_none());
+        let blob = blob.with_materials(&[7, 9, 7]);
+        let point = DVec3::new(0.1, 0.2, -0.5);
+        let field = |centre: DVec3, radius: f64, strength: f64| {
+            let falloff = 1.0 - (point - centre).length_squared() / (radius * radius);
+            strength * falloff.max(0.0).powi(2)
+        };
+        let positive = field(DVec3::new(-0.6, 0.0, 0.0), 1.2, 1.0)
+            + field(DVec3::new(0.6, 0.0, 0.0), 1.2, 2.0);
+        let negative = field(DVec3::ZERO, 0.8, -0.3).abs();
+        let parts: Vec<(u32, f64)> = blob.texture_blend(point).unwrap().iter().collect();
+        assert_eq!(parts.len(), 2);
+        let share = |material: u32| parts.iter().find(|p| p.0 == material).unwrap().1;
+        assert!((share(7) - positive / (positive + negative)).abs() < 1e-12);
+        assert!((share(9) - negative / (positive + negative)).abs() < 1e-12);
+        // Far from every component: nothing to blend.
+        assert!(blob.texture_blend(DVec3::splat(5.0)).is_none());
+    }
+
+    #[test]
+    fn a_blend_keeps_its_heaviest_materials() {
+        let blend = TextureBlend::weighted((0..10).map(|m| (m, 1.0 + m as f64))).unwrap();
+        let parts: Vec<(u32, f64)> = blend.iter().collect();
+        assert_eq!(parts.len(), crate::geometry::BLEND_SLOTS);
+        assert!(parts.iter().all(|&(m, _)| m >= 4));
+        assert!((parts.iter().map(|p| p.1).sum::<f64>() - 1.0).abs() < 1e-12);
+        assert!(TextureBlend::weighted([(1, 0.0), (2, f64::NAN)]).is_none());
     }
 
     #[test]

@@ -21,7 +21,7 @@ use crate::accel::Aabb;
 use crate::hash::FastHash;
 use crate::{
     math::Transform,
-    scene::{CsgOperation, Interior, Mesh, Object, Shape},
+    scene::{Blob as SceneBlob, CsgOperation, Interior, Mesh, Object, Shape},
     texture::Texture,
 };
 use glam::DAffine3;
@@ -524,6 +524,47 @@ impl Builder {
         materials.into_boxed_slice()
     }
 
+    /// The material of each component of a blob placed with `appearance` (material `own`):
+    /// a component's own texture placed like the blob's, else `own`.
+    fn blob_materials(
+        &mut self,
+        blob: &SceneBlob,
+        appearance: &Appearance,
+        own: u32,
+        world_from_local: &Transform,
+    ) -> Vec<u32> {
+        blob.components
+            .iter()
+            .map(|component| match &component.texture {
+                Some(texture) => {
+                    let mut part = appearance.clone();
+                    (part.texture, part.texture_key) =
+                        self.placed_texture(texture, world_from_local);
+                    self.material(&part)
+                }
+                None => own,
+            })
+            .collect()
+    }
+
+    /// The leaf shapes of `shape` shown with `material` (a blob's component textures get
+    /// their own materials).
+    fn shape_pieces(
+        &mut self,
+        shape: &Shape,
+        appearance: &Appearance,
+        material: u32,
+        world_from_local: &Transform,
+    ) -> Vec<LocalShape> {
+        match shape {
+            Shape::Blob(blob) if blob.has_component_textures() => {
+                let materials = self.blob_materials(blob, appearance, material, world_from_local);
+                vec![LocalShape::textured_blob(blob, &materials)]
+            }
+            _ => LocalShape::pieces(shape),
+        }
+    }
+
     /// Adds a top-level object (or a child of a flattened top-level union).
     ///
     /// A union that is not inverted is split into its children (like POV-Ray's
@@ -641,7 +682,7 @@ impl Builder {
                     self.material(&appearance)
                 };
                 let place = self.leaf_placement(material);
-                for piece in LocalShape::pieces(shape) {
+                for piece in self.shape_pieces(shape, &appearance, material, &world_from_local) {
                     let (leaf, bounds) = place(
                         piece,
                         &world_from_local,
@@ -756,7 +797,8 @@ impl Builder {
                         let materials = self.mesh_materials(mesh, &appearance, &world_from_local);
                         LocalShape::mesh_pieces(mesh, &materials)
                     }
-                    _ => LocalShape::pieces(shape)
+                    _ => self
+                        .shape_pieces(shape, &appearance, material, &world_from_local)
                         .into_iter()
                         .map(|piece| (piece, material))
                         .collect(),

@@ -33,7 +33,7 @@ use super::{HitDetails, Ray};
 use crate::accel::Aabb;
 use crate::{
     math::Transform,
-    scene::{Mesh, MeshTriangle, Shape},
+    scene::{Blob as SceneBlob, Mesh, MeshTriangle, Shape},
 };
 use glam::{DAffine3, DVec2, DVec3};
 use std::sync::Arc;
@@ -229,6 +229,14 @@ impl LocalShape {
             Shape::Mesh(_) | Shape::Text(_) | Shape::Csg { .. } => None,
         };
         shape.unwrap_or(LocalShape::Empty)
+    }
+
+    /// A blob whose components show their own textures: `materials[k]` is the material of
+    /// component `k` (the blob's own for a component without a texture).
+    pub fn textured_blob(blob: &SceneBlob, materials: &[u32]) -> LocalShape {
+        Blob::new(blob)
+            .map(|b| Self::Blob(Box::new(b.with_materials(materials))))
+            .unwrap_or(LocalShape::Empty)
     }
 
     /// The shape of one mesh triangle.
@@ -789,6 +797,21 @@ impl Leaf {
                     .any(|&material| uses_uv(material))
                     .then(|| corner_weighted(face.corner_uvs, weights));
                 HitDetails::blended(normal, materials, weights, uv)
+            }
+            // A blob's component textures blend by the components' fields at the point; the
+            // hit keeps the blob's own material as its identity.
+            LocalShape::Blob(blob) if blob.is_textured() => {
+                let normal = self.world_normal(local, part);
+                let mut details = HitDetails::plain(normal, self.material);
+                details.blend = blob.texture_blend(local);
+                let any_uv = match &details.blend {
+                    Some(blend) => blend.iter().any(|(material, _)| uses_uv(material)),
+                    None => uses_uv(self.material),
+                };
+                if any_uv {
+                    details.uv = Some(DVec2::new(point.x, point.y));
+                }
+                details
             }
             // One nearest-uv search gives a parametric surface's normal and uv together.
             LocalShape::Parametric(surface) if uses_uv(self.material) => {

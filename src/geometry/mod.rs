@@ -85,17 +85,85 @@ pub struct SurfaceHit {
     /// The surface's uv coordinates at the point, for materials that use `uv_mapping` (the
     /// world point's x and y on shapes without uv coordinates, as POV-Ray); `None` otherwise.
     pub uv: Option<DVec2>,
-    /// For a mesh triangle whose corners have different textures: how they blend here.
-    pub corner_blend: Option<CornerBlend>,
+    /// Several textures blended at the point (a mesh triangle whose corners have different
+    /// textures, a blob whose components have their own): each is shaded on its own and the
+    /// results are summed by weight. `material` stays the object's identity for its interior.
+    pub blend: Option<TextureBlend>,
 }
 
-/// The textures of a mesh triangle's corners blended at a hit point.
+/// The most textures a [`TextureBlend`] holds: a blob point where more component textures
+/// meet keeps the heaviest ones.
+pub const BLEND_SLOTS: usize = 6;
+
+/// Textures blended at a hit point: materials and their weights (which sum to 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CornerBlend {
-    /// The material of each corner.
-    pub materials: [u32; 3],
-    /// The barycentric weight of each corner at the point (they sum to 1).
-    pub weights: [f64; 3],
+pub struct TextureBlend {
+    materials: [u32; BLEND_SLOTS],
+    weights: [f64; BLEND_SLOTS],
+    len: u8,
+}
+
+impl TextureBlend {
+    /// The corner textures of a triangle at barycentric `weights`.
+    pub fn corners(materials: [u32; 3], weights: [f64; 3]) -> TextureBlend {
+        let mut blend = TextureBlend {
+            materials: [0; BLEND_SLOTS],
+            weights: [0.0; BLEND_SLOTS],
+            len: 3,
+        };
+        blend.materials[..3].copy_from_slice(&materials);
+        blend.weights[..3].copy_from_slice(&weights);
+        blend
+    }
+
+    /// A blend of `entries` (material, weight ≥ 0) in the given order: entries of one
+    /// material merge; beyond [`BLEND_SLOTS`] materials only the heaviest are kept (the
+    /// first of equal ones); the weights are scaled to sum to 1. `None` when no weight is
+    /// positive.
+    pub fn weighted(entries: impl IntoIterator<Item = (u32, f64)>) -> Option<TextureBlend> {
+        let mut merged: Vec<(u32, f64)> = Vec::new();
+        for (material, weight) in entries {
+            if !(weight > 0.0 && weight.is_finite()) {
+                continue;
+            }
+            match merged.iter_mut().find(|(m, _)| *m == material) {
+                Some(entry) => entry.1 += weight,
+                None => merged.push((material, weight)),
+            }
+        }
+        if merged.len() > BLEND_SLOTS {
+            merged.sort_by(|a, b| b.1.total_cmp(&a.1));
+            merged.truncate(BLEND_SLOTS);
+        }
+        let total: f64 = merged.iter().map(|(_, weight)| weight).sum();
+        if !total.is_finite() || total <= 0.0 {
+            return None;
+        }
+        let mut blend = TextureBlend {
+            materials: [0; BLEND_SLOTS],
+            weights: [0.0; BLEND_SLOTS],
+            len: merged.len() as u8,
+        };
+        for (slot, (material, weight)) in merged.into_iter().enumerate() {
+            blend.materials[slot] = material;
+            blend.weights[slot] = weight / total;
+        }
+        Some(blend)
+    }
+
+    /// The materials and their weights.
+    pub fn iter(&self) -> impl Iterator<Item = (u32, f64)> + '_ {
+        let len = self.len as usize;
+        self.materials[..len]
+            .iter()
+            .copied()
+            .zip(self.weights[..len].iter().copied())
+    }
+
+    /// The first material of the blend.
+    pub fn first(&self) -> u32 {
+        self.materials[0]
+    }
 }
 
 /// What a hit adds to its distance and point: the normal and the surface's appearance there.
@@ -107,8 +175,8 @@ pub struct HitDetails {
     pub material: u32,
     /// The uv coordinates (`None` when no material uses them).
     pub uv: Option<DVec2>,
-    /// The corners' materials and weights, when a triangle's corners differ.
-    pub corner_blend: Option<CornerBlend>,
+    /// The textures blended at the point, when there are several.
+    pub blend: Option<TextureBlend>,
 }
 
 impl HitDetails {
@@ -118,7 +186,7 @@ impl HitDetails {
             normal,
             material,
             uv: None,
-            corner_blend: None,
+            blend: None,
         }
     }
 
@@ -134,7 +202,7 @@ impl HitDetails {
             normal,
             material: materials[0],
             uv,
-            corner_blend: differ.then_some(CornerBlend { materials, weights }),
+            blend: differ.then(|| TextureBlend::corners(materials, weights)),
         }
     }
 }

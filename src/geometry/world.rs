@@ -379,7 +379,7 @@ fn finish(
         normal: details.normal,
         material: details.material,
         uv: details.uv,
-        corner_blend: details.corner_blend,
+        blend: details.blend,
     })
 }
 

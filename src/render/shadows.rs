@@ -193,8 +193,8 @@ pub fn shadow_filter(
 }
 
 /// The part of the light along `direction` that passes the surface at `hit`: through its
-/// pigment there (uv-mapped pigments at the hit's uv coordinates), blended over the corner
-/// textures of a mesh triangle whose corners differ.
+/// pigment there (uv-mapped pigments at the hit's uv coordinates), blended over the textures
+/// of a mesh triangle whose corners differ or of a blob's components.
 fn hit_transmission(world: &World, hit: &SurfaceHit, direction: DVec3) -> DVec3 {
     let surface = hit_surface(hit.point, direction, hit.normal);
     let through = |material: u32| {
@@ -206,12 +206,10 @@ fn hit_transmission(world: &World, hit: &SurfaceHit, direction: DVec3) -> DVec3 
                 transmission(surface_pigment(texture, hit, &surface))
             })
     };
-    match &hit.corner_blend {
+    match &hit.blend {
         Some(blend) => blend
-            .materials
             .iter()
-            .zip(blend.weights)
-            .map(|(&material, weight)| through(material) * weight.max(0.0))
+            .map(|(material, weight)| through(material) * weight.max(0.0))
             .sum(),
         None => through(hit.material),
     }

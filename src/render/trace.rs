@@ -581,27 +581,28 @@ impl<'a> Tracer<'a> {
         indirect: &Cell<Option<DVec3>>,
         caustics: &Cell<Option<DVec3>>,
     ) -> Shaded {
-        if let Some(blend) = &hit.corner_blend {
-            // A mesh triangle with a texture per corner: each shaded, blended by weight.
+        if let Some(blend) = &hit.blend {
+            // Several textures (a mesh triangle's corners, a blob's components): each shaded,
+            // blended by weight. The hit keeps its material as the object's identity, so
+            // the ray enters and leaves the same interior whichever texture shows.
             let mut total = Shaded {
                 colour: DVec3::ZERO,
                 through: DVec3::ZERO,
                 background: 0.0,
                 continued: None,
             };
-            for (&corner, &share) in blend.materials.iter().zip(&blend.weights) {
-                let Some(corner_material) = self.world.materials.get(corner as usize) else {
+            for (part_material, share) in blend.iter() {
+                let Some(part_material) = self.world.materials.get(part_material as usize) else {
                     continue;
                 };
                 let single = SurfaceHit {
-                    material: corner,
-                    corner_blend: None,
+                    blend: None,
                     ..*hit
                 };
                 let part = self.shade(
                     ray,
                     &single,
-                    corner_material,
+                    part_material,
                     level,
                     weight,
                     inside,

@@ -367,6 +367,13 @@ pub struct Blob {
     pub components: Vec<BlobComponent>,
 }
 
+impl Blob {
+    /// True when some component has its own texture.
+    pub fn has_component_textures(&self) -> bool {
+        self.components.iter().any(|c| c.texture.is_some())
+    }
+}
+
 /// One blob component: field `strength * (1 - (d / radius)²)²` within `radius`.
 #[derive(Clone, Debug)]
 pub struct BlobComponent {
@@ -378,6 +385,10 @@ pub struct BlobComponent {
     pub strength: f64,
     /// Maps the component's space into the blob's.
     pub transform: Transform,
+    /// The component's own texture, in the blob's space (its transformations applied);
+    /// `None` shows the blob's. Where components with textures meet, each texture is shaded
+    /// and the results blended by the components' shares of the field.
+    pub texture: Option<Arc<Texture>>,
 }
 
 /// The shape of a blob component's field.

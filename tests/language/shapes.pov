@@ -53,6 +53,20 @@ union { object { L1 } object { L2 } object { L3 } }
 #declare B1 = blob { threshold 0.5 sphere { 0, 1, 1 pigment { rgb 1 } translate x } cylinder { 0, x, 0.5, strength -1 } component 1, 1, <0, 1, 0> sturm hierarchy off }
 #declare B2 = blob { sphere { 0, 0, 1 } pigment { rgb 1 } threshold 0.2 }
 union { object { B1 } object { B2 } }
+// Blob components with their own texture, pigment, normal and finish, layered textures and
+// transformations before and after them; inside() as POV-Ray 3.7 reports it.
+#declare BT = texture { pigment { rgb <1,0,0> } }
+#declare BTr = transform { rotate y*30 }
+#declare B3 = blob { threshold 0.5
+  sphere { 0, 1, 1 texture { BT } translate x }
+  sphere { 0, 1, strength 1 texture { BT } texture { pigment { rgbt <0,0,1,0.5> } } transform { BTr } }
+  cylinder { 0, y, 0.5, 1 pigment { rgb 1 } normal { bumps 0.3 } finish { phong 1 } transform { BTr } scale 2 }
+  sphere { x, 1, 1 finish { ambient 0.5 } }
+}
+#if (!inside(B3, <1, 0, 0>) | !inside(B3, 0) | inside(B3, <0, -1.5, 0>) | inside(B3, <2.5, 0, 0>))
+  #error "blob component positions"
+#end
+object { B3 }
 #declare Se = superellipsoid { <0.5, 1> pigment { rgb 1 } }
 #declare Se2 = superellipsoid { <0, -1> }
 union { object { Se } object { Se2 } }

@@ -66,12 +66,18 @@ impl SceneAssembly {
         }
     }
 
-    /// Adds a top-level object: the default texture when it has none, its light groups
-    /// separated, the lights it carries placed in the scene.
+    /// Adds a top-level object: the default texture when it has none (fixed in the world,
+    /// not moved by the object's transformations: measured with a `#default` gradient on
+    /// translated and scaled objects), its light groups separated, the lights it carries
+    /// placed in the scene.
     pub(crate) fn add_object(&mut self, object: Arc<Object>) {
         let mut object = Arc::unwrap_or_clone(object);
         if object.texture.is_none() && self.default_texture_set {
-            object.texture = Some(Arc::new(self.default_texture.clone()));
+            let mut texture = self.default_texture.clone();
+            if *object.transform() != Transform::IDENTITY && texture.depends_on_position() {
+                texture.transform(&object.transform().inverse());
+            }
+            object.texture = Some(Arc::new(texture));
         }
         // Both walk the whole object tree: skip them while there is nothing to find.
         if self.light_groups > 0 {

@@ -271,7 +271,7 @@ impl Evaluator {
 
     /// Applies one modifier item to an object. `uv_mapping` is set by the object's own
     /// `uv_mapping` item, which maps every texture, pigment and normal given after it by uv.
-    fn object_modifier(
+    pub(crate) fn object_modifier(
         &mut self,
         object: &mut Object,
         item: Item,
@@ -402,7 +402,7 @@ impl Evaluator {
     }
 
     /// Applies an evaluated modifier (texture, pigment, transform...) to an object.
-    fn object_modifier_value(
+    pub(crate) fn object_modifier_value(
         &mut self,
         object: &mut Object,
         value: Value,
@@ -486,11 +486,20 @@ impl Evaluator {
         Ok(())
     }
 
-    /// The object's texture (already in its local space) or a fresh default one.
+    /// The object's texture (already in its local space) or a fresh default one, placed
+    /// where the object stands now: transformations written before the `pigment`, `normal`
+    /// or `finish` that asks for it do not move its patterns, later ones do (measured with
+    /// a `#default` gradient).
     fn object_texture(&self, object: &Object) -> Texture {
         match &object.texture {
             Some(t) => (**t).clone(),
-            None => self.scene.default_texture.clone(),
+            None => {
+                let mut texture = self.scene.default_texture.clone();
+                if *object.transform() != Transform::IDENTITY && texture.depends_on_position() {
+                    texture.transform(&object.transform().inverse());
+                }
+                texture
+            }
         }
     }
 

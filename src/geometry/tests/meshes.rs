@@ -114,15 +114,16 @@ fn mesh_triangles_in_csg_keep_corner_uvs_and_textures() {
     let hit = world.first_hit(&ray, 0.0, f64::INFINITY).expect("a hit");
     let uv = hit.uv.expect("uv coordinates in CSG");
     assert!((uv - DVec2::new(1.0, 0.5)).length() < 1e-12, "{uv}");
-    let blend = hit.corner_blend.expect("corner textures blend in CSG");
-    assert_eq!(blend.materials[0], blend.materials[2]);
-    assert_ne!(blend.materials[0], blend.materials[1]);
+    let blend = hit.blend.expect("corner textures blend in CSG");
+    let parts: Vec<(u32, f64)> = blend.iter().collect();
+    assert_eq!(parts.len(), 3);
+    assert_eq!(parts[0].0, parts[2].0);
+    assert_ne!(parts[0].0, parts[1].0);
     let expected = [0.5, 0.25, 0.25];
-    assert!(blend
-        .weights
+    assert!(parts
         .iter()
         .zip(expected)
-        .all(|(found, wanted)| (found - wanted).abs() < 1e-12));
+        .all(|((_, found), wanted)| (found - wanted).abs() < 1e-12));
 }
 
 #[test]

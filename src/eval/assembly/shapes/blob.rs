@@ -1,15 +1,17 @@
 //! `blob { threshold t sphere { .. } cylinder { .. } component s, r, c .. }`.
 //!
 //! In: the item stream after the brace. Out: [`Shape::Blob`] with each component's own
-//! transformations applied to it. Holds: component textures are not supported yet (warned
-//! about once, ignored); the stream is left at the blob's object modifiers.
+//! transformations applied to it, and its own texture (if it has one) in the blob's space.
+//! Holds: the stream is left at the blob's object modifiers.
 
 use crate::eval::language::stream::Stream;
+use crate::eval::language::value::Value;
 use crate::eval::{EvalResult, Evaluator};
 use crate::syntax::ast::{BlockHead, Item};
 use crate::{
-    math::Transform,
-    scene::{Blob, BlobComponent, BlobKind, Shape},
+    math::{Colour, Transform},
+    scene::{Blob, BlobComponent, BlobKind, Object, Shape},
+    texture::{finish::Finish, Pigment, Texture},
 };
 use std::sync::Arc;
 
@@ -20,6 +22,7 @@ impl Evaluator {
             threshold: 1.0,
             components: Vec::new(),
         };
+        let mut shared = SharedTextures::default();
         while let Some(item) = self.next_item(stream)? {
             match &item {
                 Item::Keyword(word, _) if &**word == "threshold" => {
@@ -34,6 +37,7 @@ impl Evaluator {
                         radius,
                         strength,
                         transform: Transform::IDENTITY,
+                        texture: None,
                     });
                 }
                 Item::Comma(_) => {}
@@ -59,38 +63,14 @@ impl Evaluator {
                         }
                     }
                     let strength = self.expect_float(&mut body, "the strength")?;
-                    let mut transform = Transform::IDENTITY;
-                    while let Some(modifier) = self.next_item(&mut body)? {
-                        match &modifier {
-                            Item::Keyword(word, span)
-                                if matches!(
-                                    &**word,
-                                    "translate" | "rotate" | "scale" | "matrix" | "transform"
-                                ) =>
-                            {
-                                let t = self.transform_keyword(word, *span, &mut body)?;
-                                transform = transform.then(&t);
-                            }
-                            Item::Comma(_) => {}
-                            Item::Block(_) | Item::Expr(_) => {
-                                match self.item_value(&modifier)? {
-                                    crate::eval::language::value::Value::Transform(t) => {
-                                        transform = transform.then(&t)
-                                    }
-                                    _ => self.runtime.warn(
-                                        modifier.span(),
-                                        "textures of single blob components are not supported yet; they are ignored",
-                                    ),
-                                }
-                            }
-                            _ => return Err(self.unexpected_in(&modifier, "blob component")),
-                        }
-                    }
+                    let (transform, texture) = self.blob_component_modifiers(&mut body)?;
+                    let texture = texture.map(|texture| shared.share(texture));
                     blob.components.push(BlobComponent {
                         kind,
                         radius,
                         strength,
                         transform,
+                        texture,
                     });
                 }
                 _ => {
@@ -100,5 +80,104 @@ impl Evaluator {
             }
         }
         Ok(Shape::Blob(Arc::new(blob)))
+    }
+
+    /// The modifiers of a `sphere { .. }` or `cylinder { .. }` component after its strength:
+    /// transformations and its own `texture`, `pigment`, `normal` or `finish`,
+    /// read as for an object (a texture given after a transformation is not moved by it; a
+    /// second texture is layered on the first; a lone `pigment` starts from the default
+    /// texture, not the blob's). Returns the component's transform and its texture in the
+    /// blob's space.
+    fn blob_component_modifiers(
+        &mut self,
+        body: &mut Stream,
+    ) -> EvalResult<(Transform, Option<Texture>)> {
+        // The component read as a stand-in object: its placement and texture.
+        let mut part = Object::new(Shape::Sphere {
+            centre: glam::DVec3::ZERO,
+            radius: 1.0,
+        });
+        let mut uv_mapping = false;
+        while let Some(modifier) = self.next_item(body)? {
+            match &modifier {
+                Item::Comma(_) => {}
+                Item::Keyword(word, _)
+                    if matches!(
+                        &**word,
+                        "translate" | "rotate" | "scale" | "matrix" | "transform"
+                    ) =>
+                {
+                    self.object_modifier(
+                        &mut part,
+                        modifier,
+                        body,
+                        "blob component",
+                        &mut uv_mapping,
+                    )?;
+                }
+                Item::Block(block) if matches!(&block.head, BlockHead::Word(w) if &**w == "finish") =>
+                {
+                    self.object_modifier(
+                        &mut part,
+                        modifier,
+                        body,
+                        "blob component",
+                        &mut uv_mapping,
+                    )?;
+                }
+                Item::Block(_) | Item::Expr(_) => {
+                    let value = self.item_value(&modifier)?;
+                    match value {
+                        Value::Texture(_)
+                        | Value::Pigment(_)
+                        | Value::Normal(_)
+                        | Value::Finish(_)
+                        | Value::Transform(_) => {
+                            self.object_modifier_value(&mut part, value, modifier.span())?
+                        }
+                        _ => return Err(self.unexpected_in(&modifier, "blob component")),
+                    }
+                }
+                _ => return Err(self.unexpected_in(&modifier, "blob component")),
+            }
+        }
+        let transform = *part.transform();
+        let texture = part.texture.map(|local| {
+            let mut texture = Arc::unwrap_or_clone(local);
+            texture.transform(&transform);
+            texture
+        });
+        Ok((transform, texture))
+    }
+}
+
+/// The component textures of one blob, so that components showing the same plain texture
+/// (one colour, one finish: transformations cannot change it) share one: their colours then
+/// blend once, not once per component.
+#[derive(Default)]
+struct SharedTextures {
+    plain: Vec<(Colour, *const Finish, Arc<Texture>)>,
+}
+
+impl SharedTextures {
+    /// `texture`, or an equal plain texture met before.
+    fn share(&mut self, texture: Texture) -> Arc<Texture> {
+        let Pigment::Solid(colour) = texture.pigment else {
+            return Arc::new(texture);
+        };
+        if texture.depends_on_position() {
+            return Arc::new(texture);
+        }
+        let finish = Arc::as_ptr(&texture.finish);
+        if let Some((_, _, found)) = self
+            .plain
+            .iter()
+            .find(|(c, f, _)| *c == colour && *f == finish)
+        {
+            return Arc::clone(found);
+        }
+        let texture = Arc::new(texture);
+        self.plain.push((colour, finish, Arc::clone(&texture)));
+        texture
     }
 }
