@@ -441,7 +441,7 @@ impl<'a> Tracer<'a> {
                 active.extend(&material.interior.media, material.light_group);
             }
         }
-        active.extend(&self.scene.atmosphere.media, None);
+        active.extend_atmosphere(&self.scene.atmosphere.media);
         let shader = MediaShader::new(self.world, &self.lights);
         let stretch = Stretch {
             origin: ray.origin,
