@@ -47,6 +47,7 @@
 use super::antialias::mix64;
 use super::extinction::{density_at, exp_neg, DEFAULT_MEDIA, MAX_INTERVAL_SAMPLES};
 use super::lights::{incoming, SceneLight};
+use super::photons::PhotonMap;
 use super::shadows::light_filter;
 use crate::geometry::World;
 use crate::scene::{LightGroup, Media, ScatteringKind};
@@ -149,6 +150,8 @@ impl Sample {
 pub struct MediaShader<'a> {
     world: &'a World,
     lights: &'a [SceneLight],
+    /// Media photons lighting the media, when the scene deposits them.
+    photons: Option<&'a PhotonMap>,
 }
 
 /// A stretch of a ray: `origin + t · direction` for t in `start..end`.
@@ -167,7 +170,19 @@ pub struct Stretch {
 impl<'a> MediaShader<'a> {
     /// A shader lighting media with `lights`, shadowed by `world`.
     pub fn new(world: &'a World, lights: &'a [SceneLight]) -> Self {
-        MediaShader { world, lights }
+        MediaShader {
+            world,
+            lights,
+            photons: None,
+        }
+    }
+
+    /// The same shader, also lighting scattering media with the media photons of `photons`.
+    pub fn with_photons(self, photons: Option<&'a PhotonMap>) -> Self {
+        MediaShader {
+            photons: photons.filter(|map| map.has_media_photons()),
+            ..self
+        }
     }
 
     /// What `active` media along `stretch` do: the light behind is multiplied by the first
@@ -398,6 +413,7 @@ impl<'a> MediaShader<'a> {
         let mut class_count = 0;
         let mut kinds = [[ScatteringKind::Isotropic; MAX_ACTIVE_MEDIA]; 2];
         let mut kind_counts = [0; 2];
+        let mut all_scattering = DVec3::ZERO;
         for (index, (media, group)) in active.grouped().enumerate() {
             let atmospheric = index >= active.atmospheric_from;
             let side = usize::from(atmospheric);
@@ -417,6 +433,7 @@ impl<'a> MediaShader<'a> {
             if let Some(scattering) = &media.scattering {
                 let amount = scattering.colour * density;
                 total.extinction += amount * scattering.extinction;
+                all_scattering += amount;
                 let class = (group, atmospheric);
                 match classes[..class_count]
                     .iter()
@@ -437,6 +454,15 @@ impl<'a> MediaShader<'a> {
                 let side = usize::from(*atmospheric);
                 let kinds = &kinds[side][..kind_counts[side]];
                 total.light += *amount * self.scattered(kinds, *group, point, stretch.direction);
+            }
+        }
+        if let Some(photons) = self.photons {
+            if all_scattering != DVec3::ZERO {
+                // The containers' phase functions (the atmosphere's where there are none).
+                let side = usize::from(kind_counts[0] == 0);
+                let kinds = &kinds[side][..kind_counts[side]];
+                total.light +=
+                    all_scattering * media_photon_light(photons, kinds, point, stretch.direction);
             }
         }
         total
@@ -478,6 +504,26 @@ impl<'a> MediaShader<'a> {
             total += colour * mean_phase(kinds, direction.dot(arriving.direction));
         }
         total
+    }
+}
+
+/// The light the media photons around `point` send towards a viewer looking along
+/// `direction`, per unit of scattering: each photon's power times the (mean) phase
+/// function for the direction it came from, over the volume of the sphere gathered.
+fn media_photon_light(
+    photons: &PhotonMap,
+    kinds: &[ScatteringKind],
+    point: DVec3,
+    direction: DVec3,
+) -> DVec3 {
+    let mut sum = DVec3::ZERO;
+    let volume = photons.media_photons(point, &mut |travel, power| {
+        sum += power * mean_phase(kinds, -direction.dot(travel));
+    });
+    if volume > 0.0 {
+        sum / volume
+    } else {
+        DVec3::ZERO
     }
 }
 
