@@ -804,6 +804,18 @@ mod tests {
     }
 
     #[test]
+    fn mixed_media_share_the_mean_phase_function() {
+        // POV-Ray 3.7: Mie haze beside isotropic scattering, looking into the light,
+        // scatters with (5.664 + 1) / 2; alike media keep their own phase function.
+        let c = 0.995;
+        let haze = phase(ScatteringKind::MieHazy, c);
+        let mixed = mean_phase(&[ScatteringKind::MieHazy, ScatteringKind::Isotropic], c);
+        assert!((mixed - (haze + 1.0) / 2.0).abs() < 1e-12);
+        assert!((mean_phase(&[ScatteringKind::MieHazy; 3], c) - haze).abs() < 1e-12);
+        assert_eq!(mean_phase(&[], c), 1.0);
+    }
+
+    #[test]
     fn henyey_greenstein_reduces_to_isotropic() {
         for c in [-1.0, -0.3, 0.0, 0.7, 1.0] {
             assert!((phase(ScatteringKind::HenyeyGreenstein(0.0), c) - 1.0).abs() < 1e-12);
