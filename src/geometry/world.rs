@@ -224,6 +224,24 @@ impl World {
         })
     }
 
+    /// Nearest hit like [`World::first_shadow_hit`], also ignoring objects whose material
+    /// `skip` rejects.
+    pub fn first_shadow_hit_skipping(
+        &self,
+        ray: &Ray,
+        min_distance: f64,
+        max_distance: f64,
+        skip: &impl Fn(u32) -> bool,
+    ) -> Option<SurfaceHit> {
+        let materials = &self.materials;
+        self.search(ray, min_distance, max_distance, true, &|material: u32| {
+            skip(material)
+                || materials
+                    .get(material as usize)
+                    .is_some_and(|material| material.no_shadow)
+        })
+    }
+
     /// Nearest hit like [`World::first_hit`], ignoring objects whose material `skip` rejects.
     pub fn first_hit_skipping(
         &self,

@@ -32,16 +32,22 @@
 //! - the first media listed (the first of the container entered first, then the
 //!   atmosphere's) sets the method and sampling of all media along a stretch (measured).
 //! - a ray that hits nothing crosses atmospheric media over 2·10¹⁰ units.
-//! - scattering: for each light with `media_interaction` on, its light at the sample (after
-//!   fading, spotlight cone and shadows; with `media_attenuation` also dimmed by the
-//!   atmospheric media on the way) times the phase function of c = cos(angle between the
-//!   ray and the direction to the light): isotropic 1; Mie haze
-//!   0.5767 (1 + 9 ((1 + c)/2)⁸); Mie murky 0.4957 (1 + 50 ((1 + c)/2)³²); Rayleigh
-//!   0.7994 (1 + c²); Henyey-Greenstein (1 − g²) / (1 + g² − 2 g c)^1.5.
+//! - scattering: for each light with `media_interaction` on that is not `shadowless` (such
+//!   lights light no media, measured), its light at the sample (after fading, spotlight
+//!   cone and shadows; with `media_attenuation` also dimmed by the atmospheric media on the
+//!   way) times the phase function of c = cos(angle between the ray and the direction to
+//!   the light): isotropic 1; Mie haze 0.5767 (1 + 9 ((1 + c)/2)⁸); Mie murky
+//!   0.4957 (1 + 50 ((1 + c)/2)³²); Rayleigh 0.7994 (1 + c²); Henyey-Greenstein
+//!   (1 − g²) / (1 + g² − 2 g c)^1.5. Where several containers' media act at once
+//!   (overlapping containers, several media in one interior), all their scattering there
+//!   takes the mean of their phase functions, a media without scattering counting as
+//!   isotropic; the atmospheric media do the same among themselves (measured, see
+//!   [`mean_phase`]).
 
 use super::antialias::mix64;
 use super::extinction::{density_at, exp_neg, DEFAULT_MEDIA, MAX_INTERVAL_SAMPLES};
 use super::lights::{incoming, SceneLight};
+use super::photons::PhotonMap;
 use super::shadows::light_filter;
 use crate::geometry::World;
 use crate::scene::{LightGroup, Media, ScatteringKind};
@@ -53,7 +59,7 @@ pub const UNBOUNDED_MEDIA_LENGTH: f64 = 2e10;
 /// At most this many media blocks act together along one stretch of a ray.
 pub const MAX_ACTIVE_MEDIA: usize = 16;
 
-/// Distinct (phase function, light group) pairs lit separately at one media sample.
+/// Distinct (light group, atmospheric or not) pairs lit separately at one media sample.
 const SCATTERING_CLASSES: usize = 8;
 
 /// The media acting along one stretch of a ray, each with the light group of the object
@@ -63,6 +69,8 @@ const SCATTERING_CLASSES: usize = 8;
 pub struct ActiveMedia<'a> {
     items: [Option<(&'a Media, Option<LightGroup>)>; MAX_ACTIVE_MEDIA],
     len: usize,
+    /// Where the atmospheric media start among the items (the rest are containers').
+    atmospheric_from: usize,
 }
 
 impl<'a> ActiveMedia<'a> {
@@ -70,6 +78,7 @@ impl<'a> ActiveMedia<'a> {
     pub const NONE: ActiveMedia<'static> = ActiveMedia {
         items: [None; MAX_ACTIVE_MEDIA],
         len: 0,
+        atmospheric_from: MAX_ACTIVE_MEDIA,
     };
 
     /// Adds `media`, lit by the lights of `group` (beyond [`MAX_ACTIVE_MEDIA`] the rest
@@ -81,6 +90,13 @@ impl<'a> ActiveMedia<'a> {
                 self.len += 1;
             }
         }
+    }
+
+    /// Adds the scene's atmospheric `media` after the containers' (beyond
+    /// [`MAX_ACTIVE_MEDIA`] the rest are left out).
+    pub fn extend_atmosphere(&mut self, media: &'a [Media]) {
+        self.atmospheric_from = self.atmospheric_from.min(self.len);
+        self.extend(media, None);
     }
 
     /// The media whose sampling settings rule the stretch: the first listed (measured:
@@ -134,6 +150,8 @@ impl Sample {
 pub struct MediaShader<'a> {
     world: &'a World,
     lights: &'a [SceneLight],
+    /// Media photons lighting the media, when the scene deposits them.
+    photons: Option<&'a PhotonMap>,
 }
 
 /// A stretch of a ray: `origin + t · direction` for t in `start..end`.
@@ -152,7 +170,19 @@ pub struct Stretch {
 impl<'a> MediaShader<'a> {
     /// A shader lighting media with `lights`, shadowed by `world`.
     pub fn new(world: &'a World, lights: &'a [SceneLight]) -> Self {
-        MediaShader { world, lights }
+        MediaShader {
+            world,
+            lights,
+            photons: None,
+        }
+    }
+
+    /// The same shader, also lighting scattering media with the media photons of `photons`.
+    pub fn with_photons(self, photons: Option<&'a PhotonMap>) -> Self {
+        MediaShader {
+            photons: photons.filter(|map| map.has_media_photons()),
+            ..self
+        }
     }
 
     /// What `active` media along `stretch` do: the light behind is multiplied by the first
@@ -374,13 +404,26 @@ impl<'a> MediaShader<'a> {
     fn sample(&self, active: &ActiveMedia, stretch: Stretch, t: f64) -> Sample {
         let point = stretch.origin + stretch.direction * t;
         let mut total = Sample::default();
-        // Scattering summed per phase function and light group: media sharing both share
-        // one pass over the lights.
-        let mut scattering_total = [DVec3::ZERO; SCATTERING_CLASSES];
-        let mut scattering_classes: [Option<(ScatteringKind, Option<LightGroup>)>;
-            SCATTERING_CLASSES] = [None; SCATTERING_CLASSES];
-        let mut classes = 0;
-        for (media, group) in active.grouped() {
+        // Scattering summed per light group (the lights lighting it) and kind of media
+        // (containers' or atmospheric); the phase functions of each kind's media, for
+        // their mean (see [`mean_phase`]).
+        let mut class_total = [DVec3::ZERO; SCATTERING_CLASSES];
+        let mut classes: [(Option<LightGroup>, bool); SCATTERING_CLASSES] =
+            [(None, false); SCATTERING_CLASSES];
+        let mut class_count = 0;
+        let mut kinds = [[ScatteringKind::Isotropic; MAX_ACTIVE_MEDIA]; 2];
+        let mut kind_counts = [0; 2];
+        let mut all_scattering = DVec3::ZERO;
+        for (index, (media, group)) in active.grouped().enumerate() {
+            let atmospheric = index >= active.atmospheric_from;
+            let side = usize::from(atmospheric);
+            if kind_counts[side] < MAX_ACTIVE_MEDIA {
+                kinds[side][kind_counts[side]] = media
+                    .scattering
+                    .as_ref()
+                    .map_or(ScatteringKind::Isotropic, |s| s.kind);
+                kind_counts[side] += 1;
+            }
             let density = density_at(media, point);
             if density == DVec3::ZERO {
                 continue;
@@ -390,44 +433,62 @@ impl<'a> MediaShader<'a> {
             if let Some(scattering) = &media.scattering {
                 let amount = scattering.colour * density;
                 total.extinction += amount * scattering.extinction;
-                let class = Some((scattering.kind, group));
-                match scattering_classes[..classes]
+                all_scattering += amount;
+                let class = (group, atmospheric);
+                match classes[..class_count]
                     .iter()
                     .position(|known| *known == class)
                 {
-                    Some(at) => scattering_total[at] += amount,
-                    None if classes < SCATTERING_CLASSES => {
-                        scattering_classes[classes] = class;
-                        scattering_total[classes] = amount;
-                        classes += 1;
+                    Some(at) => class_total[at] += amount,
+                    None if class_count < SCATTERING_CLASSES => {
+                        classes[class_count] = class;
+                        class_total[class_count] = amount;
+                        class_count += 1;
                     }
                     None => {}
                 }
             }
         }
-        for (class, amount) in scattering_classes[..classes].iter().zip(&scattering_total) {
-            if let Some((kind, group)) = class {
-                total.light += *amount * self.scattered(*kind, *group, point, stretch.direction);
+        for ((group, atmospheric), amount) in classes[..class_count].iter().zip(&class_total) {
+            if *amount != DVec3::ZERO {
+                let side = usize::from(*atmospheric);
+                let kinds = &kinds[side][..kind_counts[side]];
+                total.light += *amount * self.scattered(kinds, *group, point, stretch.direction);
+            }
+        }
+        if let Some(photons) = self.photons {
+            if all_scattering != DVec3::ZERO {
+                // The containers' phase functions (the atmosphere's where there are none).
+                let side = usize::from(kind_counts[0] == 0);
+                let kinds = &kinds[side][..kind_counts[side]];
+                total.light +=
+                    all_scattering * media_photon_light(photons, kinds, point, stretch.direction);
             }
         }
         total
     }
 
     /// Light from every interacting light source of media in light group `group` scattered
-    /// at `point` towards the viewer looking along `direction`, per unit of scattering.
+    /// at `point` towards the viewer looking along `direction`, per unit of scattering,
+    /// with the mean phase function of `kinds` (the phase functions of all media there).
     /// Light groups rule media as they rule surfaces (measured: a group's light lights the
     /// media inside the group's objects only, the scene's lights reach them only with
     /// `global_lights on`).
     fn scattered(
         &self,
-        kind: ScatteringKind,
+        kinds: &[ScatteringKind],
         group: Option<LightGroup>,
         point: DVec3,
         direction: DVec3,
     ) -> DVec3 {
         let mut total = DVec3::ZERO;
         for light in self.lights {
-            if !light.source.media_interaction || !LightGroup::lights(light.source.group, group) {
+            // Measured: a `shadowless` light lights no media (scattering media in a box or
+            // in the atmosphere stay black under it, while it lights surfaces).
+            if !light.source.media_interaction
+                || light.source.shadowless
+                || !LightGroup::lights(light.source.group, group)
+            {
                 continue;
             }
             let Some(arriving) = incoming(&light.source, point) else {
@@ -440,9 +501,46 @@ impl<'a> MediaShader<'a> {
             if colour == DVec3::ZERO {
                 continue;
             }
-            total += colour * phase(kind, direction.dot(arriving.direction));
+            total += colour * mean_phase(kinds, direction.dot(arriving.direction));
         }
         total
+    }
+}
+
+/// The light the media photons around `point` send towards a viewer looking along
+/// `direction`, per unit of scattering: each photon's power times the (mean) phase
+/// function for the direction it came from, over the volume of the sphere gathered.
+fn media_photon_light(
+    photons: &PhotonMap,
+    kinds: &[ScatteringKind],
+    point: DVec3,
+    direction: DVec3,
+) -> DVec3 {
+    let mut sum = DVec3::ZERO;
+    let volume = photons.media_photons(point, &mut |travel, power| {
+        sum += power * mean_phase(kinds, -direction.dot(travel));
+    });
+    if volume > 0.0 {
+        sum / volume
+    } else {
+        DVec3::ZERO
+    }
+}
+
+/// The phase function applied to all the scattering of the containers' media at a point:
+/// the mean of the phase functions of every container's media acting there, a media
+/// without scattering (or of zero density there) counting as isotropic; likewise for the
+/// atmospheric media among themselves. Measured in POV-Ray 3.7 with overlapping boxes and
+/// with two media in one interior: Mie haze and isotropic scattering together scatter both
+/// with (5.664 + 1) / 2 towards a light ahead, also where the isotropic media's density is
+/// 0; an emitting media beside a Mie haze halves the haze's forward peak likewise; an
+/// isotropic atmosphere does not change a box's Mie haze, two atmospheric media mix.
+fn mean_phase(kinds: &[ScatteringKind], c: f64) -> f64 {
+    match kinds {
+        [] => 1.0,
+        [kind] => phase(*kind, c),
+        [first, rest @ ..] if rest.iter().all(|kind| kind == first) => phase(*first, c),
+        _ => kinds.iter().map(|kind| phase(*kind, c)).sum::<f64>() / kinds.len() as f64,
     }
 }
 
@@ -703,6 +801,18 @@ mod tests {
             assert!((keep.x - (-1f64).exp()).abs() < 1e-12);
             assert!((add.x - 0.31279).abs() < 1e-5, "method {method}: {}", add.x);
         }
+    }
+
+    #[test]
+    fn mixed_media_share_the_mean_phase_function() {
+        // POV-Ray 3.7: Mie haze beside isotropic scattering, looking into the light,
+        // scatters with (5.664 + 1) / 2; alike media keep their own phase function.
+        let c = 0.995;
+        let haze = phase(ScatteringKind::MieHazy, c);
+        let mixed = mean_phase(&[ScatteringKind::MieHazy, ScatteringKind::Isotropic], c);
+        assert!((mixed - (haze + 1.0) / 2.0).abs() < 1e-12);
+        assert!((mean_phase(&[ScatteringKind::MieHazy; 3], c) - haze).abs() < 1e-12);
+        assert_eq!(mean_phase(&[], c), 1.0);
     }
 
     #[test]

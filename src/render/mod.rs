@@ -25,6 +25,7 @@ pub mod dispersion;
 pub mod encoding;
 pub mod extinction;
 pub mod focal_blur;
+pub mod interiors;
 pub mod iridescence;
 pub mod lights;
 pub mod media;

@@ -137,12 +137,25 @@ pub fn shadow_filter(
     // Surfaces through the light itself do not shadow it (POV-Ray lights cornell.pov's walls
     // from lights lying in its ceiling's plane), whatever the rounding of their distance.
     let distance = distance - SHADOW_EPSILON;
-    // The last object entered along the ray and where.
-    let mut entered: Option<(u32, f64)> = None;
+    // The objects entered along the ray and where, latest last: a ray leaving one of them
+    // crossed it from there, a ray leaving another one started inside it.
+    let mut entered = EnteredObjects::default();
+    // The objects met at (nearly) one place: surfaces of other objects coinciding with the
+    // first one met there (touching faces of two boxes) are crossed too, not stepped over.
+    let mut together = Coincident::default();
     for _ in 0..MAX_SHADOW_SURFACES {
-        let Some(hit) = world.first_shadow_hit(&ray, start, distance) else {
-            return filter;
+        let coincident = together.next(world, &ray, distance);
+        let hit = match coincident {
+            Some(hit) => hit,
+            None => {
+                let Some(hit) = world.first_shadow_hit(&ray, start, distance) else {
+                    return filter;
+                };
+                together.restart(start, hit.distance + SHADOW_EPSILON);
+                hit
+            }
         };
+        together.add(hit.material);
         let Some(material) = world.materials.get(hit.material as usize) else {
             return DVec3::ZERO;
         };
@@ -158,11 +171,10 @@ pub fn shadow_filter(
             filter *= fake_caustics(material, &hit, direction);
         }
         if direction.dot(hit.normal) < 0.0 {
-            entered = Some((hit.material, hit.distance));
+            entered.push(hit.material, hit.distance);
         } else {
-            let (since, from_outside) = match entered {
-                Some((id, at)) if id == hit.material => (at, true),
-                Some(_) => (hit.distance, true),
+            let (since, from_outside) = match entered.take(hit.material) {
+                Some(at) => (at, true),
                 None => (0.0, false),
             };
             // Shadow rays fade only with a positive `fade_power`; camera rays also fade with
@@ -182,14 +194,92 @@ pub fn shadow_filter(
                     from_outside,
                 );
             }
-            entered = None;
         }
         if !filter.is_finite() || filter.abs().max_element() < 1e-12 {
             return DVec3::ZERO;
         }
-        start = hit.distance + SHADOW_EPSILON;
+        start = start.max(hit.distance + SHADOW_EPSILON);
     }
     DVec3::ZERO
+}
+
+/// At most this many objects are crossed at one place along a shadow ray.
+const COINCIDENT_DEPTH: usize = 8;
+
+/// The objects (by material) a shadow ray met at one place: the first surface found beyond
+/// the last place and the others of different objects within [`SHADOW_EPSILON`] of it.
+#[derive(Default)]
+struct Coincident {
+    materials: [u32; COINCIDENT_DEPTH],
+    len: usize,
+    /// Where the search for the place's first surface started.
+    from: f64,
+    /// How far beyond that surface others still count as met with it.
+    to: f64,
+}
+
+impl Coincident {
+    /// A new place, found searching from `from`, whose surfaces end at `to`.
+    fn restart(&mut self, from: f64, to: f64) {
+        self.len = 0;
+        self.from = from;
+        self.to = to;
+    }
+
+    /// `material`'s object was crossed at this place.
+    fn add(&mut self, material: u32) {
+        if self.len < COINCIDENT_DEPTH {
+            self.materials[self.len] = material;
+            self.len += 1;
+        }
+    }
+
+    /// The next surface of another object at this place, if any (the nearest surface
+    /// not yet crossed is at or beyond the first one's, which was the nearest of all).
+    fn next(&self, world: &World, ray: &Ray, distance: f64) -> Option<SurfaceHit> {
+        if self.len == 0 || self.len >= COINCIDENT_DEPTH {
+            return None;
+        }
+        let crossed = &self.materials[..self.len];
+        world.first_shadow_hit_skipping(ray, self.from, self.to.min(distance), &|material| {
+            crossed.contains(&material)
+        })
+    }
+}
+
+/// How many entered objects a shadow ray remembers; deeper nesting forgets the earliest.
+const ENTERED_DEPTH: usize = 16;
+
+/// The objects (by material) a shadow ray has entered and not yet left, with the distance
+/// at which it entered each, latest last. No allocation.
+#[derive(Default)]
+struct EnteredObjects {
+    entries: [(u32, f64); ENTERED_DEPTH],
+    len: usize,
+}
+
+impl EnteredObjects {
+    /// The ray entered an object of `material` at `distance`.
+    fn push(&mut self, material: u32, distance: f64) {
+        if self.len == ENTERED_DEPTH {
+            self.entries.copy_within(1.., 0);
+            self.len -= 1;
+        }
+        self.entries[self.len] = (material, distance);
+        self.len += 1;
+    }
+
+    /// Where the ray entered the object of `material` it now leaves (the latest entered),
+    /// forgetting it; `None` when it was not entered along the ray (the ray started inside).
+    fn take(&mut self, material: u32) -> Option<f64> {
+        let at = self.entries[..self.len]
+            .iter()
+            .rposition(|entry| entry.0 == material)?;
+        let distance = self.entries[at].1;
+        self.entries.copy_within(at + 1..self.len, at);
+        self.len -= 1;
+        Some(distance)
+    }
 }
 
 /// The part of the light along `direction` that passes the surface at `hit`: through its

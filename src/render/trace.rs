@@ -42,6 +42,7 @@
 use super::atmosphere::AtmosphereShader;
 use super::dispersion::Bands;
 use super::encoding::is_legacy_scene;
+use super::interiors::{interiors_around, InteriorStack};
 use super::lights::{prepare_lights, SceneLight};
 use super::media::{ActiveMedia, MediaShader, Stretch};
 use super::optics::{
@@ -71,111 +72,8 @@ const TRACE_LEVEL_LIMIT: u32 = 256;
 /// At most this many surfaces are passed without bending along one ray.
 const MAX_CONTINUATIONS: u32 = 100_000;
 
-/// How many nested objects a ray remembers; deeper nesting forgets the outermost.
-const INTERIOR_STACK_DEPTH: usize = 16;
-
 /// Weights of red, green and blue in POV-Ray's grey value of a colour.
 const GREY_WEIGHTS: DVec3 = DVec3::new(0.297, 0.589, 0.114);
-
-/// The objects (by material) a ray is inside, innermost last, with their indices of refraction.
-#[derive(Clone, Copy, Debug)]
-pub struct InteriorStack {
-    entries: [(u32, f64); INTERIOR_STACK_DEPTH],
-    len: usize,
-    /// For a ray of one dispersion band: the exponent applied to `dispersion`.
-    band: Option<f64>,
-    /// The ray started inside a non-hollow object it does not know about (the camera is
-    /// inside one): no fog or media anywhere along it.
-    in_solid: bool,
-    /// Radiosity bounces behind the ray (0 for camera rays and their continuations).
-    radiosity_depth: u32,
-    /// The ray descends from a mirror reflection: the background it meets counts as
-    /// opaque for the alpha channel (POV-Ray: reflections of the background are not
-    /// transparent).
-    reflected: bool,
-}
-
-impl InteriorStack {
-    /// A ray in empty space (index of refraction 1).
-    pub const OUTSIDE: InteriorStack = InteriorStack {
-        entries: [(0, 1.0); INTERIOR_STACK_DEPTH],
-        len: 0,
-        band: None,
-        in_solid: false,
-        radiosity_depth: 0,
-        reflected: false,
-    };
-
-    /// Index of refraction of the innermost medium.
-    fn ior(&self) -> f64 {
-        match self.len {
-            0 => 1.0,
-            n => self.entries[n - 1].1,
-        }
-    }
-
-    /// The materials of the objects the ray is in, innermost first.
-    fn materials_innermost_first(&self) -> impl Iterator<Item = u32> + '_ {
-        self.entries[..self.len].iter().rev().map(|entry| entry.0)
-    }
-
-    /// The materials of the objects the ray is in, in the order it entered them.
-    fn materials_outermost_first(&self) -> impl Iterator<Item = u32> + '_ {
-        self.entries[..self.len].iter().map(|entry| entry.0)
-    }
-
-    /// Whether the ray is inside an object with this material.
-    fn contains(&self, material: u32) -> bool {
-        self.entries[..self.len]
-            .iter()
-            .any(|entry| entry.0 == material)
-    }
-
-    /// The stack after entering an object with this material and index.
-    fn entered(&self, material: u32, ior: f64) -> InteriorStack {
-        let mut stack = *self;
-        if stack.len == INTERIOR_STACK_DEPTH {
-            stack.entries.copy_within(1.., 0);
-            stack.len -= 1;
-        }
-        stack.entries[stack.len] = (material, ior);
-        stack.len += 1;
-        stack
-    }
-
-    /// The stack after leaving an object with this material (unchanged when the ray was not
-    /// known to be inside it, e.g. a camera inside an object).
-    fn left(&self, material: u32) -> InteriorStack {
-        let mut stack = *self;
-        if let Some(at) = stack.entries[..stack.len]
-            .iter()
-            .rposition(|entry| entry.0 == material)
-        {
-            stack.entries.copy_within(at + 1..stack.len, at);
-            stack.len -= 1;
-        }
-        stack
-    }
-}
-
-/// The stack of a ray starting at `point`: inside every object around it, outermost first
-/// (measured: a camera inside a hollow sphere of media sees the media from its first step).
-fn interiors_around(world: &World, point: DVec3) -> InteriorStack {
-    let start = InteriorStack {
-        in_solid: world.inside_solid(point),
-        ..InteriorStack::OUTSIDE
-    };
-    world
-        .materials_around(point)
-        .into_iter()
-        .fold(start, |stack, id| {
-            let ior = world
-                .materials
-                .get(id as usize)
-                .map_or(1.0, |material| sanitise_ior(material.interior.ior));
-            stack.entered(id, ior)
-        })
-}
 
 /// Traces rays through one scene; shared read-only by all threads.
 pub struct Tracer<'a> {
@@ -312,10 +210,7 @@ impl<'a> Tracer<'a> {
         if !radiosity.lights_depth(depth) || level >= self.max_trace_level {
             return DVec3::ZERO;
         }
-        let gathering = InteriorStack {
-            radiosity_depth: depth + 1,
-            ..InteriorStack::OUTSIDE
-        };
+        let gathering = InteriorStack::OUTSIDE.at_radiosity_depth(depth + 1);
         radiosity.irradiance(point, normal, depth, &|direction| {
             let ray = Ray {
                 origin: point,
@@ -523,8 +418,8 @@ impl<'a> Tracer<'a> {
                 active.extend(&material.interior.media, material.light_group);
             }
         }
-        active.extend(&self.scene.atmosphere.media, None);
-        let shader = MediaShader::new(self.world, &self.lights);
+        active.extend_atmosphere(&self.scene.atmosphere.media);
+        let shader = MediaShader::new(self.world, &self.lights).with_photons(self.photons.as_ref());
         let stretch = Stretch {
             origin: ray.origin,
             direction: ray.direction,
@@ -872,10 +767,7 @@ impl<'a> Tracer<'a> {
                     reflected,
                     level + 1,
                     reflection_weight,
-                    &InteriorStack {
-                        reflected: true,
-                        ..*inside
-                    },
+                    &inside.reflected(),
                     RayKind::Reflected,
                 );
                 let mirrored = reflection * apply_exponent(seen, finish.reflection_exponent);

@@ -24,8 +24,12 @@ pub struct PhotonSettings {
     pub gather_min: u32,
     /// Most photons a gather uses (default 100).
     pub gather_max: u32,
-    /// `media MAX_STEPS, FACTOR`: accepted; media photons are not deposited.
+    /// `media MAX_STEPS, FACTOR`: media photons are deposited in scattering media, at
+    /// most `MAX_STEPS` per stretch of a photon's path (0: none).
     pub media_steps: u32,
+    /// `media` second value: media photons lie `FACTOR` times the spacing apart along a
+    /// photon's path (default 1).
+    pub media_factor: f64,
     /// Jitter of shooting directions, as a fraction of the angular spacing (default 0.4).
     pub jitter: f64,
     /// Bounces of a photon (`max_trace_level`; the scene's when `None`).
@@ -43,6 +47,10 @@ pub struct PhotonSettings {
     pub radius: f64,
     /// `radius` second value: multiplies the gather radius (default 1).
     pub radius_multiplier: f64,
+    /// `radius` third value: gather radius for media photons (0: estimated).
+    pub media_radius: f64,
+    /// `radius` fourth value: multiplies the media photons' gather radius (default 1).
+    pub media_radius_multiplier: f64,
 }
 
 impl Default for PhotonSettings {
@@ -52,6 +60,7 @@ impl Default for PhotonSettings {
             gather_min: 20,
             gather_max: 100,
             media_steps: 0,
+            media_factor: 1.0,
             jitter: 0.4,
             max_trace_level: None,
             adc_bailout: None,
@@ -60,6 +69,8 @@ impl Default for PhotonSettings {
             expand_min: 40,
             radius: 0.0,
             radius_multiplier: 1.0,
+            media_radius: 0.0,
+            media_radius_multiplier: 1.0,
         }
     }
 }

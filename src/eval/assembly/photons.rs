@@ -3,7 +3,7 @@
 //! In: the block's items. Out: [`PhotonSettings`] in the global settings, [`ObjectPhotons`]
 //! on an object, [`LightPhotons`] on a light. Holds: out-of-range values are reported with
 //! their span; `save_file` and `load_file` are refused with a warning (photons are shot
-//! afresh for every render), media photons are accepted and not deposited.
+//! afresh for every render); a `media` spacing factor must be positive.
 
 use crate::diag::Span;
 use crate::eval::language::stream::Stream;
@@ -54,13 +54,18 @@ impl Evaluator {
                 "media" => {
                     let steps = self.photon_whole_or_zero(stream, "a number of steps")?;
                     photons.media_steps = steps;
-                    // The spacing factor: accepted with the step count.
-                    let _ = self.optional_second_value(stream)?;
-                    if steps > 0 {
-                        self.runtime.warn(
-                            *span,
-                            "media photons are not supported yet; media show no caustics",
-                        );
+                    if let Some((factor, factor_span)) = self.optional_second_value(stream)? {
+                        if !(factor > 0.0 && factor.is_finite()) {
+                            return Err(self
+                                .runtime
+                                .error(
+                                    factor_span,
+                                    format!("media photon spacing factor {factor} is not positive"),
+                                )
+                                .with_label("expected a number above 0")
+                                .into());
+                        }
+                        photons.media_factor = factor;
                     }
                 }
                 "jitter" => {
@@ -162,7 +167,8 @@ impl Evaluator {
                     match slot {
                         0 => photons.radius = number,
                         1 if number > 0.0 => photons.radius_multiplier = number,
-                        // Media photons are not gathered: their radius is accepted.
+                        2 => photons.media_radius = number,
+                        3 if number > 0.0 => photons.media_radius_multiplier = number,
                         _ => {}
                     }
                     after_value = true;
