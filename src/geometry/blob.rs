@@ -106,22 +106,7 @@ impl Element {
 
     /// The field at blob-space `point`.
     fn value(&self, point: DVec3) -> f64 {
-        let q = self.component_from_blob.transform_point3(point);
-        let offset = q - self.centre;
-        let along = offset.dot(self.axis);
-        if self.axis != DVec3::ZERO && (along < self.slab.0 || along > self.slab.1) {
-            return 0.0;
-        }
-        let radial = if self.perpendicular {
-            offset - self.axis * along
-        } else {
-            offset
-        };
-        let falloff = 1.0 - radial.length_squared() * self.inverse_radius_squared;
-        if falloff <= 0.0 {
-            return 0.0;
-        }
-        self.strength * falloff * falloff
+        self.field(point).0
     }
 
     /// The field at blob-space `point`, and its gradient.

@@ -216,12 +216,7 @@ impl World {
         min_distance: f64,
         max_distance: f64,
     ) -> Option<SurfaceHit> {
-        let materials = &self.materials;
-        self.search(ray, min_distance, max_distance, true, &|material: u32| {
-            materials
-                .get(material as usize)
-                .is_some_and(|material| material.no_shadow)
-        })
+        self.first_shadow_hit_skipping(ray, min_distance, max_distance, &|_| false)
     }
 
     /// Nearest hit like [`World::first_shadow_hit`], also ignoring objects whose material

@@ -45,7 +45,7 @@ pub mod trace;
 #[cfg(test)]
 mod tests;
 
-pub use output::{write_png_atomic, RenderedImage};
+pub use output::RenderedImage;
 
 use crate::geometry::World;
 use crate::scene::Scene;

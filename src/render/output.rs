@@ -261,17 +261,12 @@ pub fn encode(image: &RenderedImage, options: &OutputOptions) -> io::Result<Vec<
             .map(|v| v as u8)
             .collect()
     };
-    let bytes16 = |big_endian: bool| -> Vec<u8> {
+    // image's encoders take 16-bit samples in native byte order.
+    let bytes16 = || -> Vec<u8> {
         image
             .samples(channels, options.bits, options)
             .into_iter()
-            .flat_map(|v| {
-                if big_endian {
-                    v.to_be_bytes()
-                } else {
-                    v.to_ne_bytes()
-                }
-            })
+            .flat_map(u16::to_ne_bytes)
             .collect()
     };
     let colour_type = |wide: bool| match (alpha, wide) {
@@ -285,7 +280,7 @@ pub fn encode(image: &RenderedImage, options: &OutputOptions) -> io::Result<Vec<
         FileFormat::Png => {
             let wide = options.bits > 8;
             let data = if wide {
-                bytes16(false)
+                bytes16()
             } else {
                 bytes8(options.bits)
             };
@@ -447,12 +442,6 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
     result
 }
 
-/// Writes `image` as an 8-bit PNG to `path`, atomically.
-pub fn write_png_atomic(path: &Path, image: &Image) -> io::Result<()> {
-    let bytes = encode_png(image)?;
-    write_atomic(path, &bytes)
-}
-
 /// Writes `bytes` to `temporary`, flushes them to disk and renames the file to `target`.
 fn write_then_rename(temporary: &Path, target: &Path, bytes: &[u8]) -> io::Result<()> {
     let mut file = File::options()
@@ -463,32 +452,6 @@ fn write_then_rename(temporary: &Path, target: &Path, bytes: &[u8]) -> io::Resul
     file.sync_all()?;
     drop(file);
     fs::rename(temporary, target)
-}
-
-/// The PNG file contents for an 8-bit `image`.
-pub fn encode_png(image: &Image) -> io::Result<Vec<u8>> {
-    let expected = (image.width as usize).checked_mul(image.height as usize);
-    if image.width == 0 || image.height == 0 || expected != Some(image.pixels.len()) {
-        return Err(io::Error::new(
-            io::ErrorKind::InvalidInput,
-            format!(
-                "image of {}x{} pixels holds {} pixels",
-                image.width,
-                image.height,
-                image.pixels.len()
-            ),
-        ));
-    }
-    let mut encoded = Vec::new();
-    PngEncoder::new(&mut encoded)
-        .write_image(
-            image.pixels.as_flattened(),
-            image.width,
-            image.height,
-            ExtendedColorType::Rgb8,
-        )
-        .map_err(io::Error::other)?;
-    Ok(with_colour_space_chunks(encoded))
 }
 
 /// Inserts `gAMA` and `sRGB` chunks after the `IHDR` chunk of an encoded PNG.
@@ -541,12 +504,19 @@ mod tests {
         folder
     }
 
-    fn small_image() -> Image {
-        Image {
+    /// Two pixels written as [255, 0, 0] and [0, 128, 255].
+    fn small_image() -> RenderedImage {
+        RenderedImage {
             width: 2,
             height: 1,
-            pixels: vec![[255, 0, 0], [0, 128, 255]],
+            pixels: vec![[1.0, 0.0, 0.0, 1.0], [0.0, 128.0 / 255.0, 1.0, 1.0]],
+            encoding: OutputEncoding::Unchanged,
         }
+    }
+
+    /// `image` as an 8-bit PNG at `path`, written atomically.
+    fn write_png_atomic(path: &Path, image: &RenderedImage) -> io::Result<()> {
+        write_atomic(path, &encode(image, &OutputOptions::png())?)
     }
 
     #[test]
@@ -614,10 +584,11 @@ mod tests {
         // An invalid image is refused before the old file is touched.
         let old = folder.join("old.png");
         fs::write(&old, b"old image").unwrap();
-        let broken = Image {
+        let broken = RenderedImage {
             width: 3,
             height: 3,
-            pixels: vec![[0; 3]; 2],
+            pixels: vec![[0.0; 4]; 2],
+            encoding: OutputEncoding::Unchanged,
         };
         assert!(write_png_atomic(&old, &broken).is_err());
         assert_eq!(fs::read(&old).unwrap(), b"old image");

@@ -263,19 +263,6 @@ impl<'a> Tracer<'a> {
         self.trace_measuring(ray, level, weight, inside, kind).0
     }
 
-    /// [`Self::trace`]'s colour and the share of background seen along the ray.
-    fn trace_seeing_background(
-        &self,
-        ray: Ray,
-        level: u32,
-        weight: RayWeight,
-        inside: &InteriorStack,
-        kind: RayKind,
-    ) -> (DVec3, f64) {
-        let (colour, _, background) = self.trace_measuring(ray, level, weight, inside, kind);
-        (colour, background)
-    }
-
     /// [`Self::trace`]'s colour, the distance to the first surface the ray meets (infinite
     /// when it meets none) and the share of background it sees (0 without alpha).
     fn trace_measuring(
@@ -735,7 +722,7 @@ impl<'a> Tracer<'a> {
                     origin: hit.point,
                     direction: bent,
                 };
-                let (seen, background) = self.trace_seeing_background(
+                let (seen, _, background) = self.trace_measuring(
                     through,
                     level + 1,
                     pass_weight,

@@ -101,22 +101,8 @@ impl Evaluator {
         while let Some(modifier) = self.next_item(body)? {
             match &modifier {
                 Item::Comma(_) => {}
-                Item::Keyword(word, _)
-                    if matches!(
-                        &**word,
-                        "translate" | "rotate" | "scale" | "matrix" | "transform"
-                    ) =>
-                {
-                    self.object_modifier(
-                        &mut part,
-                        modifier,
-                        body,
-                        "blob component",
-                        &mut uv_mapping,
-                    )?;
-                }
-                Item::Block(block) if matches!(&block.head, BlockHead::Word(w) if &**w == "finish") =>
-                {
+                // Transformations and a finish apply as they do to an object.
+                _ if is_transform_or_finish(&modifier) => {
                     self.object_modifier(
                         &mut part,
                         modifier,
@@ -179,5 +165,17 @@ impl SharedTextures {
         let texture = Arc::new(texture);
         self.plain.push((colour, finish, Arc::clone(&texture)));
         texture
+    }
+}
+
+/// Whether a blob component's item is a transformation keyword or a `finish` block.
+fn is_transform_or_finish(item: &Item) -> bool {
+    match item {
+        Item::Keyword(word, _) => matches!(
+            &**word,
+            "translate" | "rotate" | "scale" | "matrix" | "transform"
+        ),
+        Item::Block(block) => matches!(&block.head, BlockHead::Word(w) if &**w == "finish"),
+        _ => false,
     }
 }
