@@ -6,6 +6,7 @@
 pub mod accel;
 pub mod diag;
 pub mod eval;
+pub mod expand;
 pub mod geometry;
 pub mod hash;
 pub mod math;

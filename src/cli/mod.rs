@@ -11,6 +11,7 @@
 //! 130 interrupted (Ctrl-C: the render stops, the previous image is left as it was).
 
 mod animation;
+mod expand;
 mod povray_options;
 mod render_job;
 mod stats;
@@ -60,6 +61,9 @@ enum Command {
     Render(RenderArgs),
     /// Parse and evaluate a scene without rendering; print diagnostics and a summary.
     Check(SceneArgs),
+    /// Write the evaluated scene as flat POV-Ray SDL (no macros, loops, includes or
+    /// identifiers); takes render's options; `-o FLAT.pov` (default: standard output).
+    Expand(RenderArgs),
 }
 
 #[derive(Args)]
@@ -119,6 +123,9 @@ struct RenderArgs {
     /// Render only frame N of the animation (POV-Ray's +SF N +EF N).
     #[arg(long, value_name = "N")]
     frame: Option<i64>,
+    /// The value of `clock` for a single frame (POV-Ray's +K).
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    clock: Option<f64>,
     /// Print render statistics at the end: `text` (as POV-Ray's +GS) or `json` (on
     /// standard output, for scripts).
     #[arg(long, value_name = "text|json", num_args = 0..=1, default_missing_value = "text",
@@ -199,6 +206,7 @@ const VALUE_FLAGS: &[&str] = &[
     "--define",
     "--frames",
     "--frame",
+    "--clock",
     "--aa-method",
     "--aa-depth",
     "--jitter",
@@ -277,6 +285,10 @@ pub fn run() -> i32 {
         .collect();
     match words.first().map(String::as_str) {
         Some("render") => render_command(&words[1..], false),
+        Some("expand") => match parse_render_words(&words[1..], false) {
+            Ok(settings) => expand::run(settings),
+            Err(code) => code,
+        },
         // `-V` alone is the version (POV-Ray's `-V`, verbose off, needs a scene with it).
         Some("-V") if words.len() == 1 => {
             println!("durer {}", env!("CARGO_PKG_VERSION"));
@@ -288,7 +300,7 @@ pub fn run() -> i32 {
                     command: Command::Check(args),
                 }) => check(args),
                 Ok(Cli {
-                    command: Command::Render(_),
+                    command: Command::Render(_) | Command::Expand(_),
                 }) => render_command(&words[1..], false),
                 Err(error) => {
                     let _ = error.print();
@@ -306,6 +318,19 @@ pub fn run() -> i32 {
 
 /// `durer render ...` (or POV-Ray's command line when `povray_mode`).
 fn render_command(words: &[String], povray_mode: bool) -> i32 {
+    match parse_render_args(words, povray_mode) {
+        Ok((settings, args)) => render_job::run(settings, &args, povray_mode),
+        Err(code) => code,
+    }
+}
+
+/// The settings `render`'s words give (`Err`: the exit code after a usage message).
+fn parse_render_words(words: &[String], povray_mode: bool) -> Result<Settings, i32> {
+    parse_render_args(words, povray_mode).map(|(settings, _)| settings)
+}
+
+/// `render`'s words read into settings and the parsed flags.
+fn parse_render_args(words: &[String], povray_mode: bool) -> Result<(Settings, RenderArgs), i32> {
     let (durer_words, povray_words) = split_words(words, povray_mode);
     #[derive(Parser)]
     #[command(name = "durer render", after_help = AFTER_HELP)]
@@ -319,18 +344,17 @@ fn render_command(words: &[String], povray_mode: bool) -> i32 {
         Ok(cli) => cli.args,
         Err(error) => {
             let _ = error.print();
-            return if error.use_stderr() { EXIT_USAGE } else { 0 };
+            return Err(if error.use_stderr() { EXIT_USAGE } else { 0 });
         }
     };
     args.povray_words = povray_words;
-    let settings = match settings_for(&args, povray_mode) {
-        Ok(settings) => settings,
+    match settings_for(&args, povray_mode) {
+        Ok(settings) => Ok((settings, args)),
         Err(message) => {
             eprintln!("durer: {message}");
-            return EXIT_USAGE;
+            Err(EXIT_USAGE)
         }
-    };
-    render_job::run(settings, &args, povray_mode)
+    }
 }
 
 /// The settings of a render: defaults, default INI (POV-Ray mode), POV-Ray words in order,
@@ -429,6 +453,9 @@ fn settings_for(args: &RenderArgs, povray_mode: bool) -> Result<Settings, String
         }
         settings.subset_start = Some(frame as f64);
         settings.subset_end = Some(frame as f64);
+    }
+    if let Some(clock) = args.clock {
+        settings.clock = Some(clock);
     }
     Ok(settings)
 }

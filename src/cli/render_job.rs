@@ -384,19 +384,14 @@ enum FrameOutcome {
     Interrupted,
 }
 
-#[allow(clippy::too_many_arguments)]
-fn render_frame(
+/// The evaluation options of one frame (`file` is the image written, whose folder the
+/// scene may write into).
+pub(super) fn eval_options(
     settings: &Settings,
-    scene_path: &Path,
     frame: &FrameClock,
-    render_options: &RenderOptions,
-    plan: &OutputPlan,
     file: Option<&Path>,
-    pool: &rayon::ThreadPool,
-    summary: &mut super::stats::Summary,
-) -> FrameOutcome {
-    let start = Instant::now();
-    let options = EvalOptions {
+) -> EvalOptions {
+    EvalOptions {
         include_paths: settings.library_paths.clone(),
         image_width: settings.width,
         image_height: settings.height,
@@ -416,7 +411,22 @@ fn render_frame(
         print_debug: settings.streams.debug,
         output_folder: file.and_then(Path::parent).map(Path::to_path_buf),
         search_installed_povray: true,
-    };
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn render_frame(
+    settings: &Settings,
+    scene_path: &Path,
+    frame: &FrameClock,
+    render_options: &RenderOptions,
+    plan: &OutputPlan,
+    file: Option<&Path>,
+    pool: &rayon::ThreadPool,
+    summary: &mut super::stats::Summary,
+) -> FrameOutcome {
+    let start = Instant::now();
+    let options = eval_options(settings, frame, file);
     let evaluated = evaluate(scene_path, options);
     let warnings = settings.streams.warning && settings.warning_level > 0;
     let failed = print_diagnostics(&evaluated, warnings);

@@ -114,6 +114,22 @@ impl RasterFormat {
         })
     }
 
+    /// The format's keyword in SDL.
+    pub fn keyword(self) -> &'static str {
+        match self {
+            RasterFormat::Png => "png",
+            RasterFormat::Jpeg => "jpeg",
+            RasterFormat::Tga => "tga",
+            RasterFormat::Ppm => "ppm",
+            RasterFormat::Pgm => "pgm",
+            RasterFormat::Hdr => "hdr",
+            RasterFormat::Gif => "gif",
+            RasterFormat::Pot => "pot",
+            RasterFormat::Bmp => "bmp",
+            RasterFormat::System => "sys",
+        }
+    }
+
     /// The file extensions tried, in order, for a file name written without one (POV-Ray
     /// adds the type's extension: `png "wood"` reads `wood.png`).
     pub fn extensions(self) -> &'static [&'static str] {

@@ -31,7 +31,7 @@ pub use light_group::{separate_light_groups, LightGroup};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use mesh::{Mesh, MeshTriangle, DEFAULT_TRIANGLE_UVS, FLAT_FACE};
 pub use parametric::Parametric;
-pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, PhotonSettings};
+pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, PhotonItemsGiven, PhotonSettings};
 pub use radiosity::RadiositySettings;
 pub use spindle::Lemon;
 pub use uv_faces::{UvFace, UvFaces, UvHit};

@@ -75,6 +75,24 @@ impl Default for PhotonSettings {
     }
 }
 
+/// The items of an object's `photons { }` block that were written (see
+/// [`ObjectPhotons::given`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PhotonItemsGiven {
+    pub target: bool,
+    pub refraction: bool,
+    pub reflection: bool,
+    pub collect: bool,
+    pub pass_through: bool,
+}
+
+impl PhotonItemsGiven {
+    /// True when the block said anything.
+    pub fn any(&self) -> bool {
+        self.target || self.refraction || self.reflection || self.collect || self.pass_through
+    }
+}
+
 /// An object's `photons { }` block, packed into eight bytes (scenes hold many objects).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ObjectPhotons {
@@ -188,6 +206,18 @@ impl ObjectPhotons {
         let from_parent = parent.explicit & !Self::TARGET_BIT;
         self.flags = (self.flags & !from_parent) | (parent.flags & from_parent);
         self.explicit |= parent.explicit;
+    }
+
+    /// Which items the scene's blocks gave explicitly (what a writer must say again).
+    pub fn given(&self) -> PhotonItemsGiven {
+        let bit = |b: u8| self.explicit & b != 0;
+        PhotonItemsGiven {
+            target: bit(Self::TARGET_BIT),
+            refraction: bit(Self::REFRACTION_BIT),
+            reflection: bit(Self::REFLECTION_BIT),
+            collect: bit(Self::COLLECT_BIT),
+            pass_through: bit(Self::PASS_THROUGH_BIT),
+        }
     }
 
     fn set(&mut self, bit: u8, on: bool) {

@@ -259,6 +259,7 @@ mod tests {
             palette_indices: None,
             palette_filter: Vec::new(),
             palette_transmit: Vec::new(),
+            file: None,
         }
     }
 

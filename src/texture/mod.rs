@@ -244,6 +244,19 @@ pub struct ImageMap {
     pub palette_filter: Vec<(u8, f64)>,
     /// `transmit N, T` of single palette entries (replacing `transmit_all` for them).
     pub palette_transmit: Vec<(u8, f64)>,
+    /// The file the pixels came from, as the block named it (for writing the scene back).
+    pub file: Option<Arc<ImageFile>>,
+}
+
+/// Where an image's pixels came from: the file found, its format and the `gamma` given.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImageFile {
+    /// The file as found on the search path.
+    pub path: std::path::PathBuf,
+    /// The format keyword given (`sys` when none).
+    pub format: crate::raster::RasterFormat,
+    /// The `gamma` given in the block, if any.
+    pub gamma: Option<ImageGamma>,
 }
 
 impl Texture {

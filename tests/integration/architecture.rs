@@ -30,6 +30,8 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("texture", &["hash", "math", "noise", "raster"]),
     // The evaluated scene: plain data.
     ("scene", &["hash", "math", "noise", "raster", "texture"]),
+    // The evaluated scene written back as flat SDL.
+    ("expand", &["math", "noise", "texture", "scene"]),
     // Render objects: shapes, CSG, materials, the world.
     (
         "geometry",

@@ -304,6 +304,11 @@ impl Evaluator {
             palette_indices: raster.palette_indices,
             palette_filter,
             palette_transmit,
+            file: Some(Arc::new(crate::texture::ImageFile {
+                path: path.clone(),
+                format,
+                gamma,
+            })),
         };
         Ok((image, bump_size))
     }

@@ -715,6 +715,10 @@ impl Evaluator {
         let grid = std::fs::read(&path)
             .map_err(|error| error.to_string())
             .and_then(|bytes| DensityFile::parse(&bytes))
+            .map(|mut grid| {
+                grid.path = Some(path.clone());
+                grid
+            })
             .map_err(|message| {
                 self.runtime
                     .error(

@@ -63,6 +63,11 @@ impl Function {
         }
     }
 
+    /// What the function computes.
+    pub fn body(&self) -> &Body {
+        &self.body
+    }
+
     /// Number of parameters.
     pub fn arity(&self) -> usize {
         self.arity

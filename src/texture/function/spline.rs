@@ -50,6 +50,11 @@ pub struct Spline {
 }
 
 impl Spline {
+    /// The (parameter, point) pairs, ascending by parameter.
+    pub fn points(&self) -> &[(f64, [f64; 5])] {
+        &self.points
+    }
+
     /// A spline of `kind` without points.
     pub fn new(kind: SplineKind) -> Spline {
         Spline {

@@ -23,6 +23,8 @@ pub struct DensityFile {
     size: [usize; 3],
     /// The values in [0, 1], x fastest, then y, then z.
     values: Vec<f32>,
+    /// The file the grid was read from (for writing the scene back), when known.
+    pub path: Option<std::path::PathBuf>,
 }
 
 impl DensityFile {
@@ -70,7 +72,11 @@ impl DensityFile {
                 (f64::from(raw) / largest) as f32
             })
             .collect();
-        Ok(DensityFile { size, values })
+        Ok(DensityFile {
+            size,
+            values,
+            path: None,
+        })
     }
 
     /// The value at a pattern-space point with `interpolation` 0 (nearest voxel), 1
