@@ -5,7 +5,7 @@ use super::functions::write_function_block;
 use super::settings::write_light;
 use super::{address, matrix, number, on_off, vector, vector2, Unsupported, Writer, Written};
 use crate::scene::{
-    BlobKind, Container, CsgOperation, Extrusion, JuliaAlgebra, JuliaFunction, Mesh, Object, Scene,
+    BlobKind, Container, HeightFieldSource, OutlineSpline, CsgOperation, Extrusion, JuliaAlgebra, JuliaFunction, Mesh, Object, Scene,
     Shape, SweepSpline, FLAT_FACE,
 };
 use std::fmt::Write as _;
@@ -320,14 +320,30 @@ fn write_shape(writer: &mut Writer, out: &mut String, shape: &Shape) -> Written 
                 out.push_str(" open");
             }
         }
-        Shape::Lathe(segments) => {
-            let _ = write!(out, "lathe {{ bezier_spline {}", segments.len() * 4);
-            for segment in segments.iter() {
-                for point in segment {
+        Shape::Lathe { segments, source } => match source {
+            // The points as written: a cubic spline's Bézier controls may have negative
+            // radii, which POV-Ray refuses in a lathe.
+            Some(outline) => {
+                let spline = match outline.spline {
+                    OutlineSpline::Linear => "linear_spline",
+                    OutlineSpline::Quadratic => "quadratic_spline",
+                    OutlineSpline::Cubic => "cubic_spline",
+                    OutlineSpline::Bezier => "bezier_spline",
+                };
+                let _ = write!(out, "lathe {{ {spline} {}", outline.points.len());
+                for point in &outline.points {
                     let _ = write!(out, ", {}", vector2(*point));
                 }
             }
-        }
+            None => {
+                let _ = write!(out, "lathe {{ bezier_spline {}", segments.len() * 4);
+                for segment in segments.iter() {
+                    for point in segment {
+                        let _ = write!(out, ", {}", vector2(*point));
+                    }
+                }
+            }
+        },
         Shape::Isosurface(iso) => {
             out.push_str("isosurface { ");
             write_function_block(writer, out, &iso.function, &["x", "y", "z"])?;
@@ -346,8 +362,39 @@ fn write_shape(writer: &mut Writer, out: &mut String, shape: &Shape) -> Written 
                 out.push_str(" open");
             }
         }
-        Shape::HeightField(_) => {
-            return Err(Unsupported("a height_field".into()));
+        Shape::HeightField(field) => {
+            match &field.source {
+                Some(HeightFieldSource::Image { path, format }) => {
+                    let _ = write!(
+                        out,
+                        "height_field {{ {} {}",
+                        format.keyword(),
+                        writer.file_name(path)
+                    );
+                }
+                Some(HeightFieldSource::Function {
+                    function,
+                    columns,
+                    rows,
+                }) => {
+                    let _ = write!(out, "height_field {{ function {columns}, {rows} {{ ");
+                    let mut block = String::new();
+                    write_function_block(writer, &mut block, function, &["x", "y", "z"])?;
+                    // `function { BODY }` without its keyword and braces: the resolution
+                    // sits between them.
+                    let body = block
+                        .strip_prefix("function { ")
+                        .and_then(|rest| rest.strip_suffix(" }"))
+                        .unwrap_or(&block);
+                    out.push_str(body);
+                    out.push_str(" }");
+                }
+                None => return Err(Unsupported("a height_field of unknown origin".into())),
+            }
+            if field.smooth {
+                out.push_str(" smooth");
+            }
+            let _ = write!(out, " water_level {}", number(field.water_level));
         }
         Shape::SphereSweep(sweep) => {
             let kind = match sweep.spline {

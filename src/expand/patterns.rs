@@ -52,6 +52,14 @@ pub(super) fn write_pattern_modifiers(
         | PatternKind::Spiral2(_) => WaveShape::Triangle,
         _ => WaveShape::Ramp,
     };
+    if let PatternKind::Brick { size, mortar } = &pattern.kind {
+        let _ = write!(
+            out,
+            " brick_size {} mortar {}",
+            vector(*size),
+            number(*mortar)
+        );
+    }
     let wave = &pattern.wave;
     if wave.shape != default_shape {
         match wave.shape {
@@ -168,15 +176,9 @@ pub(super) fn write_pattern_kind(
         }
         PatternKind::Boxed => "boxed",
         PatternKind::Bozo => "bozo",
-        PatternKind::Brick { size, mortar } => {
-            let _ = write!(
-                out,
-                "brick brick_size {} mortar {}",
-                vector(*size),
-                number(*mortar)
-            );
-            return Ok(());
-        }
+        // Its size and mortar are written with the modifiers: a brick's two colours or
+        // pigments must follow the keyword directly.
+        PatternKind::Brick { .. } => "brick",
         PatternKind::Bumps => "bumps",
         PatternKind::Cells => "cells",
         PatternKind::Checker => "checker",

@@ -51,6 +51,24 @@ pub struct HeightField {
     pub smooth: bool,
     /// Parts at or below this height are left out (`water_level`, default 0).
     pub water_level: f64,
+    /// What the heights were made from (for writing the scene back), when known.
+    pub source: Option<HeightFieldSource>,
+}
+
+/// The file or function a height field's grid was sampled from.
+#[derive(Clone, Debug)]
+pub enum HeightFieldSource {
+    /// An image file (format keyword as given, `sys` when none).
+    Image {
+        path: std::path::PathBuf,
+        format: crate::raster::RasterFormat,
+    },
+    /// `function W, H { .. }`.
+    Function {
+        function: std::sync::Arc<crate::texture::function::Function>,
+        columns: usize,
+        rows: usize,
+    },
 }
 
 /// `sphere_sweep { .. }`: a sphere of varying radius moved along a spline.

@@ -23,7 +23,9 @@ pub use camera::{
     Camera, CameraFace, CylinderKind, FocalBlur, MeshCamera, MeshDistribution, Projection,
     DEFAULT_ANGLE,
 };
-pub use implicit::{Container, HeightField, Isosurface, SphereSweep, SweepSpline};
+pub use implicit::{
+    Container, HeightField, HeightFieldSource, Isosurface, SphereSweep, SweepSpline,
+};
 pub use interior::Interior;
 pub use julia::{JuliaAlgebra, JuliaFractal, JuliaFunction};
 pub use light::{AreaLight, LightSource, Spotlight};
@@ -302,7 +304,11 @@ pub enum Shape {
     },
     /// `lathe { .. }`: a curve in the (radius, height) plane, as cubic Béziers of `<r, y>`
     /// points, turned around the Y axis.
-    Lathe(Arc<Vec<[glam::DVec2; 4]>>),
+    Lathe {
+        segments: Arc<Vec<[glam::DVec2; 4]>>,
+        /// The spline and points as written (for writing the scene back), when known.
+        source: Option<Arc<SplineOutline>>,
+    },
     /// `isosurface { .. }`: where a function equals its threshold.
     Isosurface(Arc<Isosurface>),
     /// `height_field { .. }`: a grid of heights over the unit square.
@@ -322,6 +328,22 @@ pub enum Shape {
         operation: CsgOperation,
         children: Vec<Object>,
     },
+}
+
+/// A `lathe`'s or `prism`'s points as written, with the spline that joins them.
+#[derive(Clone, Debug)]
+pub struct SplineOutline {
+    pub spline: OutlineSpline,
+    pub points: Vec<glam::DVec2>,
+}
+
+/// How the points of a lathe or prism are joined.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OutlineSpline {
+    Linear,
+    Quadratic,
+    Cubic,
+    Bezier,
 }
 
 /// The outlines of a `polygon`, already closed.

@@ -3,6 +3,7 @@
 mod architecture;
 mod cli;
 mod diagnostics;
+mod expand;
 mod includes;
 mod language;
 mod povray_cli;

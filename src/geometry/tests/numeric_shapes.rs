@@ -140,6 +140,7 @@ fn wavy_height_field(smooth: bool) -> HeightField {
         heights,
         smooth,
         water_level: 0.0,
+        source: None,
     })
     .unwrap()
 }

@@ -14,7 +14,7 @@ use crate::eval::language::stream::Stream;
 use crate::eval::language::value::Value;
 use crate::eval::{EvalResult, Evaluator};
 use crate::raster::{Raster, RasterFormat};
-use crate::scene::{HeightField, Shape};
+use crate::scene::{HeightField, HeightFieldSource, Shape};
 use crate::syntax::ast::{Expr, FunctionLiteral, Item};
 use std::rc::Rc;
 use std::sync::Arc;
@@ -34,7 +34,7 @@ impl Evaluator {
         stream: &mut Stream,
     ) -> EvalResult<Shape> {
         let first = self.next_item(stream)?;
-        let (columns, rows, heights) = match first {
+        let (columns, rows, heights, source) = match first {
             Some(Item::Expr(Expr::Function(literal))) => self.height_function(&literal)?,
             Some(Item::Keyword(word, keyword_span)) => {
                 let Some(format) = RasterFormat::from_keyword(&word) else {
@@ -77,6 +77,7 @@ impl Evaluator {
             heights,
             smooth: false,
             water_level: 0.0,
+            source: Some(source),
         };
         while let Some(item) = self.next_item(stream)? {
             match &item {
@@ -127,7 +128,7 @@ impl Evaluator {
         name: &str,
         span: Span,
         format: RasterFormat,
-    ) -> EvalResult<(usize, usize, Vec<f64>)> {
+    ) -> EvalResult<(usize, usize, Vec<f64>, HeightFieldSource)> {
         let path = self
             .runtime
             .find_image(name, span, "height field image", format)?;
@@ -145,14 +146,15 @@ impl Evaluator {
                 .error(span, "a height field image needs at least 2 by 2 pixels")
                 .into());
         }
-        Ok(image_heights(&raster))
+        let (columns, rows, heights) = image_heights(&raster);
+        Ok((columns, rows, heights, HeightFieldSource::Image { path, format }))
     }
 
     /// The grid of `function W, H { .. }`.
     fn height_function(
         &mut self,
         literal: &Rc<FunctionLiteral>,
-    ) -> EvalResult<(usize, usize, Vec<f64>)> {
+    ) -> EvalResult<(usize, usize, Vec<f64>, HeightFieldSource)> {
         let [width, height] = literal.resolution.as_slice() else {
             return Err(self
                 .runtime
@@ -185,7 +187,12 @@ impl Evaluator {
                 heights[row * columns + column] = function_level(value) / HEIGHT_DIVISOR;
             }
         }
-        Ok((columns, rows, heights))
+        let source = HeightFieldSource::Function {
+            function,
+            columns,
+            rows,
+        };
+        Ok((columns, rows, heights, source))
     }
 }
 

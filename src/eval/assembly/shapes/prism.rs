@@ -9,7 +9,7 @@ use super::text::line_segment;
 use crate::diag::Span;
 use crate::eval::language::stream::Stream;
 use crate::eval::{EvalResult, Evaluator};
-use crate::scene::{Extrusion, Shape};
+use crate::scene::{Extrusion, OutlineSpline, Shape, SplineOutline};
 use crate::syntax::ast::Item;
 use glam::DVec2;
 use std::sync::Arc;
@@ -165,7 +165,16 @@ impl Evaluator {
                 .with_label("check the spline type and the number of points")
                 .into());
         };
-        Ok(Shape::Lathe(Arc::new(segments)))
+        let spline = match spline {
+            Spline::Linear => OutlineSpline::Linear,
+            Spline::Quadratic => OutlineSpline::Quadratic,
+            Spline::Cubic => OutlineSpline::Cubic,
+            Spline::Bezier => OutlineSpline::Bezier,
+        };
+        Ok(Shape::Lathe {
+            segments: Arc::new(segments),
+            source: Some(Arc::new(SplineOutline { spline, points })),
+        })
     }
 
     /// Reads spline and sweep keywords; returns the spline and whether the sweep is conic.
