@@ -208,6 +208,26 @@ pub(crate) fn matrix(t: &Transform) -> String {
         m.matrix3.z_axis,
         m.translation,
     );
+    // A scale and a move (most placements) are written as such: reading them back composes
+    // the same exact inverses as the scene did, where a `matrix` would be inverted anew
+    // and differ in the last bits.
+    let diagonal = x.y == 0.0 && x.z == 0.0 && y.x == 0.0 && y.z == 0.0 && z.x == 0.0 && z.y == 0.0;
+    if diagonal && x.x != 0.0 && y.y != 0.0 && z.z != 0.0 {
+        let scale = DVec3::new(x.x, y.y, z.z);
+        let mut text = String::new();
+        if scale != DVec3::ONE {
+            let _ = write!(text, " scale {}", vector(scale));
+        }
+        if w != DVec3::ZERO {
+            let _ = write!(text, " translate {}", vector(w));
+        }
+        let written = Transform::scaling(scale)
+            .unwrap_or(Transform::IDENTITY)
+            .then(&Transform::translation(w));
+        if written == *t {
+            return text;
+        }
+    }
     let values = [x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z, w.x, w.y, w.z];
     let list: Vec<String> = values.iter().map(|v| number(*v)).collect();
     format!(" matrix <{}>", list.join(", "))
@@ -217,7 +237,7 @@ pub(crate) fn matrix(t: &Transform) -> String {
 /// inside a block whose enclosing block applies `parent` afterwards.
 pub(crate) fn relative(total: &Transform, parent: &Transform) -> Transform {
     if *parent == Transform::IDENTITY {
-        return total.clone();
+        return *total;
     }
     total.then(&parent.inverse())
 }

@@ -5,8 +5,8 @@ use super::functions::write_function_block;
 use super::settings::write_light;
 use super::{address, matrix, number, on_off, vector, vector2, Unsupported, Writer, Written};
 use crate::scene::{
-    BlobKind, Container, HeightFieldSource, OutlineSpline, CsgOperation, Extrusion, JuliaAlgebra, JuliaFunction, Mesh, Object, Scene,
-    Shape, SweepSpline, FLAT_FACE,
+    BlobKind, Container, CsgOperation, Extrusion, HeightFieldSource, JuliaAlgebra, JuliaFunction,
+    Mesh, Object, OutlineSpline, Scene, Shape, SweepSpline, FLAT_FACE,
 };
 use std::fmt::Write as _;
 use std::sync::Arc;

@@ -189,7 +189,9 @@ impl LocalShape {
                 ExtrudedOutline::new(&prism.segments, prism.depth, prism.open, true, prism.conic)
                     .map(|p| Self::Extrusion(Box::new(p)))
             }
-            Shape::Lathe { ref segments, .. } => Lathe::new(segments).map(|l| Self::Lathe(Box::new(l))),
+            Shape::Lathe { ref segments, .. } => {
+                Lathe::new(segments).map(|l| Self::Lathe(Box::new(l)))
+            }
             Shape::Blob(ref blob) => Blob::new(blob).map(|b| Self::Blob(Box::new(b))),
             Shape::Superellipsoid {
                 east_west,

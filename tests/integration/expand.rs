@@ -28,7 +28,16 @@ fn directives(text: &str) -> Vec<String> {
 fn render(scene: &Path, folder: &Path, out: &Path) -> Result<Vec<u8>, String> {
     let status = durer()
         .current_dir(folder)
-        .args(["render", "--width", "48", "--height", "36", "--quiet", "--threads", "2"])
+        .args([
+            "render",
+            "--width",
+            "48",
+            "--height",
+            "36",
+            "--quiet",
+            "--threads",
+            "2",
+        ])
         .arg(scene)
         .arg("-o")
         .arg(out)

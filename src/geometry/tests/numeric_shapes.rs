@@ -155,6 +155,7 @@ fn height_field_known_answer_and_split() {
         heights: vec![0.0, 1.0, 0.0, 1.0],
         smooth: false,
         water_level: 0.0,
+        source: None,
     })
     .unwrap();
     let hits = crossings(
@@ -211,6 +212,7 @@ fn smooth_height_field_normals_match_povray() {
         heights: levels.iter().map(|level| level / 65536.0).collect(),
         smooth: true,
         water_level: 0.0,
+        source: None,
     })
     .unwrap();
     // Normals map through the inverse transpose of scale <1, 5, 2>.

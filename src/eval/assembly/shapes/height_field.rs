@@ -147,7 +147,12 @@ impl Evaluator {
                 .into());
         }
         let (columns, rows, heights) = image_heights(&raster);
-        Ok((columns, rows, heights, HeightFieldSource::Image { path, format }))
+        Ok((
+            columns,
+            rows,
+            heights,
+            HeightFieldSource::Image { path, format },
+        ))
     }
 
     /// The grid of `function W, H { .. }`.
