@@ -65,7 +65,10 @@ pub(super) fn write_texture_items(
         let _ = write!(out, " {keyword} {{ {name} }}");
         return Ok(());
     }
-    write_texture_layers(writer, out, texture, keyword, &Transform::IDENTITY)
+    let mut text = String::new();
+    write_texture_layers(writer, &mut text, texture, keyword, &Transform::IDENTITY)?;
+    out.push_str(&writer.shared_text(text, keyword));
+    Ok(())
 }
 
 /// The texture as one or more ` KEYWORD { .. }` blocks.
@@ -141,7 +144,9 @@ fn write_texture_body(
                         if i > 0 {
                             out.push(',');
                         }
-                        write_texture_layers(writer, out, block, "texture", transform)?;
+                        out.push_str(" texture {");
+                        write_texture_entry(writer, out, block, transform)?;
+                        out.push_str(" }");
                     }
                 }
             }

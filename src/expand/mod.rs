@@ -77,6 +77,10 @@ pub(crate) struct Writer {
     names: HashMap<usize, String>,
     /// The next number of each name prefix.
     counts: HashMap<&'static str, usize>,
+    /// Texture text seen so far: `None` once, the declared name from the second time on
+    /// (evaluation gives each object its own copy of a declared texture, so sharing is
+    /// found by content).
+    texture_texts: HashMap<String, Option<String>>,
 }
 
 impl Writer {
@@ -86,6 +90,7 @@ impl Writer {
             declarations: String::new(),
             names: HashMap::new(),
             counts: HashMap::new(),
+            texture_texts: HashMap::new(),
         }
     }
 
@@ -108,6 +113,30 @@ impl Writer {
         let _ = writeln!(self.declarations, "#declare {name} =\n{text}");
         self.names.insert(address, name.clone());
         Ok(name)
+    }
+
+    /// `text` (a texture's blocks) as written where it is used: itself the first time, a
+    /// declared name once the same text comes again.
+    pub(crate) fn shared_text(&mut self, text: String, keyword: &str) -> String {
+        const WORTH_SHARING: usize = 48;
+        if text.len() < WORTH_SHARING || keyword != "texture" {
+            return text;
+        }
+        match self.texture_texts.get(&text) {
+            None => {
+                self.texture_texts.insert(text.clone(), None);
+                text
+            }
+            Some(Some(name)) => format!(" {keyword} {{ {name} }}"),
+            Some(None) => {
+                let count = self.counts.entry("Texture").or_insert(0);
+                *count += 1;
+                let name = format!("Texture_{count}");
+                let _ = writeln!(self.declarations, "#declare {name} ={text}");
+                self.texture_texts.insert(text, Some(name.clone()));
+                format!(" {keyword} {{ {name} }}")
+            }
+        }
     }
 
     /// A file name as the flat file should name it.
