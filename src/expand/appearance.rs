@@ -626,7 +626,7 @@ pub(crate) fn write_media(
         let _ = write!(
             out,
             " scattering {{ {}, {} extinction {}",
-            super::settings::scattering_number(&scattering.kind),
+            scattering_number(&scattering.kind),
             rgb(scattering.colour),
             number(scattering.extinction)
         );
@@ -642,4 +642,14 @@ pub(crate) fn write_media(
     out.push_str(" }");
     let _ = vector;
     Ok(())
+}
+
+fn scattering_number(kind: &ScatteringKind) -> u32 {
+    match kind {
+        ScatteringKind::Isotropic => 1,
+        ScatteringKind::MieHazy => 2,
+        ScatteringKind::MieMurky => 3,
+        ScatteringKind::Rayleigh => 4,
+        ScatteringKind::HenyeyGreenstein(_) => 5,
+    }
 }

@@ -188,6 +188,15 @@ pub fn number(value: f64) -> String {
     }
 }
 
+/// POV-Ray's number of a noise generator.
+pub(crate) fn noise_number(generator: crate::noise::NoiseGenerator) -> u32 {
+    match generator {
+        crate::noise::NoiseGenerator::Original => 1,
+        crate::noise::NoiseGenerator::RangeCorrected => 2,
+        crate::noise::NoiseGenerator::Perlin => 3,
+    }
+}
+
 /// `<x, y, z>`.
 pub(crate) fn vector(v: DVec3) -> String {
     format!("<{}, {}, {}>", number(v.x), number(v.y), number(v.z))
@@ -307,7 +316,17 @@ mod tests {
     fn matrix_lists_axes_then_translation() {
         let t = Transform::translation(DVec3::new(1.0, 2.0, 3.0))
             .then(&Transform::scaling(DVec3::new(2.0, 2.0, 2.0)).unwrap());
-        assert_eq!(matrix(&t), " matrix <2, 0, 0, 0, 2, 0, 0, 0, 2, 2, 4, 6>");
+        assert_eq!(matrix(&t), " scale <2, 2, 2> translate <2, 4, 6>");
+        let turned = t.then(&Transform::rotation_degrees(DVec3::new(0.0, 0.0, 90.0)));
+        let m = turned.outer_from_inner;
+        let text = matrix(&turned);
+        assert!(text.starts_with(" matrix <"), "{text}");
+        let listed: Vec<f64> = text[9..text.len() - 1]
+            .split(", ")
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert_eq!(listed[0..3], m.matrix3.x_axis.to_array());
+        assert_eq!(listed[9..12], m.translation.to_array());
         assert_eq!(matrix(&Transform::IDENTITY), "");
     }
 

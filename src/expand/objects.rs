@@ -2,11 +2,10 @@
 
 use super::appearance::{write_interior, write_texture_items};
 use super::functions::write_function_block;
-use super::settings::write_light;
-use super::{address, matrix, number, on_off, vector, vector2, Unsupported, Writer, Written};
+use super::{address, matrix, number, on_off, rgb, vector, vector2, Unsupported, Writer, Written};
 use crate::scene::{
     BlobKind, Container, CsgOperation, Extrusion, HeightFieldSource, JuliaAlgebra, JuliaFunction,
-    Mesh, Object, OutlineSpline, Scene, Shape, SweepSpline, FLAT_FACE,
+    LightSource, Mesh, Object, OutlineSpline, Scene, Shape, SweepSpline, FLAT_FACE,
 };
 use std::fmt::Write as _;
 use std::sync::Arc;
@@ -690,5 +689,94 @@ fn write_mesh_of_triangles(writer: &mut Writer, out: &mut String, mesh: &Mesh) -
     if let Some(inside) = mesh.inside_vector {
         let _ = write!(out, " inside_vector {}", vector(inside));
     }
+    Ok(())
+}
+
+pub(super) fn write_light(writer: &mut Writer, out: &mut String, light: &LightSource) -> Written {
+    let _ = write!(
+        out,
+        "light_source {{ {}, {}",
+        vector(light.position),
+        rgb(light.colour)
+    );
+    if let Some(spot) = &light.spotlight {
+        let _ = write!(
+            out,
+            " {} point_at {} radius {} falloff {} tightness {}",
+            if spot.cylinder {
+                "cylinder"
+            } else {
+                "spotlight"
+            },
+            vector(spot.point_at),
+            number(spot.radius),
+            number(spot.falloff),
+            number(spot.tightness)
+        );
+    }
+    if let Some(target) = light.parallel {
+        out.push_str(" parallel");
+        if light.spotlight.is_none() {
+            let _ = write!(out, " point_at {}", vector(target));
+        }
+    }
+    if let Some(area) = &light.area {
+        let _ = write!(
+            out,
+            " area_light {}, {}, {}, {}",
+            vector(area.axis1),
+            vector(area.axis2),
+            area.size1,
+            area.size2
+        );
+        if let Some(adaptive) = area.adaptive {
+            let _ = write!(out, " adaptive {adaptive}");
+        }
+        for (on, word) in [
+            (area.jitter, "jitter"),
+            (area.circular, "circular"),
+            (area.orient, "orient"),
+        ] {
+            if on {
+                let _ = write!(out, " {word}");
+            }
+        }
+        let _ = write!(out, " area_illumination {}", on_off(area.area_illumination));
+    }
+    if light.shadowless {
+        out.push_str(" shadowless");
+    }
+    if light.fade_distance != 0.0 || light.fade_power != 0.0 {
+        let _ = write!(
+            out,
+            " fade_distance {} fade_power {}",
+            number(light.fade_distance),
+            number(light.fade_power)
+        );
+    }
+    let _ = write!(
+        out,
+        " media_interaction {} media_attenuation {}",
+        on_off(light.media_interaction),
+        on_off(light.media_attenuation)
+    );
+    let photons = &light.photons;
+    if photons.refraction_given || photons.reflection_given {
+        out.push_str(" photons {");
+        if photons.refraction_given {
+            let _ = write!(out, " refraction {}", on_off(photons.refraction));
+        }
+        if photons.reflection_given {
+            let _ = write!(out, " reflection {}", on_off(photons.reflection));
+        }
+        out.push_str(" }");
+    }
+    if let Some(object) = &light.projected_through {
+        out.push_str(" projected_through { ");
+        write_bare_object(writer, out, object)?;
+        out.push_str(" }");
+    }
+    // `looks_like` is not written: evaluation already placed its object in the scene.
+    out.push_str(" }\n");
     Ok(())
 }

@@ -3,8 +3,7 @@
 
 use super::appearance::{write_image_block, write_pigment, ImageRole, PigmentRole};
 use super::functions::write_function_block;
-use super::settings::noise_number;
-use super::{matrix, number, relative, vector, Unsupported, Writer, Written};
+use super::{matrix, noise_number, number, relative, vector, Unsupported, Writer, Written};
 use crate::math::Transform;
 use crate::noise::TurbulenceShape;
 use crate::texture::pattern::{

@@ -2,13 +2,15 @@
 //! then the objects.
 
 use super::appearance::{write_media, write_normal, write_pigment, PigmentRole};
-use super::objects::write_object;
-use super::{colour, matrix, number, on_off, rgb, vector, Unsupported, Writer, Written};
+use super::objects::{write_light, write_object};
+use super::{
+    colour, matrix, noise_number, number, on_off, rgb, vector, Unsupported, Writer, Written,
+};
 use crate::math::Transform;
 use crate::noise::NoiseGenerator;
 use crate::scene::{
-    Camera, FogKind, GlobalSettings, LightSource, PhotonDensity, PhotonSettings, Projection,
-    RadiositySettings, ScatteringKind, Scene, DEFAULT_ANGLE,
+    Camera, FogKind, GlobalSettings, PhotonDensity, PhotonSettings, Projection, RadiositySettings,
+    Scene, DEFAULT_ANGLE,
 };
 use std::fmt::Write as _;
 
@@ -142,14 +144,6 @@ fn write_global_settings(writer: &mut Writer, out: &mut String, s: &GlobalSettin
     Ok(())
 }
 
-pub(super) fn noise_number(generator: NoiseGenerator) -> u32 {
-    match generator {
-        NoiseGenerator::Original => 1,
-        NoiseGenerator::RangeCorrected => 2,
-        NoiseGenerator::Perlin => 3,
-    }
-}
-
 fn write_radiosity(out: &mut String, r: &RadiositySettings) {
     let _ = write!(
         out,
@@ -277,103 +271,4 @@ fn write_camera(writer: &mut Writer, out: &mut String, camera: &Camera) -> Writt
     }
     out.push_str(" }\n");
     Ok(())
-}
-
-pub(super) fn write_light(writer: &mut Writer, out: &mut String, light: &LightSource) -> Written {
-    let _ = write!(
-        out,
-        "light_source {{ {}, {}",
-        vector(light.position),
-        rgb(light.colour)
-    );
-    if let Some(spot) = &light.spotlight {
-        let _ = write!(
-            out,
-            " {} point_at {} radius {} falloff {} tightness {}",
-            if spot.cylinder {
-                "cylinder"
-            } else {
-                "spotlight"
-            },
-            vector(spot.point_at),
-            number(spot.radius),
-            number(spot.falloff),
-            number(spot.tightness)
-        );
-    }
-    if let Some(target) = light.parallel {
-        out.push_str(" parallel");
-        if light.spotlight.is_none() {
-            let _ = write!(out, " point_at {}", vector(target));
-        }
-    }
-    if let Some(area) = &light.area {
-        let _ = write!(
-            out,
-            " area_light {}, {}, {}, {}",
-            vector(area.axis1),
-            vector(area.axis2),
-            area.size1,
-            area.size2
-        );
-        if let Some(adaptive) = area.adaptive {
-            let _ = write!(out, " adaptive {adaptive}");
-        }
-        for (on, word) in [
-            (area.jitter, "jitter"),
-            (area.circular, "circular"),
-            (area.orient, "orient"),
-        ] {
-            if on {
-                let _ = write!(out, " {word}");
-            }
-        }
-        let _ = write!(out, " area_illumination {}", on_off(area.area_illumination));
-    }
-    if light.shadowless {
-        out.push_str(" shadowless");
-    }
-    if light.fade_distance != 0.0 || light.fade_power != 0.0 {
-        let _ = write!(
-            out,
-            " fade_distance {} fade_power {}",
-            number(light.fade_distance),
-            number(light.fade_power)
-        );
-    }
-    let _ = write!(
-        out,
-        " media_interaction {} media_attenuation {}",
-        on_off(light.media_interaction),
-        on_off(light.media_attenuation)
-    );
-    let photons = &light.photons;
-    if photons.refraction_given || photons.reflection_given {
-        out.push_str(" photons {");
-        if photons.refraction_given {
-            let _ = write!(out, " refraction {}", on_off(photons.refraction));
-        }
-        if photons.reflection_given {
-            let _ = write!(out, " reflection {}", on_off(photons.reflection));
-        }
-        out.push_str(" }");
-    }
-    if let Some(object) = &light.projected_through {
-        out.push_str(" projected_through { ");
-        super::objects::write_bare_object(writer, out, object)?;
-        out.push_str(" }");
-    }
-    // `looks_like` is not written: evaluation already placed its object in the scene.
-    out.push_str(" }\n");
-    Ok(())
-}
-
-pub(super) fn scattering_number(kind: &ScatteringKind) -> u32 {
-    match kind {
-        ScatteringKind::Isotropic => 1,
-        ScatteringKind::MieHazy => 2,
-        ScatteringKind::MieMurky => 3,
-        ScatteringKind::Rayleigh => 4,
-        ScatteringKind::HenyeyGreenstein(_) => 5,
-    }
 }
