@@ -331,12 +331,7 @@ fn write_image_block_open(
     let Some(file) = &image.file else {
         return Err(Unsupported("an image made in memory".into()));
     };
-    let _ = write!(
-        out,
-        "{{ {} {}",
-        file.format.keyword(),
-        writer.file_name(&file.path)
-    );
+    let _ = write!(out, "{{ {}", writer.image_file(file.format, &file.path));
     match file.gamma {
         None => {}
         Some(ImageGamma::Linear) => out.push_str(" gamma 1"),

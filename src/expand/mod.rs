@@ -139,6 +139,27 @@ impl Writer {
         }
     }
 
+    /// The format keyword and file name of an image file: POV-Ray has no `sys` format, so a
+    /// file given without one is named by its extension.
+    pub(crate) fn image_file(&self, format: crate::raster::RasterFormat, path: &Path) -> String {
+        use crate::raster::RasterFormat;
+        let format = match format {
+            RasterFormat::System => path
+                .extension()
+                .and_then(|e| e.to_str())
+                .map(|e| e.to_ascii_lowercase())
+                .and_then(|e| {
+                    RasterFormat::from_keyword(match e.as_str() {
+                        "jpg" => "jpeg",
+                        other => other,
+                    })
+                })
+                .unwrap_or(RasterFormat::Png),
+            other => other,
+        };
+        format!("{} {}", format.keyword(), self.file_name(path))
+    }
+
     /// A file name as the flat file should name it.
     pub(crate) fn file_name(&self, path: &Path) -> String {
         let shown = match &self.options.base {

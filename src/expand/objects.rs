@@ -364,12 +364,7 @@ fn write_shape(writer: &mut Writer, out: &mut String, shape: &Shape) -> Written 
         Shape::HeightField(field) => {
             match &field.source {
                 Some(HeightFieldSource::Image { path, format }) => {
-                    let _ = write!(
-                        out,
-                        "height_field {{ {} {}",
-                        format.keyword(),
-                        writer.file_name(path)
-                    );
+                    let _ = write!(out, "height_field {{ {}", writer.image_file(*format, path));
                 }
                 Some(HeightFieldSource::Function {
                     function,

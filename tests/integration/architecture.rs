@@ -31,7 +31,7 @@ const LAYERS: &[(&str, &[&str])] = &[
     // The evaluated scene: plain data.
     ("scene", &["hash", "math", "noise", "raster", "texture"]),
     // The evaluated scene written back as flat SDL.
-    ("expand", &["math", "noise", "texture", "scene"]),
+    ("expand", &["math", "noise", "raster", "texture", "scene"]),
     // Render objects: shapes, CSG, materials, the world.
     (
         "geometry",
