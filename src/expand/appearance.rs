@@ -131,13 +131,9 @@ fn write_texture_body(
             write_pattern_kind(writer, out, pattern)?;
             match map {
                 BlendMap::Entries(entries) => {
-                    out.push_str(" texture_map {");
-                    for (key, entry) in entries {
-                        let _ = write!(out, " [{}", number(*key));
-                        write_texture_entry(writer, out, entry, transform)?;
-                        out.push(']');
-                    }
-                    out.push_str(" }");
+                    write_map(out, "texture_map", entries, |out, entry| {
+                        write_texture_entry(writer, out, entry, transform)
+                    })?;
                 }
                 BlendMap::Blocks(blocks) => {
                     for (i, block) in blocks.iter().enumerate() {
@@ -153,13 +149,10 @@ fn write_texture_body(
             write_pattern_modifiers(out, pattern, transform, parent);
         }
         CompoundTexture::Average(entries) => {
-            out.push_str(" average texture_map {");
-            for (weight, entry) in entries {
-                let _ = write!(out, " [{}", number(*weight));
-                write_texture_entry(writer, out, entry, parent)?;
-                out.push(']');
-            }
-            out.push_str(" }");
+            out.push_str(" average");
+            write_map(out, "texture_map", entries, |out, entry| {
+                write_texture_entry(writer, out, entry, parent)
+            })?;
         }
         CompoundTexture::MaterialMap {
             image,
@@ -204,6 +197,24 @@ fn write_texture_entry(
     write_texture_body(writer, out, texture, parent)
 }
 
+/// ` KEYWORD { [KEY ENTRY] .. }`: a map (or an average's weights), each entry written by
+/// `write`.
+fn write_map<T>(
+    out: &mut String,
+    keyword: &str,
+    entries: &[(f64, T)],
+    mut write: impl FnMut(&mut String, &T) -> Written,
+) -> Written {
+    let _ = write!(out, " {keyword} {{");
+    for (key, entry) in entries {
+        let _ = write!(out, " [{}", number(*key));
+        write(out, entry)?;
+        out.push(']');
+    }
+    out.push_str(" }");
+    Ok(())
+}
+
 /// `pigment { .. }` (or `density { .. }`) written relative to `parent`.
 pub(crate) fn write_pigment(
     writer: &mut Writer,
@@ -239,11 +250,10 @@ fn write_pigment_items(
             match map {
                 PigmentMap::Colours(entries) => {
                     if !entries.is_empty() {
-                        out.push_str(" color_map {");
-                        for (key, c) in entries {
-                            let _ = write!(out, " [{} {}]", number(*key), colour(c));
-                        }
-                        out.push_str(" }");
+                        write_map(out, "color_map", entries, |out, c| {
+                            let _ = write!(out, " {}", colour(c));
+                            Ok(())
+                        })?;
                     }
                 }
                 PigmentMap::Blocks(blocks) => {
@@ -253,13 +263,9 @@ fn write_pigment_items(
                     }
                 }
                 PigmentMap::Pigments(entries) => {
-                    let _ = write!(out, " {} {{", role.map_keyword());
-                    for (key, entry) in entries {
-                        let _ = write!(out, " [{}", number(*key));
-                        write_pigment_items(writer, out, entry, transform, role)?;
-                        out.push(']');
-                    }
-                    out.push_str(" }");
+                    write_map(out, role.map_keyword(), entries, |out, entry| {
+                        write_pigment_items(writer, out, entry, transform, role)
+                    })?;
                 }
             }
             write_pattern_modifiers(out, pattern, transform, parent);
@@ -269,13 +275,10 @@ fn write_pigment_items(
             transform,
             warps,
         } => {
-            let _ = write!(out, " average {} {{", role.map_keyword());
-            for (weight, entry) in entries {
-                let _ = write!(out, " [{}", number(*weight));
-                write_pigment_items(writer, out, entry, transform, role)?;
-                out.push(']');
-            }
-            out.push_str(" }");
+            out.push_str(" average");
+            write_map(out, role.map_keyword(), entries, |out, entry| {
+                write_pigment_items(writer, out, entry, transform, role)
+            })?;
             write_warps_and_transform(out, warps.as_deref(), transform, parent);
         }
         Pigment::Image {
@@ -429,13 +432,9 @@ fn write_normal_items(
             write_pattern_kind(writer, out, pattern)?;
             match map {
                 BlendMap::Entries(entries) => {
-                    out.push_str(" normal_map {");
-                    for (key, entry) in entries {
-                        let _ = write!(out, " [{}", number(*key));
-                        write_normal_items(writer, out, entry, transform)?;
-                        out.push(']');
-                    }
-                    out.push_str(" }");
+                    write_map(out, "normal_map", entries, |out, entry| {
+                        write_normal_items(writer, out, entry, transform)
+                    })?;
                 }
                 BlendMap::Blocks(blocks) => {
                     for (i, block) in blocks.iter().enumerate() {
@@ -447,13 +446,10 @@ fn write_normal_items(
             write_pattern_modifiers(out, pattern, transform, &parent);
         }
         NormalSource::Average(entries) => {
-            out.push_str(" average normal_map {");
-            for (weight, entry) in entries {
-                let _ = write!(out, " [{}", number(*weight));
-                write_normal_items(writer, out, entry, transform)?;
-                out.push(']');
-            }
-            out.push_str(" }");
+            out.push_str(" average");
+            write_map(out, "normal_map", entries, |out, entry| {
+                write_normal_items(writer, out, entry, transform)
+            })?;
             out.push_str(&matrix(&relative(transform, &parent)));
         }
         NormalSource::BumpMap(image) => {
