@@ -5,26 +5,15 @@ use super::functions::write_function_block;
 use super::{address, matrix, number, on_off, rgb, vector, vector2, Unsupported, Writer, Written};
 use crate::scene::{
     BlobKind, Container, CsgOperation, Extrusion, HeightFieldSource, JuliaAlgebra, JuliaFunction,
-    LightSource, Mesh, Object, OutlineSpline, Scene, Shape, SweepSpline, FLAT_FACE,
+    LightSource, Mesh, Object, OutlineSpline, Shape, SweepSpline, FLAT_FACE,
 };
 use std::fmt::Write as _;
 use std::sync::Arc;
 
-/// Writes a top-level object (a light group's lights with it).
-pub(super) fn write_object(
-    writer: &mut Writer,
-    out: &mut String,
-    object: &Object,
-    scene: &Scene,
-) -> Written {
-    let _ = scene;
-    write_bare_object(writer, out, object)
-}
-
 /// Writes one object: its shape, then its modifiers, then its transformation (textures,
 /// interiors and clipping objects are held in the object's own space, so they come first
 /// and the transformation carries them along).
-pub(super) fn write_bare_object(writer: &mut Writer, out: &mut String, object: &Object) -> Written {
+pub(super) fn write_object(writer: &mut Writer, out: &mut String, object: &Object) -> Written {
     if let Some(group) = &object.light_group {
         let Shape::Csg { children, .. } = &object.shape else {
             return Err(Unsupported("a light_group that is not a union".into()));
@@ -34,7 +23,7 @@ pub(super) fn write_bare_object(writer: &mut Writer, out: &mut String, object: &
             write_light(writer, out, light)?;
         }
         for child in children {
-            write_bare_object(writer, out, child)?;
+            write_object(writer, out, child)?;
             out.push('\n');
         }
         let _ = write!(out, " global_lights {} }}", on_off(group.global_lights));
@@ -68,7 +57,7 @@ fn write_modifiers(writer: &mut Writer, out: &mut String, object: &Object) -> Wr
         }
         let _ = write!(out, " {word} {{ ");
         for part in list {
-            write_bare_object(writer, out, part)?;
+            write_object(writer, out, part)?;
             out.push(' ');
         }
         out.push('}');
@@ -485,7 +474,7 @@ fn write_shape(writer: &mut Writer, out: &mut String, shape: &Shape) -> Written 
             };
             let _ = writeln!(out, "{word} {{");
             for child in children {
-                write_bare_object(writer, out, child)?;
+                write_object(writer, out, child)?;
                 out.push('\n');
             }
         }
@@ -768,7 +757,7 @@ pub(super) fn write_light(writer: &mut Writer, out: &mut String, light: &LightSo
     }
     if let Some(object) = &light.projected_through {
         out.push_str(" projected_through { ");
-        write_bare_object(writer, out, object)?;
+        write_object(writer, out, object)?;
         out.push_str(" }");
     }
     // `looks_like` is not written: evaluation already placed its object in the scene.

@@ -91,7 +91,7 @@ pub(super) fn write_scene(writer: &mut Writer, out: &mut String, scene: &Scene) 
         out.push('\n');
     }
     for object in &scene.objects {
-        write_object(writer, out, object, scene)?;
+        write_object(writer, out, object)?;
         out.push('\n');
     }
     Ok(())
