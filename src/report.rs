@@ -57,6 +57,21 @@ pub fn to_report(diagnostic: &Diagnostic, sources: &SourceMap) -> Report {
         Some(_) => format!("{}: ", sources.describe(diagnostic.span)),
         None => String::new(),
     };
+    // miette pads snippet lines with `{:width$}`, which panics past 65,535 columns: a
+    // snippet that would show such a line is left out (the message still has line:column).
+    let file = file.filter(|f| {
+        let mut spans = vec![diagnostic.span];
+        spans.extend(
+            diagnostic
+                .labels
+                .iter()
+                .map(|(s, _)| *s)
+                .filter(|s| s.file == diagnostic.span.file),
+        );
+        spans
+            .iter()
+            .all(|s| !near_long_line(&f.text, s.start as usize, s.end as usize))
+    });
     let source = file.map(|f| NamedSource::new(f.path.display().to_string(), f.text.to_string()));
     let mut labels = Vec::new();
     if file.is_some() {
@@ -124,6 +139,31 @@ pub fn to_report(diagnostic: &Diagnostic, sources: &SourceMap) -> Report {
             Some(help_lines.join("\n"))
         },
     }
+}
+
+/// Longest source line shown in a snippet, in bytes (miette's limit is 65,535 columns).
+const LONGEST_SHOWN_LINE: usize = 10_000;
+
+/// Whether the lines from two before `start` to two after `end` (those a snippet shows)
+/// include one longer than [`LONGEST_SHOWN_LINE`].
+fn near_long_line(text: &str, start: usize, end: usize) -> bool {
+    let bytes = text.as_bytes();
+    let start = start.min(bytes.len());
+    let end = end.clamp(start, bytes.len());
+    let mut from = start;
+    for _ in 0..3 {
+        from = bytes[..from].iter().rposition(|&b| b == b'\n').unwrap_or(0);
+    }
+    let mut to = end;
+    for _ in 0..3 {
+        to = bytes[to..]
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(bytes.len(), |p| (to + p + 1).min(bytes.len()));
+    }
+    bytes[from..to]
+        .split(|&b| b == b'\n' || b == b'\r')
+        .any(|line| line.len() > LONGEST_SHOWN_LINE)
 }
 
 /// Renders a diagnostic as plain text (no colours), as the CLI prints it to a pipe.

@@ -27,8 +27,9 @@ use std::time::Instant;
 /// Stack size of the thread that evaluates scenes: deep macro recursion needs room.
 const EVALUATION_STACK_BYTES: usize = 1 << 30;
 
-/// The largest image rendered unless `--max-pixels` allows more.
-pub const DEFAULT_MAX_PIXELS: u64 = 40_000_000;
+/// Stack size of each render thread: building and tracing CSG nested as deep as the
+/// `nesting` limit allows (20,000) needs about 40 MiB (measured); this leaves room.
+pub const RENDER_STACK_BYTES: usize = 256 << 20;
 
 /// Exit code of a scene error.
 pub const EXIT_SCENE_ERROR: i32 = 1;
@@ -83,6 +84,63 @@ struct SceneArgs {
     /// (`--define Size=2`, `--define 'Colour=<1,0,0>'`, `--define 'Name="text"'`).
     #[arg(long = "define", value_name = "NAME=EXPR")]
     defines: Vec<String>,
+    #[command(flatten)]
+    safety: SafetyArgs,
+}
+
+/// Limits and the file policy (docs/limits.md).
+#[derive(Args)]
+struct SafetyArgs {
+    /// Set a limit: NAME=VALUE (repeatable; `--limit help` lists them: nesting,
+    /// iterations, array-size, string-size, objects, pixels, threads, parse-steps).
+    #[arg(long = "limit", value_name = "NAME=VALUE")]
+    limits: Vec<String>,
+    /// Let the scene read files in DIR and its subfolders (repeatable).
+    #[arg(long = "allow-read", value_name = "DIR")]
+    allow_read: Vec<PathBuf>,
+    /// Let the scene read and write files in DIR and its subfolders (repeatable).
+    #[arg(long = "allow-write", value_name = "DIR")]
+    allow_write: Vec<PathBuf>,
+    /// Read the file policy from a povray.conf (POV-Ray for Unix's I/O restrictions: its
+    /// security level replaces durer's `restricted` and its folders are added).
+    #[arg(long = "file-policy", value_name = "FILE")]
+    file_policy: Option<PathBuf>,
+}
+
+/// The limits and file policy the safety flags give; `Ok(None)` after `--limit help`.
+fn safety_settings(
+    args: &SafetyArgs,
+) -> Result<Option<(durer::limits::Limits, durer::file_policy::FilePolicy)>, String> {
+    use durer::file_policy::{FilePolicy, Reach};
+    let mut limits = durer::limits::Limits::default();
+    for assignment in &args.limits {
+        if assignment == "help" {
+            print!("{}", durer::limits::table());
+            return Ok(None);
+        }
+        limits.set(assignment).map_err(|e| e.to_string())?;
+    }
+    let mut policy = FilePolicy::default();
+    if let Some(conf) = &args.file_policy {
+        let text = std::fs::read_to_string(conf)
+            .map_err(|e| format!("--file-policy {}: {e}", conf.display()))?;
+        let current = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("/"));
+        let home = std::env::var_os("HOME").map(PathBuf::from);
+        policy.read_conf(
+            &text,
+            &conf.display().to_string(),
+            &current,
+            Path::new("/usr/share/povray-3.7"),
+            home.as_deref(),
+        )?;
+    }
+    for folder in &args.allow_read {
+        policy.allow(folder, false, Reach::Tree, "--allow-read");
+    }
+    for folder in &args.allow_write {
+        policy.allow(folder, true, Reach::Tree, "--allow-write");
+    }
+    Ok(Some((limits, policy)))
 }
 
 #[derive(Args)]
@@ -107,16 +165,16 @@ struct RenderArgs {
     /// the image to standard output.
     #[arg(short, long, value_name = "FILE")]
     output: Option<String>,
-    /// Number of render threads, 1 to 512 (default: all cores).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=512))]
+    /// Number of render threads, 1 to the `threads` limit, 512 (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
     threads: Option<u32>,
     /// Print nothing but errors.
     #[arg(short, long)]
     quiet: bool,
     /// Largest image, in pixels, durer agrees to render (default 40,000,000: about
-    /// 100 bytes of memory per pixel); raise it for larger images.
-    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_PIXELS)]
-    max_pixels: u64,
+    /// 100 bytes of memory per pixel); raise it for larger images (= --limit pixels=N).
+    #[arg(long, value_name = "N")]
+    max_pixels: Option<u64>,
     /// Render the animation frames A to B (POV-Ray's +KFI A +KFF B).
     #[arg(long, value_name = "A..B", value_parser = parse_frame_range)]
     frames: Option<(i64, i64)>,
@@ -133,6 +191,8 @@ struct RenderArgs {
     stats: Option<String>,
     #[command(flatten)]
     antialias: AntialiasArgs,
+    #[command(flatten)]
+    safety: SafetyArgs,
     /// POV-Ray switches and .ini files (collected from the command line).
     #[arg(skip)]
     povray_words: Vec<String>,
@@ -210,6 +270,11 @@ const VALUE_FLAGS: &[&str] = &[
     "--aa-method",
     "--aa-depth",
     "--jitter",
+    "--limit",
+    "--allow-read",
+    "--allow-write",
+    "--file-policy",
+    "--max-pixels",
 ];
 
 /// Whether `word` is a POV-Ray switch rather than one of durer's flags: it starts with `+`,
@@ -279,6 +344,10 @@ fn looks_like_scene(word: &str) -> bool {
 
 /// Runs the command line and returns the process exit code.
 pub fn run() -> i32 {
+    // The global pool (scene checks, the language's `trace`) builds deep CSG too.
+    let _ = rayon::ThreadPoolBuilder::new()
+        .stack_size(RENDER_STACK_BYTES)
+        .build_global();
     let words: Vec<String> = std::env::args_os()
         .skip(1)
         .map(|w| w.to_string_lossy().into_owned())
@@ -348,6 +417,10 @@ fn parse_render_args(words: &[String], povray_mode: bool) -> Result<(Settings, R
         }
     };
     args.povray_words = povray_words;
+    if args.safety.limits.iter().any(|l| l == "help") {
+        print!("{}", durer::limits::table());
+        return Err(0);
+    }
     match settings_for(&args, povray_mode) {
         Ok(settings) => Ok((settings, args)),
         Err(message) => {
@@ -415,13 +488,29 @@ fn settings_for(args: &RenderArgs, povray_mode: bool) -> Result<Settings, String
     if let Some(threads) = args.threads {
         settings.threads = Some(threads as usize);
     }
+    if let Some((limits, policy)) = safety_settings(&args.safety)? {
+        settings.limits = limits;
+        settings.file_policy = policy;
+    }
+    if let Some(pixels) = args.max_pixels {
+        settings.limits.pixels = pixels;
+    }
     let pixels = u64::from(settings.width) * u64::from(settings.height);
-    if pixels > args.max_pixels {
+    if pixels > settings.limits.pixels {
         return Err(format!(
-            "an image of {}x{} is {pixels} pixels, more than the limit of {} (about 100 bytes \
-             of memory each); give --max-pixels {pixels} to render it anyway",
-            settings.width, settings.height, args.max_pixels
+            "an image of {}x{} is {pixels} pixels, more than the `pixels` limit of {} (about \
+             100 bytes of memory each); give --limit pixels={pixels} to render it anyway",
+            settings.width, settings.height, settings.limits.pixels
         ));
+    }
+    if let Some(threads) = settings.threads {
+        if threads as u64 > settings.limits.threads {
+            return Err(format!(
+                "{threads} render threads are more than the `threads` limit of {}; give \
+                 --limit threads={threads} to use them anyway",
+                settings.limits.threads
+            ));
+        }
     }
     if args.quiet {
         settings.streams.render = false;
@@ -529,11 +618,21 @@ fn check(args: SceneArgs) -> i32 {
             }
         }
     }
+    let (limits, file_policy) = match safety_settings(&args.safety) {
+        Ok(Some(safety)) => safety,
+        Ok(None) => return 0,
+        Err(message) => {
+            eprintln!("durer: {message}");
+            return EXIT_USAGE;
+        }
+    };
     let options = EvalOptions {
         include_paths: args.include_paths.clone(),
         image_width: args.width,
         image_height: args.height,
         defines,
+        limits,
+        file_policy,
         ..EvalOptions::default()
     };
     let evaluated = evaluate(&args.scene, options);
@@ -542,12 +641,21 @@ fn check(args: SceneArgs) -> i32 {
         return EXIT_SCENE_ERROR;
     };
     let object_count = scene.objects.len();
-    let world = durer::geometry::World::build_from_objects(std::mem::take(&mut scene.objects));
+    let objects = std::mem::take(&mut scene.objects);
+    // Built (and dropped) on a thread with a large stack: deep CSG recurses.
+    let primitives = std::thread::Builder::new()
+        .stack_size(EVALUATION_STACK_BYTES)
+        .spawn(move || durer::geometry::World::build_from_objects(objects).object_count())
+        .map(|handle| handle.join());
+    let Ok(Ok(primitives)) = primitives else {
+        eprintln!("durer: internal error while building the scene's geometry");
+        return EXIT_SCENE_ERROR;
+    };
     println!(
         "{}: ok, {} objects ({} primitives), {} lights, {:.3} s",
         args.scene.display(),
         object_count,
-        world.object_count(),
+        primitives,
         scene.lights.len(),
         start.elapsed().as_secs_f64()
     );

@@ -97,6 +97,10 @@ pub struct Settings {
     pub statistics_file: Option<PathBuf>,
     /// `File_Gamma`: `None` for sRGB (the default), else a power.
     pub file_gamma: Option<f64>,
+    /// durer's `--limit`s.
+    pub limits: durer::limits::Limits,
+    /// Which files the scene may read and write (`--allow-read`, `--file-policy` ...).
+    pub file_policy: durer::file_policy::FilePolicy,
     /// `Warning_Level` 0..=10 (0: no warnings).
     pub warning_level: u32,
     /// Accepted options whose effect durer does not have, one message each.
@@ -147,6 +151,8 @@ impl Settings {
             statistics_file: None,
             file_gamma: None,
             warning_level: 10,
+            limits: durer::limits::Limits::default(),
+            file_policy: durer::file_policy::FilePolicy::default(),
             warnings: Vec::new(),
         }
     }

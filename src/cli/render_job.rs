@@ -228,7 +228,9 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
             return EXIT_USAGE;
         }
     };
-    let mut pool = rayon::ThreadPoolBuilder::new();
+    // Deep CSG (up to the `nesting` limit) is built and traced recursively on these threads:
+    // give them room (the memory is reserved, and used only as deep as a scene goes).
+    let mut pool = rayon::ThreadPoolBuilder::new().stack_size(super::RENDER_STACK_BYTES);
     if let Some(threads) = settings.threads {
         pool = pool.num_threads(threads.max(1));
     }
@@ -411,6 +413,8 @@ pub(super) fn eval_options(
         print_debug: settings.streams.debug,
         output_folder: file.and_then(Path::parent).map(Path::to_path_buf),
         search_installed_povray: true,
+        file_policy: settings.file_policy.clone(),
+        limits: settings.limits,
     }
 }
 

@@ -24,14 +24,7 @@ use language::Runtime;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
-/// Deepest nesting of macro calls, includes and blocks before evaluation stops.
-pub const NESTING_LIMIT: usize = 20_000;
-/// Most iterations one `#while` or `#for` loop may run.
-pub const LOOP_ITERATION_LIMIT: u64 = 100_000_000;
-/// Largest number of elements an array may have.
-pub const ARRAY_SIZE_LIMIT: usize = 100_000_000;
-/// Longest string a scene may build, in bytes.
-pub const STRING_SIZE_LIMIT: usize = 16 << 20;
+pub use crate::limits::Limits;
 
 /// What the evaluator needs to know from outside the scene file.
 #[derive(Clone, Debug)]
@@ -59,6 +52,11 @@ pub struct EvalOptions {
     pub output_folder: Option<PathBuf>,
     /// Search POV-Ray's installed include folder (before durer's own standard library).
     pub search_installed_povray: bool,
+    /// Which files the scene may read and write, before the scene's folder, the output
+    /// folder and the include folders are added (see [`crate::file_policy`]).
+    pub file_policy: crate::file_policy::FilePolicy,
+    /// Nesting, loop, array, string and object limits (see [`crate::limits`]).
+    pub limits: Limits,
 }
 
 impl Default for EvalOptions {
@@ -75,6 +73,8 @@ impl Default for EvalOptions {
             print_debug: true,
             output_folder: None,
             search_installed_povray: true,
+            file_policy: crate::file_policy::FilePolicy::default(),
+            limits: Limits::default(),
         }
     }
 }
@@ -108,6 +108,7 @@ pub(crate) type EvalResult<T> = Result<T, Box<Diagnostic>>;
 
 /// Reads, parses and evaluates a scene file.
 pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
+    crate::syntax::set_parse_step_limit(options.limits.parse_steps);
     let mut evaluator = Evaluator::new(options.clone());
     let result = evaluator.run_main(path);
     let mut diagnostics = evaluator.runtime.take_warnings();

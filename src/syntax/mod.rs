@@ -17,12 +17,16 @@ use crate::diag::{did_you_mean, Diagnostic, FileId, Span};
 use mapping::OffsetMap;
 use pest::Parser;
 use std::rc::Rc;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Parses one file's text into its top-level items. A file whose directives cut across
 /// braces (`#if (C) union { #else merge { #end ... }`) has no tree shape: it becomes one
 /// [`ast::DirectiveKind::TextRun`] item, run token by token as POV-Ray reads it.
 pub fn parse(text: &str, file: FileId) -> Result<Rc<[ast::Item]>, Box<Diagnostic>> {
-    match SdlParser::parse(Rule::file, text) {
+    if let Some(error) = unterminated(text, file) {
+        return Err(Box::new(error));
+    }
+    match guarded_parse(Rule::file, text) {
         Ok(mut pairs) => {
             let file_pair = pairs.next().expect("file rule");
             let items = file_pair.into_inner().next().expect("items");
@@ -47,6 +51,125 @@ pub fn parse(text: &str, file: FileId) -> Result<Rc<[ast::Item]>, Box<Diagnostic
         }
         Err(error) => Err(Box::new(syntax_diagnostic(text, file, error))),
     }
+}
+
+/// Fewest parser steps allowed for any file; see [`set_parse_step_limit`].
+static PARSE_STEP_LIMIT: AtomicUsize = AtomicUsize::new(50_000_000);
+/// The highest step budget set so far (pest's budget is one process-wide number; it only
+/// ever grows, so parses on other threads are never cut short by a smaller one).
+static PARSE_STEPS_IN_FORCE: AtomicUsize = AtomicUsize::new(0);
+/// Parser steps allowed per byte of text beyond the fixed budget (a large mesh file
+/// takes about 30 per byte).
+const PARSE_STEPS_PER_BYTE: usize = 400;
+
+/// Sets the parser's step budget for a file: `steps` plus [`PARSE_STEPS_PER_BYTE`] per
+/// byte. Bounds the time of text that makes the grammar backtrack (the `parse-steps` limit).
+pub fn set_parse_step_limit(steps: u64) {
+    PARSE_STEP_LIMIT.store(
+        usize::try_from(steps).unwrap_or(usize::MAX),
+        Ordering::Relaxed,
+    );
+}
+
+/// The budget for a file of `length` bytes.
+fn parse_step_budget(length: usize) -> usize {
+    PARSE_STEP_LIMIT
+        .load(Ordering::Relaxed)
+        .saturating_add(length.saturating_mul(PARSE_STEPS_PER_BYTE))
+}
+
+/// Runs the pest parser with the step budget in force.
+fn guarded_parse(
+    rule: Rule,
+    text: &str,
+) -> Result<pest::iterators::Pairs<'_, Rule>, pest::error::Error<Rule>> {
+    let budget = parse_step_budget(text.len());
+    let in_force = PARSE_STEPS_IN_FORCE
+        .fetch_max(budget, Ordering::Relaxed)
+        .max(budget);
+    pest::set_call_limit(std::num::NonZeroUsize::new(in_force));
+    SdlParser::parse(rule, text)
+}
+
+/// A block comment without its `*/` or more `#if`/`#while`/`#macro`... than `#end`s: found
+/// by a linear scan before parsing, because the grammar would backtrack over such text in
+/// time exponential in the number of open constructs (measured: 20 nested `/*` took 3 s,
+/// 20 unterminated `#macro`s 16 s). Such a file never parses, so nothing valid is refused.
+pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
+    let bytes = text.as_bytes();
+    let mut openers: Vec<(usize, usize)> = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'"' => {
+                i += 1;
+                while i < bytes.len() && bytes[i] != b'"' {
+                    i += if bytes[i] == b'\\' { 2 } else { 1 };
+                }
+                i += 1;
+            }
+            b'/' if bytes.get(i + 1) == Some(&b'/') => {
+                while i < bytes.len() && bytes[i] != b'\n' && bytes[i] != b'\r' {
+                    i += 1;
+                }
+            }
+            b'/' if bytes.get(i + 1) == Some(&b'*') => {
+                let opened = i;
+                let mut depth = 0usize;
+                while i < bytes.len() {
+                    if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'*') {
+                        depth += 1;
+                        i += 2;
+                    } else if bytes[i] == b'*' && bytes.get(i + 1) == Some(&b'/') {
+                        depth -= 1;
+                        i += 2;
+                        if depth == 0 {
+                            break;
+                        }
+                    } else {
+                        i += 1;
+                    }
+                }
+                if depth > 0 {
+                    return Some(
+                        Diagnostic::error(Span::new(file, opened, opened + 2), "no `*/` closes this comment")
+                            .with_label("this comment runs to the end of the file")
+                            .with_help("add `*/` where the comment ends (comments nest: each `/*` needs its own `*/`)"),
+                    );
+                }
+            }
+            b'#' => {
+                let rest = &text[i + 1..];
+                let trimmed = rest.trim_start_matches([' ', '\t']);
+                let skip = rest.len() - trimmed.len();
+                let word_len = trimmed
+                    .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                    .unwrap_or(trimmed.len());
+                let end = i + 1 + skip + word_len;
+                match &trimmed[..word_len] {
+                    "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro" => {
+                        openers.push((i, end))
+                    }
+                    "end" => {
+                        openers.pop();
+                    }
+                    _ => {}
+                }
+                i = end;
+            }
+            _ => i += 1,
+        }
+    }
+    let (start, end) = *openers.last()?;
+    let word = text[start + 1..end].trim();
+    Some(
+        Diagnostic::error(
+            Span::new(file, start, end),
+            format!("unterminated `#{word}`"),
+        )
+        .with_label(format!("this `#{word}` has no matching `#end`"))
+        .with_help("add `#end` where the directive's body ends"),
+    )
 }
 
 /// Whether braces opened under a conditional or loop directive close under another branch
@@ -98,7 +221,7 @@ pub fn braces_cross_directives(text: &str) -> bool {
 /// Parses generated text (a text macro's expansion) into items; spans, including a syntax
 /// error's, point to where `map` says each piece came from.
 pub fn parse_generated(text: &str, map: &OffsetMap) -> Result<Rc<[ast::Item]>, Box<Diagnostic>> {
-    match SdlParser::parse(Rule::file, text) {
+    match guarded_parse(Rule::file, text) {
         Ok(mut pairs) => {
             let file_pair = pairs.next().expect("file rule");
             let items = file_pair.into_inner().next().expect("items");
@@ -131,7 +254,7 @@ pub fn parse_prefix(
     text: &str,
     map: &OffsetMap,
 ) -> Result<(Prefix, usize), Box<Diagnostic>> {
-    match SdlParser::parse(rule, text) {
+    match guarded_parse(rule, text) {
         Ok(mut pairs) => {
             let pair = pairs.next().expect("matched rule");
             let length = pair.as_span().end();
@@ -179,6 +302,24 @@ fn pest_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) ->
     );
     let expected = match &error.variant {
         pest::error::ErrorVariant::ParsingError { positives, .. } => describe_expected(positives),
+        pest::error::ErrorVariant::CustomError { message } if message.contains("limit reached") => {
+            let budget = parse_step_budget(text.len());
+            let what = if message.contains("stack") {
+                "ran out of stack: the text nests too deeply".to_string()
+            } else {
+                format!(
+                    "gave up after {budget} steps: the text makes the grammar try too many \
+                     readings (often an unclosed `<`, `(` or `[`)"
+                )
+            };
+            return Diagnostic::error(span, format!("the parser {what}"))
+                .with_label("the parser stopped here")
+                .with_help(format!(
+                    "this is the `parse-steps` limit ({} plus {PARSE_STEPS_PER_BYTE} per byte); \
+                     check the brackets before this point, or raise it with --limit parse-steps=N",
+                    PARSE_STEP_LIMIT.load(Ordering::Relaxed)
+                ));
+        }
         pest::error::ErrorVariant::CustomError { message } => message.clone(),
     };
     let found_text = if found.is_empty() {

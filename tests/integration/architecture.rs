@@ -22,6 +22,10 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("hash", &[]),
     ("math", &[]),
     ("diag", &[]),
+    // Which files scenes may read and write (povray.conf's I/O restrictions).
+    ("file_policy", &[]),
+    // The named, adjustable limits.
+    ("limits", &[]),
     // POV-Ray's noise, image file readers, bounding boxes and the BVH.
     ("noise", &["math"]),
     ("raster", &["math"]),
@@ -52,8 +56,18 @@ const LAYERS: &[(&str, &[&str])] = &[
     (
         "eval",
         &[
-            "hash", "math", "diag", "noise", "raster", "accel", "texture", "scene", "geometry",
+            "hash",
+            "math",
+            "diag",
+            "noise",
+            "raster",
+            "accel",
+            "texture",
+            "scene",
+            "geometry",
             "syntax",
+            "file_policy",
+            "limits",
         ],
     ),
     // Diagnostics drawn as miette reports, at the edge.

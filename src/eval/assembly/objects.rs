@@ -27,7 +27,8 @@ impl Evaluator {
         })
     }
 
-    /// Evaluates the body of an object block (`head` is its keyword).
+    /// Evaluates the body of an object block (`head` is its keyword), counted against the
+    /// `objects` limit.
     /// `None` when the object is a feature durer leaves out (already warned about).
     pub(crate) fn eval_object(
         &mut self,
@@ -35,6 +36,7 @@ impl Evaluator {
         block: &Block,
         stream: &mut Stream,
     ) -> EvalResult<Option<Object>> {
+        self.runtime.count_objects(1, block.head_span)?;
         // POV-Ray lets every shape and CSG block start with a declared object (or light), as
         // `object { .. }` does, whatever its kind: `sphere { Box_Ident scale 2 }` is that box
         // (measured); only object modifiers may follow it. A mesh takes any value there.
@@ -50,7 +52,26 @@ impl Evaluator {
             _ if head == "object" || starts_with_object => {
                 let (value, span) = self.expect_value(stream, "an object")?;
                 match value {
-                    Value::Object(o) => Arc::unwrap_or_clone(o),
+                    Value::Object(o) => {
+                        // A copy costs as much as its tree: count every node, and refuse a
+                        // tree deeper than blocks may nest (a loop of
+                        // `#declare O = union { object { O } }` grows one level each time).
+                        let (size, depth) = tree_measure(&o);
+                        self.runtime.count_objects(size, span)?;
+                        let limit = self.runtime.options().limits.nesting;
+                        if depth > limit {
+                            return Err(self
+                                .runtime
+                                .error(
+                                    span,
+                                    format!("this object nests more than {limit} levels deep"),
+                                )
+                                .with_label("too deep")
+                                .with_help(crate::limits::Limits::raise_hint("nesting", limit))
+                                .into());
+                        }
+                        Arc::unwrap_or_clone(o)
+                    }
                     Value::Nothing => return Ok(None),
                     // `object { Light transforms }`: an empty union carrying the light, so
                     // it moves with the transformations and with any CSG around it.
@@ -735,4 +756,22 @@ fn uv_mapped_if(value: Value, uv_mapping: bool) -> Value {
         }
         other => other,
     }
+}
+
+/// The number of nodes of an object tree (children, `clipped_by` and `bounded_by`
+/// included) and its depth, walked without recursion.
+fn tree_measure(object: &Object) -> (u64, u64) {
+    let mut size = 0u64;
+    let mut deepest = 0u64;
+    let mut pending = vec![(object, 1u64)];
+    while let Some((node, depth)) = pending.pop() {
+        size += 1;
+        deepest = deepest.max(depth);
+        if let Shape::Csg { children, .. } = &node.shape {
+            pending.extend(children.iter().map(|c| (c, depth + 1)));
+        }
+        pending.extend(node.clipped_by.iter().map(|c| (c, depth + 1)));
+        pending.extend(node.bounded_by.iter().map(|c| (c, depth + 1)));
+    }
+    (size, deepest)
 }

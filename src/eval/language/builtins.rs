@@ -499,7 +499,18 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
         "file_exists" => {
             arity(ev, 1)?;
             let s = string_argument(ev, call, 0)?;
-            Value::Float(f64::from(ev.runtime.find_include(&s).is_ok()))
+            // A path the file policy refuses is not probed: the answer is "no", with a
+            // warning saying why.
+            match ev.runtime.find_include(&s) {
+                Ok(_) => Value::Float(1.0),
+                Err(missing) => {
+                    if let Some(refusal) = missing.refused {
+                        let warning = format!("file_exists(\"{s}\") answers false: {refusal}");
+                        ev.runtime.warn(call.name_span, warning);
+                    }
+                    Value::Float(0.0)
+                }
+            }
         }
         _ => {
             let mut d = ev.runtime.undefined(name, call.name_span);

@@ -4,7 +4,7 @@
 use super::stream::array_offset;
 use super::value::{Value, Vector};
 use crate::diag::Span;
-use crate::eval::{EvalResult, Evaluator, STRING_SIZE_LIMIT};
+use crate::eval::{EvalResult, Evaluator};
 use crate::math::Colour;
 use crate::syntax::ast::{BinaryOp, Call, Expr, Item, UnaryOp};
 use crate::syntax::symbol::Symbol;
@@ -513,13 +513,12 @@ impl Evaluator {
 
     /// Checks a string's size against the limit.
     pub(crate) fn checked_string(&self, s: String, span: Span) -> EvalResult<Value> {
-        if s.len() > STRING_SIZE_LIMIT {
+        let limit = self.runtime.options().limits.string_size;
+        if s.len() as u64 > limit {
             return Err(self
                 .runtime
-                .error(
-                    span,
-                    format!("string longer than {STRING_SIZE_LIMIT} bytes"),
-                )
+                .error(span, format!("string longer than {limit} bytes"))
+                .with_help(crate::limits::Limits::raise_hint("string-size", limit))
                 .into());
         }
         Ok(Value::String(Rc::from(s)))

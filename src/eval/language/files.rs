@@ -1,17 +1,19 @@
 //! `#fopen`, `#read`, `#write`, `#fclose`: data files next to the scene or the output image.
 //!
-//! Files may only be opened inside the scene's folder or the output image's folder; any
-//! other path is refused with a diagnostic. At the end of a file being read, its handle
+//! Files are opened only where the file policy allows (`crate::file_policy`: by default
+//! the scene's folder and the output image's folder); any other path is refused with a
+//! diagnostic. At the end of a file being read, its handle
 //! identifier is undefined, so `#while (defined(Handle))` loops end, as in POV-Ray.
 
 use super::c_format::general_format;
 use super::value::{Value, Vector};
 use crate::diag::Span;
 use crate::eval::{EvalResult, Evaluator};
+use crate::file_policy::Access;
 use crate::syntax::ast::{Expr, Target, WriteValue};
 use crate::syntax::symbol::Symbol;
 use std::io::Write;
-use std::path::{Component, Path, PathBuf};
+use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
 /// An open data file.
@@ -32,7 +34,12 @@ impl Evaluator {
         span: Span,
     ) -> EvalResult<()> {
         let name = self.eval_string(path)?;
-        let resolved = self.allowed_data_path(&name, path.span())?;
+        let access = if mode == "read" {
+            Access::Read
+        } else {
+            Access::Write
+        };
+        let resolved = self.allowed_data_path(&name, access, path.span())?;
         let file = match mode {
             "read" => match std::fs::read(&resolved) {
                 Ok(bytes) => DataFile::Reading {
@@ -88,33 +95,16 @@ impl Evaluator {
         Ok(())
     }
 
-    /// Resolves a data file name and checks it lies in the scene's or the output's folder.
-    fn allowed_data_path(&self, name: &str, span: Span) -> EvalResult<PathBuf> {
+    /// Resolves a data file name (relative to the scene's folder) and checks it against the
+    /// file policy; the resolved path (links followed) is the one to open.
+    fn allowed_data_path(&self, name: &str, access: Access, span: Span) -> EvalResult<PathBuf> {
         let path = Path::new(name);
         let joined = if path.is_absolute() {
             path.to_path_buf()
         } else {
             self.runtime.scene_folder.join(path)
         };
-        let normalised = normalise(&joined);
-        let mut allowed = vec![normalise(&absolute(&self.runtime.scene_folder))];
-        if let Some(output) = &self.runtime.options.output_folder {
-            allowed.push(normalise(&absolute(output)));
-        }
-        let target = normalise(&absolute(&normalised));
-        if allowed.iter().any(|folder| target.starts_with(folder)) {
-            return Ok(target);
-        }
-        let folders: Vec<String> = allowed.iter().map(|f| f.display().to_string()).collect();
-        Err(self
-            .runtime
-            .error(
-                span,
-                format!("`{name}` is outside the folders scenes may read and write"),
-            )
-            .with_label("refused")
-            .with_help(format!("data files must be in: {}", folders.join(", ")))
-            .into())
+        self.runtime.check_access(&joined, access, span)
     }
 
     fn file_index(&self, handle: Symbol, span: Span) -> EvalResult<usize> {
@@ -333,31 +323,6 @@ fn next_datum(text: &str, position: &mut usize) -> Result<Option<Value>, String>
 /// switching to an exponent below 1e-4 and from 1e6 on (`1e-05`, `1.23457e+06`).
 fn format_number(value: f64) -> String {
     general_format(value, 6)
-}
-
-fn absolute(path: &Path) -> PathBuf {
-    if path.is_absolute() {
-        path.to_path_buf()
-    } else {
-        std::env::current_dir()
-            .map(|d| d.join(path))
-            .unwrap_or_else(|_| path.to_path_buf())
-    }
-}
-
-/// Removes `.` and resolves `..` lexically (the file may not exist yet).
-fn normalise(path: &Path) -> PathBuf {
-    let mut out = PathBuf::new();
-    for component in path.components() {
-        match component {
-            Component::CurDir => {}
-            Component::ParentDir => {
-                out.pop();
-            }
-            other => out.push(other.as_os_str()),
-        }
-    }
-    out
 }
 
 #[cfg(test)]

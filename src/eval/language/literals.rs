@@ -2,7 +2,7 @@
 //! with their initialisers.
 
 use super::value::{Array, Value};
-use crate::eval::{EvalResult, Evaluator, ARRAY_SIZE_LIMIT};
+use crate::eval::{EvalResult, Evaluator};
 use crate::math::Colour;
 use crate::syntax::ast::{
     ArrayElement, ArrayInit, ArrayLiteral, ColourComponent, ColourLiteral, ColourType, Item,
@@ -95,15 +95,17 @@ impl Evaluator {
 
     pub(crate) fn eval_array(&mut self, literal: &ArrayLiteral) -> EvalResult<Value> {
         let mut sizes = Vec::new();
+        let limit = self.runtime.options().limits.array_size;
         for size in &literal.sizes {
             let n = self.eval_float(size)?;
-            if !(1.0..=ARRAY_SIZE_LIMIT as f64).contains(&n.trunc()) {
+            if !(1.0..=limit as f64).contains(&n.trunc()) {
                 return Err(self
                     .runtime
                     .error(
                         size.span(),
-                        format!("array size {n} is not between 1 and {ARRAY_SIZE_LIMIT}"),
+                        format!("array size {n} is not between 1 and {limit}"),
                     )
+                    .with_help(crate::limits::Limits::raise_hint("array-size", limit))
                     .into());
             }
             sizes.push(n as usize);
@@ -119,15 +121,14 @@ impl Evaluator {
             .iter()
             .try_fold(1usize, |a, s| a.checked_mul(*s))
             .unwrap_or(usize::MAX);
-        if total > ARRAY_SIZE_LIMIT {
+        if total as u64 > limit {
             return Err(self
                 .runtime
                 .error(
                     literal.span,
-                    format!(
-                        "array of {total} elements is larger than the limit of {ARRAY_SIZE_LIMIT}"
-                    ),
+                    format!("array of {total} elements is larger than the limit of {limit}"),
                 )
+                .with_help(crate::limits::Limits::raise_hint("array-size", limit))
                 .into());
         }
         if literal.initialiser.is_some() && values.len() != total {
@@ -175,7 +176,7 @@ impl Evaluator {
             }
             let value = self.item_value(&item)?;
             out.push(value);
-            if out.len() > ARRAY_SIZE_LIMIT {
+            if out.len() as u64 > self.runtime.options().limits.array_size {
                 return Err(self
                     .runtime
                     .error(init.span, "array initialiser is too large")

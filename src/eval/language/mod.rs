@@ -22,8 +22,9 @@ pub(crate) mod stream;
 pub(crate) mod token_macro;
 pub(crate) mod value;
 
-use super::{EvalOptions, EvalResult, NESTING_LIMIT};
+use super::{EvalOptions, EvalResult};
 use crate::diag::{did_you_mean, Diagnostic, FileId, SourceMap, Span, TraceEntry};
+use crate::file_policy::{Access, FilePolicy, Reach, Refusal};
 use crate::hash::FastHash;
 use crate::syntax::ast::Item;
 use crate::syntax::symbol::Symbol;
@@ -77,6 +78,20 @@ pub(crate) const EMBEDDED_INCLUDES: &[(&str, &str)] = &[
     ("makegrass.inc", include_str!("stdlib/makegrass.inc")),
     ("meshmaker.inc", include_str!("stdlib/meshmaker.inc")),
 ];
+
+/// POV-Ray's include folders, searched after the scene's and `-L` ones.
+const INSTALLED_INCLUDE_FOLDERS: [&str; 2] = [
+    "/usr/share/povray-3.7/include",
+    "/usr/local/share/povray-3.7/include",
+];
+
+/// A file not found on the search path: the folders searched, and the first candidate the
+/// file policy refused.
+#[derive(Debug, Default)]
+pub(crate) struct Missing {
+    pub(crate) searched: Vec<PathBuf>,
+    pub(crate) refused: Option<Refusal>,
+}
 
 /// Folder name under which embedded include files appear in diagnostics.
 pub(crate) const EMBEDDED_FOLDER: &str = "<durer standard library>";
@@ -135,7 +150,7 @@ pub(crate) struct Runtime {
     /// Warnings so far, each distinct message once.
     warnings: Vec<Diagnostic>,
     warned_once: std::collections::HashSet<String>,
-    /// Current depth of macro calls, includes and blocks (bounded by [`NESTING_LIMIT`]).
+    /// Current depth of macro calls, includes and blocks (bounded by the `nesting` limit).
     nesting: usize,
     /// The `#version` in force.
     version: f64,
@@ -147,6 +162,11 @@ pub(crate) struct Runtime {
     query_worlds: HashMap<usize, (Arc<crate::scene::Object>, Rc<crate::geometry::World>)>,
     /// Data files opened by `#fopen`; closed ones are `None`.
     files: Vec<Option<files::DataFile>>,
+    /// Which files the scene may read and write: the options' policy with the scene's
+    /// folders added (see `set_main_file`).
+    policy: FilePolicy,
+    /// Objects created so far, copies included (bounded by the `objects` limit).
+    objects_created: u64,
     /// Text macro bodies parsed once for all calls (see `token_macro`).
     text_macro_cache: token_macro::TextMacroCache,
     /// Running calls with directives among their arguments (see `argument_directives`).
@@ -156,7 +176,10 @@ pub(crate) struct Runtime {
 impl Runtime {
     /// A fresh runtime: empty global scope, nothing read yet, version 3.7.
     pub(crate) fn new(options: EvalOptions) -> Runtime {
+        let policy = options.file_policy.clone();
         Runtime {
+            policy,
+            objects_created: 0,
             options,
             sources: SourceMap::new(),
             scopes: scopes::ScopeStack::new(),
@@ -244,7 +267,20 @@ impl Runtime {
             .map(|(_, text)| text.as_bytes().to_vec());
         let bytes = match embedded {
             Some(bytes) => Ok(bytes),
-            None => std::fs::read(path),
+            None => match self.policy.check(path, Access::Read) {
+                Ok(resolved) => std::fs::read(resolved),
+                Err(refusal) => {
+                    let mut d = self.refused(from.unwrap_or_default(), &refusal);
+                    if from.is_none() {
+                        d.span = Span {
+                            file: u32::MAX,
+                            start: 0,
+                            end: 0,
+                        };
+                    }
+                    return Err(Box::new(d));
+                }
+            },
         };
         let bytes = bytes.map_err(|e| {
             let span = from.unwrap_or_default();
@@ -274,8 +310,15 @@ impl Runtime {
         what: &str,
         label: &str,
     ) -> EvalResult<PathBuf> {
-        self.find_include(name).map_err(|folders| {
-            let searched: Vec<String> = folders.iter().map(|f| f.display().to_string()).collect();
+        self.find_include(name).map_err(|missing| {
+            if let Some(refusal) = &missing.refused {
+                return self.refused(span, refusal).into();
+            }
+            let searched: Vec<String> = missing
+                .searched
+                .iter()
+                .map(|f| f.display().to_string())
+                .collect();
             self.error(span, format!("cannot find {what} `{name}`"))
                 .with_label(label.to_string())
                 .with_help(format!("searched: {}", searched.join(", ")))
@@ -283,38 +326,75 @@ impl Runtime {
         })
     }
 
-    pub(crate) fn find_include(&self, name: &str) -> Result<PathBuf, Vec<PathBuf>> {
+    /// The diagnostic for an access the file policy refuses.
+    pub(crate) fn refused(&self, span: Span, refusal: &Refusal) -> Diagnostic {
+        self.error(span, refusal.to_string())
+            .with_label("refused by the file policy")
+            .with_help(refusal.help())
+    }
+
+    /// Checks an access against the file policy; the resolved path is the one to open.
+    pub(crate) fn check_access(
+        &self,
+        path: &Path,
+        access: Access,
+        span: Span,
+    ) -> EvalResult<PathBuf> {
+        self.policy
+            .check(path, access)
+            .map_err(|refusal| self.refused(span, &refusal).into())
+    }
+
+    /// Finds a file on the search path (the scene's folder, `-L` folders,
+    /// `DURER_INCLUDE_PATH`, POV-Ray's installed include folder, durer's embedded standard
+    /// library). A candidate the file policy refuses is not even probed; when nothing is
+    /// found, the refusal is reported rather than "not found".
+    pub(crate) fn find_include(&self, name: &str) -> Result<PathBuf, Missing> {
         let direct = Path::new(name);
         if direct.is_absolute() {
-            return if direct.is_file() {
-                Ok(direct.to_path_buf())
-            } else {
-                Err(vec![])
+            return match self.policy.check(direct, Access::Read) {
+                Ok(_) if direct.is_file() => Ok(direct.to_path_buf()),
+                Ok(_) => Err(Missing::default()),
+                Err(refusal) => Err(Missing {
+                    searched: vec![],
+                    refused: Some(refusal),
+                }),
             };
         }
+        let folders = self.search_folders();
+        let mut refused = None;
+        for folder in &folders {
+            let candidate = folder.join(name);
+            match self.policy.check(&candidate, Access::Read) {
+                Ok(_) if candidate.is_file() => return Ok(candidate),
+                Ok(_) => {}
+                Err(refusal) => {
+                    refused.get_or_insert(refusal);
+                }
+            }
+        }
+        if EMBEDDED_INCLUDES.iter().any(|(n, _)| *n == name) {
+            return Ok(Path::new(EMBEDDED_FOLDER).join(name));
+        }
+        Err(Missing {
+            searched: folders,
+            refused,
+        })
+    }
+
+    /// The folders searched for include files, images and fonts, in order.
+    fn search_folders(&self) -> Vec<PathBuf> {
         let mut folders = vec![self.scene_folder.clone()];
         folders.extend(self.options.include_paths.iter().cloned());
         if let Some(paths) = std::env::var_os("DURER_INCLUDE_PATH") {
             folders.extend(std::env::split_paths(&paths));
         }
         if self.options.search_installed_povray {
-            for installed in [
-                "/usr/share/povray-3.7/include",
-                "/usr/local/share/povray-3.7/include",
-            ] {
+            for installed in INSTALLED_INCLUDE_FOLDERS {
                 folders.push(PathBuf::from(installed));
             }
         }
-        for folder in &folders {
-            let candidate = folder.join(name);
-            if candidate.is_file() {
-                return Ok(candidate);
-            }
-        }
-        if EMBEDDED_INCLUDES.iter().any(|(n, _)| *n == name) {
-            return Ok(Path::new(EMBEDDED_FOLDER).join(name));
-        }
-        Err(folders)
+        folders
     }
 
     /// The file `#include "name"` reads: the name as written, then, for a name without an
@@ -355,12 +435,35 @@ impl Runtime {
         Ok(())
     }
 
-    pub(crate) fn enter_nesting(&mut self, span: Span) -> EvalResult<()> {
-        if self.nesting >= NESTING_LIMIT {
+    /// Counts `count` objects created (a shape, a CSG node, or every node of a copied
+    /// tree); past the `objects` limit evaluation stops, before memory runs out.
+    pub(crate) fn count_objects(&mut self, count: u64, span: Span) -> EvalResult<()> {
+        self.objects_created = self.objects_created.saturating_add(count);
+        let limit = self.options.limits.objects;
+        if self.objects_created > limit {
             return Err(self
-                .error(span, format!("nesting deeper than {NESTING_LIMIT} levels"))
-                .with_label("this call or include goes too deep")
-                .with_help("a recursive macro probably never reaches its base case")
+                .error(span, format!("the scene creates more than {limit} objects"))
+                .with_label("this object is one too many")
+                .with_help(format!(
+                    "copies count too (`object {{ O }}` copies all of O); a loop that never \
+                     ends can cause this; {}",
+                    crate::limits::Limits::raise_hint("objects", limit)
+                ))
+                .into());
+        }
+        Ok(())
+    }
+
+    pub(crate) fn enter_nesting(&mut self, span: Span) -> EvalResult<()> {
+        let limit = self.options.limits.nesting;
+        if self.nesting as u64 >= limit {
+            return Err(self
+                .error(span, format!("nesting deeper than {limit} levels"))
+                .with_label("this call, include or block goes too deep")
+                .with_help(format!(
+                    "a recursive macro probably never reaches its base case; {}",
+                    crate::limits::Limits::raise_hint("nesting", limit)
+                ))
                 .into());
         }
         self.nesting += 1;
@@ -465,6 +568,40 @@ impl Runtime {
     /// `input_file_name`.
     pub(crate) fn set_main_file(&mut self, path: &Path) {
         self.scene_folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        self.policy
+            .allow(&self.scene_folder, true, Reach::Tree, "the scene's folder");
+        if let Some(output) = &self.options.output_folder {
+            self.policy
+                .allow(output, true, Reach::Tree, "the output image's folder");
+        }
+        for folder in &self.options.include_paths {
+            self.policy
+                .allow(folder, false, Reach::Tree, "an include folder");
+        }
+        if let Some(paths) = std::env::var_os("DURER_INCLUDE_PATH") {
+            for folder in std::env::split_paths(&paths) {
+                self.policy
+                    .allow(&folder, false, Reach::Tree, "DURER_INCLUDE_PATH");
+            }
+        }
+        if self.options.search_installed_povray {
+            for folder in INSTALLED_INCLUDE_FOLDERS {
+                self.policy.allow(
+                    Path::new(folder),
+                    false,
+                    Reach::Tree,
+                    "POV-Ray's include folder",
+                );
+            }
+        }
+        if let Some(header) = &self.options.include_header {
+            self.policy.allow(
+                header,
+                false,
+                Reach::File,
+                "the command line's Include_Header",
+            );
+        }
         self.input_file_name = path
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())

@@ -3,7 +3,7 @@
 
 use super::value::Value;
 use crate::diag::Span;
-use crate::eval::{EvalResult, Evaluator, LOOP_ITERATION_LIMIT};
+use crate::eval::{EvalResult, Evaluator};
 use crate::syntax::ast::{Directive, DirectiveKind, Expr, Item, MessageLevel, SwitchLabel};
 use crate::syntax::symbol::Symbol;
 use std::rc::Rc;
@@ -169,7 +169,7 @@ impl Evaluator {
                 };
                 *iterations += 1;
                 let count = *iterations;
-                if count >= LOOP_ITERATION_LIMIT {
+                if count >= self.runtime.options().limits.iterations {
                     return Err(self.loop_limit(directive.span));
                 }
                 if self.eval_condition(condition)? {
@@ -198,7 +198,7 @@ impl Evaluator {
                 };
                 let next = current + *step;
                 let (end, step, count) = (*end, *step, *iterations);
-                if count >= LOOP_ITERATION_LIMIT {
+                if count >= self.runtime.options().limits.iterations {
                     return Err(self.loop_limit(directive.span));
                 }
                 // The variable ends one step past the last value, as in POV-Ray.
@@ -244,13 +244,14 @@ impl Evaluator {
     }
 
     pub(crate) fn loop_limit(&self, span: Span) -> Box<crate::diag::Diagnostic> {
+        let limit = self.runtime.options().limits.iterations;
         self.runtime
-            .error(
-                span,
-                format!("loop ran {LOOP_ITERATION_LIMIT} times without ending"),
-            )
+            .error(span, format!("loop ran {limit} times without ending"))
             .with_label("this loop")
-            .with_help("check that the loop condition eventually becomes false")
+            .with_help(format!(
+                "check that the loop condition eventually becomes false; {}",
+                crate::limits::Limits::raise_hint("iterations", limit)
+            ))
             .into()
     }
 

@@ -171,7 +171,10 @@ impl Evaluator {
             .or_else(|_| self.runtime.find_include(&format!("{font}.ttf")));
         let path = match found {
             Ok(path) => path,
-            Err(_) => {
+            Err(missing) => {
+                if let Some(refusal) = &missing.refused {
+                    return Err(self.runtime.refused(font_span, refusal).into());
+                }
                 let mut error = self
                     .runtime
                     .error(font_span, format!("font file `{font}` not found"))

@@ -9,7 +9,7 @@ use super::{Prefix, Rule, TextRun};
 use crate::diag::{Diagnostic, Span};
 use crate::eval::language::stream::{for_continues, Stream};
 use crate::eval::language::value::Value;
-use crate::eval::{EvalResult, Evaluator, LOOP_ITERATION_LIMIT};
+use crate::eval::{EvalResult, Evaluator};
 use crate::syntax::ast::{DirectiveKind, Expr};
 use crate::syntax::symbol::Symbol;
 use crate::syntax::tokens::{next_token, skip_trivia, Token, TokenKind};
@@ -255,7 +255,7 @@ impl Evaluator {
                 iterations,
                 span,
             }) => {
-                if iterations + 1 >= LOOP_ITERATION_LIMIT {
+                if iterations + 1 >= self.runtime.options().limits.iterations {
                     return Err(self.loop_limit(span));
                 }
                 if self.eval_condition(&condition)? {
@@ -277,7 +277,7 @@ impl Evaluator {
                 iterations,
                 span,
             }) => {
-                if iterations + 1 >= LOOP_ITERATION_LIMIT {
+                if iterations + 1 >= self.runtime.options().limits.iterations {
                     return Err(self.loop_limit(span));
                 }
                 // POV-Ray reads the loop variable back, so the body may change it.
