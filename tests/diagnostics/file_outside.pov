@@ -1,4 +1,4 @@
-// error: 4:10 `/etc/passwd` is outside the folders scenes may read and write
-// error-text: data files must be in
+// error: 4:10 the file policy does not allow scenes to read `/etc/passwd`
+// error-text: --allow-read /etc
 
 #fopen F "/etc/passwd" read

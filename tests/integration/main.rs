@@ -4,6 +4,7 @@ mod architecture;
 mod cli;
 mod diagnostics;
 mod expand;
+mod hostile;
 mod includes;
 mod language;
 mod povray_cli;
