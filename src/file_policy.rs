@@ -185,6 +185,27 @@ impl FilePolicy {
         }
     }
 
+    /// Permits a library folder for reading (with subfolders) and the targets of the
+    /// symbolic links directly in it: an installed include folder links its fonts from the
+    /// system's font folder (`timrom.ttf -> ../../fonts/truetype/povray/timrom.ttf`). Only
+    /// for read-only folders: a scene cannot create links there, while a link in a writable
+    /// folder (the scene's) may have been planted to lead out, and is not trusted.
+    pub fn allow_library(&mut self, folder: &Path, origin: &str) {
+        self.allow(folder, false, Reach::Tree, origin);
+        let Ok(entries) = std::fs::read_dir(folder) else {
+            return;
+        };
+        for entry in entries.flatten() {
+            let is_link = entry.file_type().is_ok_and(|t| t.is_symlink());
+            if is_link {
+                let target = resolve(&entry.path());
+                if target.is_file() {
+                    self.allow(&target, false, Reach::File, format!("a link in {origin}"));
+                }
+            }
+        }
+    }
+
     /// Checks an access; on success returns the resolved path, which is the one to open.
     pub fn check(&self, path: &Path, access: Access) -> Result<PathBuf, Refusal> {
         let resolved = resolve(path);

@@ -20,6 +20,8 @@ pub struct Limits {
     pub string_size: u64,
     /// Most objects (shapes, CSG nodes and object copies) a scene may create.
     pub objects: u64,
+    /// Most bytes of mesh data (triangles, vectors, indices) a scene may hold.
+    pub geometry_memory: u64,
     /// Largest image, in pixels (width times height).
     pub pixels: u64,
     /// Most render threads.
@@ -36,6 +38,7 @@ impl Default for Limits {
             array_size: 0,
             string_size: 0,
             objects: 0,
+            geometry_memory: 0,
             pixels: 0,
             threads: 0,
             parse_steps: 0,
@@ -87,6 +90,13 @@ pub const LIMITS: &[Limit] = &[
         default: 5_000_000,
         meaning: "most objects (shapes, CSG nodes, object copies) one scene may create",
         field: |l| &mut l.objects,
+    },
+    Limit {
+        name: "geometry-memory",
+        default: 8 << 30,
+        meaning: "most bytes of mesh data (triangles, mesh2 vectors and indices) one scene \
+                  may hold",
+        field: |l| &mut l.geometry_memory,
     },
     Limit {
         name: "pixels",

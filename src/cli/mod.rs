@@ -92,7 +92,8 @@ struct SceneArgs {
 #[derive(Args)]
 struct SafetyArgs {
     /// Set a limit: NAME=VALUE (repeatable; `--limit help` lists them: nesting,
-    /// iterations, array-size, string-size, objects, pixels, threads, parse-steps).
+    /// iterations, array-size, string-size, objects, geometry-memory, pixels, threads,
+    /// parse-steps).
     #[arg(long = "limit", value_name = "NAME=VALUE")]
     limits: Vec<String>,
     /// Let the scene read files in DIR and its subfolders (repeatable).

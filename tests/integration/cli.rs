@@ -191,7 +191,7 @@ fn huge_images_zero_sizes_and_too_many_threads_are_usage_errors() {
     let huge = run(&["--width", "60000", "--height", "60000"]);
     assert_eq!(huge.status.code(), Some(2));
     let text = String::from_utf8_lossy(&huge.stderr);
-    assert!(text.contains("--max-pixels 3600000000"), "{text}");
+    assert!(text.contains("--limit pixels=3600000000"), "{text}");
     assert_eq!(run(&["--width", "0"]).status.code(), Some(2));
     assert_eq!(run(&["+W0"]).status.code(), Some(2));
     assert_eq!(run(&["--threads", "100000"]).status.code(), Some(2));

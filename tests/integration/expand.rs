@@ -41,6 +41,9 @@ fn render(scene: &Path, folder: &Path, out: &Path) -> Result<Vec<u8>, String> {
         .arg(scene)
         .arg("-o")
         .arg(out)
+        // A flat file in a scratch folder names the images beside the original scene.
+        .arg("--allow-read")
+        .arg(env!("CARGO_MANIFEST_DIR"))
         .output()
         .map_err(|e| e.to_string())?;
     if !status.status.success() {

@@ -134,6 +134,27 @@ fn endless_while_stops_at_the_iterations_limit() {
 }
 
 #[test]
+fn endless_mesh_loops_stop_at_the_geometry_memory_limit() {
+    // Triangles of a mesh and vectors of a mesh2 made by loops that never end: one object
+    // each, so only the geometry limit stops them.
+    let mesh = "mesh {\n#declare I = 0;\n#while (1)\ntriangle { <I,0,0>, <I,1,0>, <I,0,1> }\n\
+                #declare I = I + 1;\n#end\n}\n";
+    let (output, took) = check("mesh-loop", mesh, &["--limit", "geometry-memory=1e6"]);
+    assert_scene_error(
+        &output,
+        &[
+            "meshes need more than 1000000 bytes",
+            "--limit geometry-memory=",
+        ],
+    );
+    assert!(took < Duration::from_secs(30), "took {took:?}");
+    let mesh2 = "mesh2 { vertex_vectors { 10000000,\n#declare I = 0;\n#while (1)\n<I,0,0>,\n\
+                 #declare I = I + 1;\n#end\n} }\n";
+    let (output, _) = check("mesh2-loop", mesh2, &["--limit", "geometry-memory=1e6"]);
+    assert_scene_error(&output, &["meshes need more than 1000000 bytes"]);
+}
+
+#[test]
 fn growing_string_stops_at_the_string_size_limit() {
     let scene = "#declare S = \"x\";\n#while (1)\n#declare S = concat(S, S);\n#end\n";
     let (output, _) = check("string-growth", scene, &[]);

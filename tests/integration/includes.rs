@@ -80,8 +80,10 @@ fn embedded_colour_names() -> Vec<String> {
 /// Evaluates the scene at `path` (with or without POV-Ray's installed include folder) and
 /// fails the test, naming `context`, if it reports any error.
 fn evaluate_cleanly(path: &std::path::Path, installed: bool, context: &str) {
+    // The fonts are named by their path in POV-Ray's folder even when it is not searched.
     let options = durer::eval::EvalOptions {
         search_installed_povray: installed,
+        file_policy: durer::file_policy::FilePolicy::unrestricted(),
         ..Default::default()
     };
     let evaluated = evaluate_with(path, options);
@@ -103,8 +105,10 @@ fn render_scene(
     (width, height): (u32, u32),
 ) -> Result<durer::render::Image, Vec<String>> {
     std::fs::write(path, text).expect("write scene");
+    // The fonts are named by their path in POV-Ray's folder even when it is not searched.
     let options = durer::eval::EvalOptions {
         search_installed_povray: installed,
+        file_policy: durer::file_policy::FilePolicy::unrestricted(),
         ..Default::default()
     };
     let evaluated = evaluate_with(path, options);
@@ -999,8 +1003,10 @@ fn stdlib_scene_renders_like_povray(name: &str, installed: bool) {
         return;
     }
     let path = crate::tests_folder().join(format!("stdlib/{name}.pov"));
+    // The fonts are named by their path in POV-Ray's folder even when it is not searched.
     let options = durer::eval::EvalOptions {
         search_installed_povray: installed,
+        file_policy: durer::file_policy::FilePolicy::unrestricted(),
         ..Default::default()
     };
     let evaluated = evaluate_with(&path, options);

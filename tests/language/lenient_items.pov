@@ -42,8 +42,8 @@ cylinder { Lamp }
 Check((Arr[1] = 5), "an undefined element can be set again")
 
 // An image file named without its extension: POV-Ray tries the type's extension.
-#declare Picture = pigment { image_map { png "../reference/aa_method1" } }
-#declare Heights = height_field { png "../reference/aa_method1" }
+#declare Picture = pigment { image_map { png "lenient_picture" } }
+#declare Heights = height_field { png "lenient_picture" }
 Check((max_extent(Heights).y > 0.1), "the height field read the image")
 
 // A function (or spline) stored in an array is called with `Fns[I](x)`, in scene code and

@@ -167,6 +167,8 @@ pub(crate) struct Runtime {
     policy: FilePolicy,
     /// Objects created so far, copies included (bounded by the `objects` limit).
     objects_created: u64,
+    /// Bytes of mesh data read so far (bounded by the `geometry-memory` limit).
+    geometry_bytes: u64,
     /// Text macro bodies parsed once for all calls (see `token_macro`).
     text_macro_cache: token_macro::TextMacroCache,
     /// Running calls with directives among their arguments (see `argument_directives`).
@@ -180,6 +182,7 @@ impl Runtime {
         Runtime {
             policy,
             objects_created: 0,
+            geometry_bytes: 0,
             options,
             sources: SourceMap::new(),
             scopes: scopes::ScopeStack::new(),
@@ -454,6 +457,27 @@ impl Runtime {
         Ok(())
     }
 
+    /// Counts `bytes` of mesh data (triangles, vertex, normal and uv vectors, face
+    /// indices); past the `geometry-memory` limit evaluation stops before memory runs out.
+    pub(crate) fn count_geometry(&mut self, bytes: u64, span: Span) -> EvalResult<()> {
+        self.geometry_bytes = self.geometry_bytes.saturating_add(bytes);
+        let limit = self.options.limits.geometry_memory;
+        if self.geometry_bytes > limit {
+            return Err(self
+                .error(
+                    span,
+                    format!("the scene's meshes need more than {limit} bytes"),
+                )
+                .with_label("this mesh element is one too many")
+                .with_help(format!(
+                    "a loop generating triangles or vectors may not end; {}",
+                    crate::limits::Limits::raise_hint("geometry-memory", limit)
+                ))
+                .into());
+        }
+        Ok(())
+    }
+
     pub(crate) fn enter_nesting(&mut self, span: Span) -> EvalResult<()> {
         let limit = self.options.limits.nesting;
         if self.nesting as u64 >= limit {
@@ -575,23 +599,17 @@ impl Runtime {
                 .allow(output, true, Reach::Tree, "the output image's folder");
         }
         for folder in &self.options.include_paths {
-            self.policy
-                .allow(folder, false, Reach::Tree, "an include folder");
+            self.policy.allow_library(folder, "an include folder");
         }
         if let Some(paths) = std::env::var_os("DURER_INCLUDE_PATH") {
             for folder in std::env::split_paths(&paths) {
-                self.policy
-                    .allow(&folder, false, Reach::Tree, "DURER_INCLUDE_PATH");
+                self.policy.allow_library(&folder, "DURER_INCLUDE_PATH");
             }
         }
         if self.options.search_installed_povray {
             for folder in INSTALLED_INCLUDE_FOLDERS {
-                self.policy.allow(
-                    Path::new(folder),
-                    false,
-                    Reach::Tree,
-                    "POV-Ray's include folder",
-                );
+                self.policy
+                    .allow_library(Path::new(folder), "POV-Ray's include folder");
             }
         }
         if let Some(header) = &self.options.include_header {

@@ -20,6 +20,11 @@ use glam::{DVec2, DVec3};
 use std::collections::HashMap;
 use std::sync::Arc;
 
+/// Bytes one `triangle` of a `mesh` holds: its three vertices and its vertex, normal, uv
+/// and texture indices (counted against the `geometry-memory` limit).
+const TRIANGLE_BYTES: u64 =
+    (3 * std::mem::size_of::<DVec3>() + 4 * std::mem::size_of::<[u32; 3]>()) as u64;
+
 /// One entry of `face_indices`: the corners' vertex indices and the optional texture indices
 /// (one for the whole face, or one per corner).
 struct FaceEntry {
@@ -68,6 +73,7 @@ impl Evaluator {
                 stream.push_back(item);
                 break;
             }
+            self.runtime.count_geometry(TRIANGLE_BYTES, block.span)?;
             let face = mesh.faces.len();
             let mut body = Stream::new(block.body.clone());
             let mut corners = [DVec3::ZERO; 3];
@@ -348,6 +354,8 @@ impl Evaluator {
         let count = self.expect_count(stream, "the number of uv vectors", span)?;
         let mut list = Vec::with_capacity(count.min(1 << 20));
         for _ in 0..count {
+            self.runtime
+                .count_geometry(std::mem::size_of::<DVec2>() as u64, span)?;
             list.push(self.expect_uv(stream)?);
         }
         self.expect_end(stream, "uv_vectors")?;
@@ -396,6 +404,8 @@ impl Evaluator {
             match self.item_value(&item)? {
                 Value::Vector(v) => {
                     finish_face(self, &mut list, &mut pending)?;
+                    self.runtime
+                        .count_geometry(std::mem::size_of::<FaceEntry>() as u64, item_span)?;
                     let c = v.to_dvec3();
                     list.push(FaceEntry {
                         vertices: [c.x, c.y, c.z],

@@ -165,10 +165,12 @@ impl Evaluator {
         let thickness = self.expect_float(stream, "the thickness")?;
         let offset = self.expect_vector(stream, "the offset")?;
         // POV-Ray also tries the name with `.ttf` added.
-        let found = self
-            .runtime
-            .find_include(&font)
-            .or_else(|_| self.runtime.find_include(&format!("{font}.ttf")));
+        // A failure reports the name as written, not the one with `.ttf` added.
+        let found = self.runtime.find_include(&font).or_else(|first| {
+            self.runtime
+                .find_include(&format!("{font}.ttf"))
+                .map_err(|_| first)
+        });
         let path = match found {
             Ok(path) => path,
             Err(missing) => {
@@ -239,6 +241,8 @@ impl Evaluator {
         let count = self.expect_count(stream, "the number of vectors", span)?;
         let mut list = Vec::with_capacity(count.min(1 << 20));
         for _ in 0..count {
+            self.runtime
+                .count_geometry(std::mem::size_of::<DVec3>() as u64, span)?;
             list.push(self.expect_vector(stream, "a vector")?);
         }
         self.expect_end(stream, "vector list")?;
@@ -258,6 +262,10 @@ impl Evaluator {
             match value {
                 Value::Vector(v) => {
                     let c = v.to_dvec3();
+                    self.runtime.count_geometry(
+                        std::mem::size_of::<([f64; 3], Span)>() as u64,
+                        item_span,
+                    )?;
                     list.push(([c.x, c.y, c.z], item_span));
                 }
                 Value::Float(_) => {}
