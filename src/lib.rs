@@ -8,6 +8,7 @@ pub mod diag;
 pub mod eval;
 pub mod expand;
 pub mod file_policy;
+pub mod fuzzing;
 pub mod geometry;
 pub mod hash;
 pub mod limits;

@@ -72,6 +72,11 @@ const LAYERS: &[(&str, &[&str])] = &[
     ),
     // Diagnostics drawn as miette reports, at the edge.
     ("report", &["diag", "syntax"]),
+    // Fuzzer entry points: one scene text through the whole pipeline.
+    (
+        "fuzzing",
+        &["diag", "syntax", "eval", "geometry", "render", "report"],
+    ),
 ];
 
 /// Sibling circles allowed, each with its reason.

@@ -5,6 +5,7 @@ mod cli;
 mod diagnostics;
 mod expand;
 mod hostile;
+mod fuzz_mutation;
 mod includes;
 mod language;
 mod povray_cli;

@@ -1,0 +1,7 @@
+//! AFL++ target: each input is a scene text, run through durer::fuzzing::render.
+fn main() {
+    let limits = durer::fuzzing::Limits::default();
+    afl::fuzz!(|data: &[u8]| {
+        std::hint::black_box(durer::fuzzing::render(data, &limits));
+    });
+}
