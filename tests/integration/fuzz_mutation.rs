@@ -215,7 +215,15 @@ const NESTINGS: &[(&str, &str, &str)] = &[
 ];
 
 /// Text that leaves a construct open.
-const UNCLOSED: &[&str] = &["/* ", "#macro M() ", "< ", "\"", "#if (1) ", "{ ", "#while (0) "];
+const UNCLOSED: &[&str] = &[
+    "/* ",
+    "#macro M() ",
+    "< ",
+    "\"",
+    "#if (1) ",
+    "{ ",
+    "#while (0) ",
+];
 
 /// A line of about `length` characters.
 fn long_line(rng: &mut Rng, length: usize) -> String {
@@ -279,7 +287,9 @@ fn mutate(
                 let balanced = count("#macro") == 0
                     && count("/*") == count("*/")
                     && count("<") == count(">")
-                    && count("{") == count("}");
+                    && count("{") == count("}")
+                    && count("(") == count(")")
+                    && count("[") == count("]");
                 let times = if balanced && rng.chance(8) {
                     rng.between(2, 50)
                 } else {
@@ -298,7 +308,7 @@ fn mutate(
             }
         }
         "splice" => {
-            let donor = Pieces::of(rng.pick(donors));
+            let donor = Pieces::of(rng.pick(donors).as_str());
             if let Some((start, end)) = donor.run(rng, 40) {
                 let at = pieces.position(rng);
                 for (offset, piece) in donor.pieces[start..end].iter().enumerate() {
@@ -411,7 +421,12 @@ fn limited_command(args: &[&str], memory_kib: u64) -> Command {
 fn run_case(args: &[&str], timeout: Duration) -> (Verdict, String) {
     let mut child = match limited_command(args, 6 << 20).spawn() {
         Ok(child) => child,
-        Err(e) => return (Verdict::Failure(format!("cannot start: {e}")), String::new()),
+        Err(e) => {
+            return (
+                Verdict::Failure(format!("cannot start: {e}")),
+                String::new(),
+            )
+        }
     };
     // Read standard error on a thread, so a chatty scene cannot block on a full pipe.
     let mut stderr = child.stderr.take().expect("piped stderr");
@@ -532,7 +547,9 @@ fn run_one(
         ]
     } else {
         tally.checks += 1;
-        vec!["check", scene_arg, "-L", library, "--width", "8", "--height", "6"]
+        vec![
+            "check", scene_arg, "-L", library, "--width", "8", "--height", "6",
+        ]
     };
     let start = Instant::now();
     let (verdict, stderr) = run_case(&args, Duration::from_secs(20));
@@ -735,7 +752,14 @@ fn scenes_the_fuzzers_found_end_in_a_diagnostic() {
     let found = found_scenes();
     for scene in &found {
         let path = scene.path.to_str().expect("utf-8 path");
-        let mut args = vec![scene.command.as_str(), path, "--width", "8", "--height", "6"];
+        let mut args = vec![
+            scene.command.as_str(),
+            path,
+            "--width",
+            "8",
+            "--height",
+            "6",
+        ];
         if scene.command == "render" {
             args.extend(["--threads", "2", "--quiet", "-o"]);
             args.push(output.to_str().expect("utf-8 path"));
