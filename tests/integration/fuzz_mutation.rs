@@ -500,6 +500,7 @@ struct Tally {
 }
 
 /// Generates and runs case `index` of `seed`.
+#[allow(clippy::too_many_arguments)]
 fn run_one(
     seed: u64,
     index: u64,
