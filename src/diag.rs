@@ -192,6 +192,9 @@ fn floor_char_boundary(text: &str, mut offset: usize) -> usize {
     offset
 }
 
+/// Names longer than this get no did-you-mean.
+const MAX_SUGGESTED_LENGTH: usize = 64;
+
 /// The candidate closest to `name` by edit distance, if close enough to be a likely typo.
 ///
 /// ```
@@ -203,13 +206,20 @@ pub fn did_you_mean<'a>(
     name: &str,
     candidates: impl IntoIterator<Item = &'a str>,
 ) -> Option<&'a str> {
-    let limit = (name.chars().count() / 3).max(1);
+    let length = name.chars().count();
+    // No name that long is a typo of a known one; the distance would cost length² each.
+    if length > MAX_SUGGESTED_LENGTH {
+        return None;
+    }
+    let limit = (length / 3).max(1);
+    let lowered = name.to_lowercase();
     let mut best: Option<(usize, &str)> = None;
     for candidate in candidates {
-        if candidate == name {
+        // The distance is at least the difference in length.
+        if candidate == name || candidate.chars().count().abs_diff(length) > limit {
             continue;
         }
-        let distance = edit_distance(&name.to_lowercase(), &candidate.to_lowercase());
+        let distance = edit_distance(&lowered, &candidate.to_lowercase());
         if distance <= limit
             && best.is_none_or(|(d, c)| distance < d || (distance == d && candidate < c))
         {

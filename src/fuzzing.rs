@@ -7,7 +7,7 @@
 //! `tests/integration/fuzz_mutation.rs`, see `docs/fuzzing.md`).
 //!
 //! Each stage runs as the command line runs it: evaluation on a thread with the CLI's
-//! large stack, rendering on a one-thread rayon pool with default stacks, and every
+//! large stack, rendering on a one-thread rayon pool with the CLI's render stacks, and every
 //! diagnostic is drawn by the report printer (whose formatting is under test too). The
 //! scene is written to a file in a private folder first, so `#include`, `#fopen` and
 //! images resolve next to it as they do for a real scene file. The time budget is the
@@ -16,12 +16,10 @@
 use crate::diag::{Severity, SourceMap};
 use crate::eval::{evaluate_file, EvalOptions, Evaluated};
 use crate::geometry::World;
+use crate::limits::{EVALUATION_STACK_BYTES, RENDER_STACK_BYTES};
 use crate::render::RenderOptions;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
-
-/// Stack of the evaluation thread, as the command line gives it.
-pub const EVALUATION_STACK_BYTES: usize = 1 << 30;
 
 /// How small the run is kept.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -110,12 +108,13 @@ pub fn render(bytes: &[u8], limits: &Limits) -> Outcome {
     Outcome::Rendered
 }
 
-/// The one-thread pool renders run on (default thread stacks, as the command line's).
+/// The one-thread pool renders run on (with the command line's render stacks).
 fn render_pool() -> &'static rayon::ThreadPool {
     static POOL: OnceLock<rayon::ThreadPool> = OnceLock::new();
     POOL.get_or_init(|| {
         rayon::ThreadPoolBuilder::new()
             .num_threads(1)
+            .stack_size(RENDER_STACK_BYTES)
             .build()
             .expect("a one-thread pool")
     })

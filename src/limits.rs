@@ -7,6 +7,14 @@
 
 use std::fmt;
 
+/// Stack size of the thread that evaluates scenes: macro recursion, includes and
+/// expressions as deep as the `nesting` limit allows need room.
+pub const EVALUATION_STACK_BYTES: usize = 1 << 30;
+
+/// Stack size of each render thread: building and tracing CSG nested as deep as the
+/// `nesting` limit allows (20,000) needs about 40 MiB (measured); this leaves room.
+pub const RENDER_STACK_BYTES: usize = 256 << 20;
+
 /// The limits in force for one run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Limits {
@@ -18,6 +26,10 @@ pub struct Limits {
     pub array_size: u64,
     /// Longest string, in bytes.
     pub string_size: u64,
+    /// Most bytes of scene text one text-macro call emits.
+    pub macro_text: u64,
+    /// Largest file a scene may read (scene, include, data file), in bytes.
+    pub file_size: u64,
     /// Most objects (shapes, CSG nodes and object copies) a scene may create.
     pub objects: u64,
     /// Most bytes of mesh data (triangles, vectors, indices) a scene may hold.
@@ -37,6 +49,8 @@ impl Default for Limits {
             iterations: 0,
             array_size: 0,
             string_size: 0,
+            macro_text: 0,
+            file_size: 0,
             objects: 0,
             geometry_memory: 0,
             pixels: 0,
@@ -84,6 +98,19 @@ pub const LIMITS: &[Limit] = &[
         default: 16 << 20,
         meaning: "longest string a scene may build, in bytes",
         field: |l| &mut l.string_size,
+    },
+    Limit {
+        name: "macro-text",
+        default: 64 << 20,
+        meaning: "most bytes of scene text one macro call emits when its body runs across \
+                  directives (a loop in it that never ends); about 10 bytes of memory each",
+        field: |l| &mut l.macro_text,
+    },
+    Limit {
+        name: "file-size",
+        default: 1 << 30,
+        meaning: "largest scene, include or data file a scene may read, in bytes",
+        field: |l| &mut l.file_size,
     },
     Limit {
         name: "objects",

@@ -24,12 +24,7 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-/// Stack size of the thread that evaluates scenes: deep macro recursion needs room.
-const EVALUATION_STACK_BYTES: usize = 1 << 30;
-
-/// Stack size of each render thread: building and tracing CSG nested as deep as the
-/// `nesting` limit allows (20,000) needs about 40 MiB (measured); this leaves room.
-pub const RENDER_STACK_BYTES: usize = 256 << 20;
+use durer::limits::{EVALUATION_STACK_BYTES, RENDER_STACK_BYTES};
 
 /// Exit code of a scene error.
 pub const EXIT_SCENE_ERROR: i32 = 1;

@@ -230,7 +230,7 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
     };
     // Deep CSG (up to the `nesting` limit) is built and traced recursively on these threads:
     // give them room (the memory is reserved, and used only as deep as a scene goes).
-    let mut pool = rayon::ThreadPoolBuilder::new().stack_size(super::RENDER_STACK_BYTES);
+    let mut pool = rayon::ThreadPoolBuilder::new().stack_size(durer::limits::RENDER_STACK_BYTES);
     if let Some(threads) = settings.threads {
         pool = pool.num_threads(threads.max(1));
     }

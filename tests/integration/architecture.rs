@@ -75,7 +75,9 @@ const LAYERS: &[(&str, &[&str])] = &[
     // Fuzzer entry points: one scene text through the whole pipeline.
     (
         "fuzzing",
-        &["diag", "syntax", "eval", "geometry", "render", "report"],
+        &[
+            "diag", "syntax", "eval", "geometry", "render", "report", "limits",
+        ],
     ),
 ];
 

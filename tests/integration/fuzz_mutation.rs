@@ -12,13 +12,11 @@
 //! Cases come from fixed seeds first (the same every run), then from a fresh seed per run,
 //! printed so a failure can be replayed. Environment:
 //! - `DURER_FUZZ_SECONDS`: time budget (default 75 s; the fixed seeds always run);
-//! - `DURER_FUZZ_SEED`: run this seed instead of a fresh one (as printed);
-//! - `DURER_FUZZ_UNCAPPED=1`: lift the caps below (for the limits work, see [`Caps`]).
+//! - `DURER_FUZZ_SEED`: run this seed instead of a fresh one (as printed).
 //!
-//! The caps hold back generators that hit bugs of issue 16 being fixed separately (deep
-//! CSG overflowing the stack, exponential parse time on many unclosed `/*`, `#macro` or
-//! `<`, the report printer's panic past column 65,535): nesting at most 200 deep, at most
-//! 3 unclosed constructs, lines at most 60,000 characters.
+//! The generators go past every limit of `docs/limits.md` (nesting 20,001 deep, 24
+//! unclosed `/*`, `#macro`, `<` or `"` in one case, lines of 200,000 characters): each must
+//! end in a diagnostic within the timeout.
 
 use crate::{scratch, tests_folder};
 use durer::syntax::tokens::{next_token, TokenKind};
@@ -61,8 +59,9 @@ impl Rng {
     }
 }
 
-/// How far the generators go. The CI caps keep clear of the known bugs listed in the
-/// module documentation; `uncapped` is what the limits work must survive.
+/// How far the generators go: past the nesting limit (20,000), more unclosed constructs
+/// than a backtracking parser survives, lines past the report printer's old 65,535-column
+/// panic.
 #[derive(Clone, Copy, Debug)]
 struct Caps {
     /// Deepest nesting a generator writes.
@@ -73,14 +72,8 @@ struct Caps {
     line: usize,
 }
 
-const CI_CAPS: Caps = Caps {
-    nesting: 200,
-    unclosed: 3,
-    line: 60_000,
-};
-
-const UNCAPPED: Caps = Caps {
-    nesting: 20_000,
+const CAPS: Caps = Caps {
+    nesting: 20_001,
     unclosed: 24,
     line: 200_000,
 };
@@ -597,11 +590,7 @@ fn mutated_scenes_neither_crash_nor_hang() {
                 .unwrap_or_default();
             Rng(now.as_nanos() as u64 ^ u64::from(std::process::id())).next()
         });
-    let caps = if std::env::var("DURER_FUZZ_UNCAPPED").is_ok_and(|v| v == "1") {
-        UNCAPPED
-    } else {
-        CI_CAPS
-    };
+    let caps = CAPS;
     println!(
         "fuzz_mutation: fresh seed {fresh:#018x} (replay: DURER_FUZZ_SEED={fresh:016x}), \
          budget {} s, caps {caps:?}",
@@ -679,9 +668,9 @@ fn the_mutator_is_deterministic_and_respects_the_caps() {
             let mut pieces = Pieces::of(&rng.pick(&scenes).1);
             let mut unclosed = 0;
             for _ in 0..4 {
-                mutate(&mut pieces, &mut rng, &donors, &CI_CAPS, &mut unclosed);
+                mutate(&mut pieces, &mut rng, &donors, &CAPS, &mut unclosed);
             }
-            assert!(unclosed <= CI_CAPS.unclosed);
+            assert!(unclosed <= CAPS.unclosed);
             texts.push(pieces.text());
         }
         texts
@@ -697,7 +686,7 @@ fn the_mutator_is_deterministic_and_respects_the_caps() {
             .max()
             .unwrap_or(0);
         assert!(
-            longest <= CI_CAPS.line + seed_longest.max(100) * 4,
+            longest <= CAPS.line + seed_longest.max(100) * 4,
             "a line of {longest} characters"
         );
     }

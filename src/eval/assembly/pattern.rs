@@ -712,7 +712,9 @@ impl Evaluator {
         let path = self
             .runtime
             .find_file(&name, name_span, "density file", "no such file")?;
-        let grid = std::fs::read(&path)
+        let grid = self
+            .runtime
+            .read_file_bytes(&path)
             .map_err(|error| error.to_string())
             .and_then(|bytes| DensityFile::parse(&bytes))
             .map(|mut grid| {

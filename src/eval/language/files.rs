@@ -41,7 +41,7 @@ impl Evaluator {
         };
         let resolved = self.allowed_data_path(&name, access, path.span())?;
         let file = match mode {
-            "read" => match std::fs::read(&resolved) {
+            "read" => match self.runtime.read_file_bytes(&resolved) {
                 Ok(bytes) => DataFile::Reading {
                     text: String::from_utf8_lossy(&bytes).into_owned(),
                     position: 0,

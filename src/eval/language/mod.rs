@@ -257,6 +257,24 @@ impl Runtime {
         })
     }
 
+    /// A file's bytes, refusing one larger than the `file-size` limit without reading past
+    /// it: a scene cannot make durer load a huge file.
+    pub(crate) fn read_file_bytes(&self, path: &Path) -> std::io::Result<Vec<u8>> {
+        use std::io::Read;
+        let limit = self.options.limits.file_size;
+        let mut bytes = Vec::new();
+        std::fs::File::open(path)?
+            .take(limit.saturating_add(1))
+            .read_to_end(&mut bytes)?;
+        if bytes.len() as u64 > limit {
+            return Err(std::io::Error::other(format!(
+                "it is larger than {limit} bytes; {}",
+                crate::limits::Limits::raise_hint("file-size", limit)
+            )));
+        }
+        Ok(bytes)
+    }
+
     /// Reads a file (or the embedded file standing for it) and adds it to the sources.
     pub(crate) fn read_source(
         &mut self,
@@ -271,7 +289,7 @@ impl Runtime {
         let bytes = match embedded {
             Some(bytes) => Ok(bytes),
             None => match self.policy.check(path, Access::Read) {
-                Ok(resolved) => std::fs::read(resolved),
+                Ok(resolved) => self.read_file_bytes(&resolved),
                 Err(refusal) => {
                     let mut d = self.refused(from.unwrap_or_default(), &refusal);
                     if from.is_none() {

@@ -190,12 +190,13 @@ impl Evaluator {
                 return Err(error.into());
             }
         };
-        let bytes = text::font_bytes(&path).map_err(|error| {
-            self.runtime.error(
-                font_span,
-                format!("cannot read `{}`: {error}", path.display()),
-            )
-        })?;
+        let bytes =
+            text::font_bytes(&path, |p| self.runtime.read_file_bytes(p)).map_err(|error| {
+                self.runtime.error(
+                    font_span,
+                    format!("cannot read `{}`: {error}", path.display()),
+                )
+            })?;
         let glyphs =
             text::layout_text(&bytes, &string, thickness, offset.truncate()).ok_or_else(|| {
                 self.runtime.error(

@@ -20,11 +20,14 @@ thread_local! {
 }
 
 /// The bytes of a font file, read on first use.
-pub(crate) fn font_bytes(path: &Path) -> std::io::Result<Rc<Vec<u8>>> {
+pub(crate) fn font_bytes(
+    path: &Path,
+    read: impl FnOnce(&Path) -> std::io::Result<Vec<u8>>,
+) -> std::io::Result<Rc<Vec<u8>>> {
     if let Some(bytes) = FONT_FILES.with(|files| files.borrow().get(path).cloned()) {
         return Ok(bytes);
     }
-    let bytes = Rc::new(std::fs::read(path)?);
+    let bytes = Rc::new(read(path)?);
     FONT_FILES.with(|files| {
         files
             .borrow_mut()

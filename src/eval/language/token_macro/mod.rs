@@ -464,6 +464,26 @@ impl Evaluator {
         Ok(source)
     }
 
+    /// Stops a text-macro call whose emitted text has grown past the `macro-text` limit.
+    fn check_emitted_size(&self, bytes: usize, at: Span) -> EvalResult<()> {
+        let limit = self.runtime.options().limits.macro_text;
+        if bytes as u64 <= limit {
+            return Ok(());
+        }
+        Err(self
+            .runtime
+            .error(
+                at,
+                format!("this macro call emits more than {limit} bytes of scene text"),
+            )
+            .with_label("emitted past the limit here")
+            .with_help(format!(
+                "a loop in the macro body that never ends can cause this; {}",
+                crate::limits::Limits::raise_hint("macro-text", limit)
+            ))
+            .into())
+    }
+
     /// Appends a token to the emitted text (or to a pending directive, running it once it
     /// is complete), naming snapshots for names bound to variables.
     fn emit(&mut self, run: &mut TextRun, token: Token) -> EvalResult<()> {
@@ -489,9 +509,11 @@ impl Evaluator {
         let shown = hidden.as_deref().unwrap_or(text);
         let Some(pending) = &mut run.sink.pending else {
             run.sink.emitted.push(shown, source);
-            return Ok(());
+            return self.check_emitted_size(run.sink.emitted.text.len(), source);
         };
         pending.emitted.push(shown, source);
+        let collected = pending.emitted.text.len();
+        self.check_emitted_size(collected, source)?;
         if !pending.completed_by(text) {
             return Ok(());
         }

@@ -1,3 +1,7 @@
+// Found by the mutation test; 100 unclosed parentheses: exponential backtracking, now stopped by the parse-steps limit (1.5 s)
+// command: render
+// expect: the parser gave up after
+// exit: 1
 // inside() of hypercomplex julia_fractals, as povray 3.7 answers it (each check measured):
 // for functions other than sqr, cube and reciprocal its test reads the point's y for z, so
 // the answer does not depend on z; a NaN orbit (ln 0) stays inside; 0 raised to a power is 0.

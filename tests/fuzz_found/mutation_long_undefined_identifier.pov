@@ -1,3 +1,7 @@
+// Found by the mutation test; a 51,000-character undefined name: did-you-mean compared it with every known name at length² cost (4.9 s, then 0.01 s)
+// command: render
+// expect: undefined identifier
+// exit: 1
 // Tests: the perturbed normal bends reflected and refracted rays — a mirror floor and a glass
 // sphere with gradient normals, a reflective box with a checker normal.
 #version 3.7;

@@ -1,3 +1,7 @@
+// Found by AFL++ (render target); the same endless #while in a macro body, other bytes around it
+// command: render
+// expect: emits more than 67108864 bytes of scene text
+// exit: 1
 // Macros whose directives cut across braces, parentheses and argument lists ("text
 // macros"): POV-Ray reads them as a token stream. Values checked against POV-Ray 3.7.
 #version 3.7;
