@@ -78,6 +78,9 @@ pub struct Diagnostic {
     pub help: Option<String>,
     /// Macro calls and includes that led here, innermost first.
     pub trace: Vec<TraceEntry>,
+    /// A stable machine-readable kind (`syntax`, `file-not-found`, `eval`, `warning`, ...),
+    /// for `--format json|sarif`; see docs/diagnostics.md.
+    pub code: &'static str,
 }
 
 impl Diagnostic {
@@ -91,6 +94,7 @@ impl Diagnostic {
             labels: Vec::new(),
             help: None,
             trace: Vec::new(),
+            code: "eval",
         }
     }
 
@@ -98,6 +102,7 @@ impl Diagnostic {
     pub fn warning(span: Span, message: impl Into<String>) -> Diagnostic {
         Diagnostic {
             severity: Severity::Warning,
+            code: "warning",
             ..Diagnostic::error(span, message)
         }
     }
@@ -111,6 +116,12 @@ impl Diagnostic {
     /// Adds a secondary labelled span.
     pub fn with_secondary(mut self, span: Span, label: impl Into<String>) -> Diagnostic {
         self.labels.push((span, label.into()));
+        self
+    }
+
+    /// Sets the machine-readable kind.
+    pub fn with_code(mut self, code: &'static str) -> Diagnostic {
+        self.code = code;
         self
     }
 

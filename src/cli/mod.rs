@@ -11,7 +11,9 @@
 //! 130 interrupted (Ctrl-C: the render stops, the previous image is left as it was).
 
 mod animation;
+mod diagnostic_format;
 mod expand;
+mod lsp;
 mod povray_options;
 mod render_job;
 mod stats;
@@ -60,6 +62,8 @@ enum Command {
     /// Write the evaluated scene as flat POV-Ray SDL (no macros, loops, includes or
     /// identifiers); takes render's options; `-o FLAT.pov` (default: standard output).
     Expand(RenderArgs),
+    /// Run a Language Server Protocol server on standard input and output (for editors).
+    Lsp,
 }
 
 #[derive(Args)]
@@ -79,6 +83,10 @@ struct SceneArgs {
     /// (`--define Size=2`, `--define 'Colour=<1,0,0>'`, `--define 'Name="text"'`).
     #[arg(long = "define", value_name = "NAME=EXPR")]
     defines: Vec<String>,
+    /// How diagnostics are printed: `human`, `json` (one object per line on standard
+    /// output) or `sarif` (a SARIF 2.1.0 log on standard output).
+    #[arg(long, value_enum, default_value = "human")]
+    format: diagnostic_format::Format,
     #[command(flatten)]
     safety: SafetyArgs,
 }
@@ -86,9 +94,8 @@ struct SceneArgs {
 /// Limits and the file policy (docs/limits.md).
 #[derive(Args)]
 struct SafetyArgs {
-    /// Set a limit: NAME=VALUE (repeatable; `--limit help` lists them: nesting,
-    /// iterations, array-size, string-size, objects, geometry-memory, pixels, threads,
-    /// parse-steps).
+    /// Set a limit: NAME=VALUE (repeatable; `--limit help` lists the limits and their
+    /// defaults).
     #[arg(long = "limit", value_name = "NAME=VALUE")]
     limits: Vec<String>,
     /// Let the scene read files in DIR and its subfolders (repeatable).
@@ -156,6 +163,10 @@ struct RenderArgs {
     /// Declare an identifier before the scene is read: NAME=EXPR, any SDL value.
     #[arg(long = "define", value_name = "NAME=EXPR")]
     defines: Vec<String>,
+    /// How diagnostics are printed: `human`, `json` (one object per line) or `sarif` (a
+    /// SARIF 2.1.0 log), on standard output unless the image goes there (`-o -`).
+    #[arg(long, value_enum, default_value = "human")]
+    format: diagnostic_format::Format,
     /// Output file (default: the scene's path with the format's extension); its extension
     /// chooses the format unless +F does (png, tga, bmp, ppm, jpg, exr, hdr); `-` writes
     /// the image to standard output.
@@ -271,6 +282,7 @@ const VALUE_FLAGS: &[&str] = &[
     "--allow-write",
     "--file-policy",
     "--max-pixels",
+    "--format",
 ];
 
 /// Whether `word` is a POV-Ray switch rather than one of durer's flags: it starts with `+`,
@@ -359,6 +371,7 @@ pub fn run() -> i32 {
             println!("durer {}", env!("CARGO_PKG_VERSION"));
             0
         }
+        Some("lsp") if words.len() == 1 => lsp::run(),
         Some("check") | Some("help") | Some("--help") | Some("-h") | Some("--version") | None => {
             match Cli::try_parse() {
                 Ok(Cli {
@@ -367,6 +380,9 @@ pub fn run() -> i32 {
                 Ok(Cli {
                     command: Command::Render(_) | Command::Expand(_),
                 }) => render_command(&words[1..], false),
+                Ok(Cli {
+                    command: Command::Lsp,
+                }) => lsp::run(),
                 Err(error) => {
                     let _ = error.print();
                     if error.use_stderr() {
@@ -579,16 +595,34 @@ fn evaluate(path: &Path, options: EvalOptions) -> Evaluated {
     }
 }
 
-/// Prints the diagnostics (warnings only when `warnings`); true when one is an error.
-fn print_diagnostics(evaluated: &Evaluated, warnings: bool) -> bool {
-    let mut failed = false;
-    let colour = std::io::stderr().is_terminal();
-    for diagnostic in &evaluated.diagnostics {
-        if diagnostic.severity == Severity::Error {
-            failed = true;
-        } else if !warnings {
-            continue;
+/// Prints the diagnostics (warnings only when `warnings`) in `format`, machine formats on
+/// standard output unless `to_stderr`; true when one is an error.
+fn print_diagnostics(
+    evaluated: &Evaluated,
+    warnings: bool,
+    format: diagnostic_format::Format,
+    to_stderr: bool,
+) -> bool {
+    let failed = evaluated
+        .diagnostics
+        .iter()
+        .any(|d| d.severity == Severity::Error);
+    let shown: Vec<&durer::diag::Diagnostic> = evaluated
+        .diagnostics
+        .iter()
+        .filter(|d| warnings || d.severity == Severity::Error)
+        .collect();
+    if format != diagnostic_format::Format::Human {
+        let text = diagnostic_format::machine_text(format, &shown, &evaluated.sources);
+        if to_stderr {
+            eprint!("{text}");
+        } else {
+            print!("{text}");
         }
+        return failed;
+    }
+    let colour = std::io::stderr().is_terminal();
+    for diagnostic in shown {
         let report = durer::report::to_report(diagnostic, &evaluated.sources);
         if colour {
             eprintln!("{:?}", miette::Report::new(report));
@@ -632,7 +666,7 @@ fn check(args: SceneArgs) -> i32 {
         ..EvalOptions::default()
     };
     let evaluated = evaluate(&args.scene, options);
-    let failed = print_diagnostics(&evaluated, true);
+    let failed = print_diagnostics(&evaluated, true, args.format, false);
     let Some(mut scene) = evaluated.scene.filter(|_| !failed) else {
         return EXIT_SCENE_ERROR;
     };
@@ -647,7 +681,7 @@ fn check(args: SceneArgs) -> i32 {
         eprintln!("durer: internal error while building the scene's geometry");
         return EXIT_SCENE_ERROR;
     };
-    println!(
+    let summary = format!(
         "{}: ok, {} objects ({} primitives), {} lights, {:.3} s",
         args.scene.display(),
         object_count,
@@ -655,5 +689,11 @@ fn check(args: SceneArgs) -> i32 {
         scene.lights.len(),
         start.elapsed().as_secs_f64()
     );
+    // Machine formats keep standard output for the diagnostics alone.
+    if args.format == diagnostic_format::Format::Human {
+        println!("{summary}");
+    } else {
+        eprintln!("{summary}");
+    }
     0
 }

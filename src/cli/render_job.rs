@@ -287,6 +287,7 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
             file.as_deref(),
             &pool,
             &mut summary,
+            args.format,
         );
         match outcome {
             FrameOutcome::Done(time) => {
@@ -415,6 +416,7 @@ pub(super) fn eval_options(
         search_installed_povray: true,
         file_policy: settings.file_policy.clone(),
         limits: settings.limits,
+        ..EvalOptions::default()
     }
 }
 
@@ -428,12 +430,14 @@ fn render_frame(
     file: Option<&Path>,
     pool: &rayon::ThreadPool,
     summary: &mut super::stats::Summary,
+    format: super::diagnostic_format::Format,
 ) -> FrameOutcome {
     let start = Instant::now();
     let options = eval_options(settings, frame, file);
     let evaluated = evaluate(scene_path, options);
     let warnings = settings.streams.warning && settings.warning_level > 0;
-    let failed = print_diagnostics(&evaluated, warnings);
+    let image_to_stdout = settings.output.as_deref() == Some("-");
+    let failed = print_diagnostics(&evaluated, warnings, format, image_to_stdout);
     let Some(mut scene) = evaluated.scene.filter(|_| !failed) else {
         return FrameOutcome::Failed(EXIT_SCENE_ERROR);
     };

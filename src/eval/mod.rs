@@ -13,6 +13,7 @@
 mod assembly;
 mod language;
 
+pub use language::standard_names;
 pub use language::value::{Array, Value, Vector};
 
 use crate::diag::{Diagnostic, SourceMap};
@@ -57,6 +58,11 @@ pub struct EvalOptions {
     pub file_policy: crate::file_policy::FilePolicy,
     /// Nesting, loop, array, string and object limits (see [`crate::limits`]).
     pub limits: Limits,
+    /// Text standing for the scene file (an editor's unsaved buffer); `None` reads the file.
+    pub main_text: Option<std::sync::Arc<str>>,
+    /// Stop with a `time-budget` error once this instant has passed (the language server's
+    /// budget); `None` runs to the end.
+    pub deadline: Option<std::time::Instant>,
 }
 
 impl Default for EvalOptions {
@@ -75,6 +81,8 @@ impl Default for EvalOptions {
             search_installed_povray: true,
             file_policy: crate::file_policy::FilePolicy::default(),
             limits: Limits::default(),
+            main_text: None,
+            deadline: None,
         }
     }
 }

@@ -283,7 +283,7 @@ pub fn parse_prefix(
 /// text has one (pest would report where the file ended instead).
 fn syntax_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) -> Diagnostic {
     if let Some(d) = unbalanced(text, file) {
-        return d;
+        return d.with_code("syntax");
     }
     pest_diagnostic(text, file, error)
 }
@@ -343,7 +343,7 @@ fn pest_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) ->
              POV-Ray: write `(A > B)`",
         );
     }
-    d
+    d.with_code("syntax")
 }
 
 /// The word or symbol starting at `offset`.

@@ -18,6 +18,7 @@ pub(crate) mod macros;
 pub(crate) mod reading;
 pub(crate) mod scopes;
 pub(crate) mod splines;
+pub mod standard_names;
 pub(crate) mod stream;
 pub(crate) mod token_macro;
 pub(crate) mod value;
@@ -286,9 +287,11 @@ impl Runtime {
             .ok()
             .and_then(|name| EMBEDDED_INCLUDES.iter().find(|(n, _)| Path::new(n) == name))
             .map(|(_, text)| text.as_bytes().to_vec());
-        let bytes = match embedded {
-            Some(bytes) => Ok(bytes),
-            None => match self.policy.check(path, Access::Read) {
+        let unsaved = self.options.main_text.clone().filter(|_| from.is_none());
+        let bytes = match (unsaved, embedded) {
+            (Some(text), _) => Ok(text.as_bytes().to_vec()),
+            (None, Some(bytes)) => Ok(bytes),
+            (None, None) => match self.policy.check(path, Access::Read) {
                 Ok(resolved) => self.read_file_bytes(&resolved),
                 Err(refusal) => {
                     let mut d = self.refused(from.unwrap_or_default(), &refusal);
@@ -305,7 +308,9 @@ impl Runtime {
         };
         let bytes = bytes.map_err(|e| {
             let span = from.unwrap_or_default();
-            let mut d = self.error(span, format!("cannot read `{}`: {e}", path.display()));
+            let mut d = self
+                .error(span, format!("cannot read `{}`: {e}", path.display()))
+                .with_code("file-not-found");
             if from.is_none() {
                 d.span = Span {
                     file: u32::MAX,
@@ -341,6 +346,7 @@ impl Runtime {
                 .map(|f| f.display().to_string())
                 .collect();
             self.error(span, format!("cannot find {what} `{name}`"))
+                .with_code("file-not-found")
                 .with_label(label.to_string())
                 .with_help(format!("searched: {}", searched.join(", ")))
                 .into()
@@ -456,6 +462,20 @@ impl Runtime {
         Ok(())
     }
 
+    /// Stops evaluation once the caller's deadline ([`EvalOptions::deadline`]) has passed:
+    /// checked on every loop iteration, macro call and include.
+    pub(crate) fn check_deadline(&self, span: Span) -> EvalResult<()> {
+        match self.options.deadline {
+            Some(deadline) if std::time::Instant::now() >= deadline => Err(self
+                .error(span, "evaluation stopped: it ran past its time budget")
+                .with_code("time-budget")
+                .with_label("still running here")
+                .with_help("a loop that never ends or a very long computation")
+                .into()),
+            _ => Ok(()),
+        }
+    }
+
     /// Counts `count` objects created (a shape, a CSG node, or every node of a copied
     /// tree); past the `objects` limit evaluation stops, before memory runs out.
     pub(crate) fn count_objects(&mut self, count: u64, span: Span) -> EvalResult<()> {
@@ -497,6 +517,7 @@ impl Runtime {
     }
 
     pub(crate) fn enter_nesting(&mut self, span: Span) -> EvalResult<()> {
+        self.check_deadline(span)?;
         let limit = self.options.limits.nesting;
         if self.nesting as u64 >= limit {
             return Err(self
@@ -591,6 +612,18 @@ impl Runtime {
         let mut d = self
             .error(span, format!("undefined identifier `{name}`"))
             .with_label("not declared");
+        if let Some(standard) = standard_names::standard_name(name) {
+            let what = if standard.is_macro {
+                "macro"
+            } else {
+                "identifier"
+            };
+            return d.with_help(format!(
+                "`{name}` is a {what} of the standard include file `{}`: add `#include \"{}\"` \
+                 before using it",
+                standard.file, standard.file
+            ));
+        }
         let visible = self.scopes.names();
         let keywords = crate::syntax::keywords::ALL.iter().copied();
         if let Some(similar) = did_you_mean(name, visible.chain(keywords)) {

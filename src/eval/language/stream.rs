@@ -172,6 +172,7 @@ impl Evaluator {
                 if count >= self.runtime.options().limits.iterations {
                     return Err(self.loop_limit(directive.span));
                 }
+                self.runtime.check_deadline(directive.span)?;
                 if self.eval_condition(condition)? {
                     if let Some(frame) = stream.frames.last_mut() {
                         frame.position = 0;
@@ -201,6 +202,7 @@ impl Evaluator {
                 if count >= self.runtime.options().limits.iterations {
                     return Err(self.loop_limit(directive.span));
                 }
+                self.runtime.check_deadline(directive.span)?;
                 // The variable ends one step past the last value, as in POV-Ray.
                 self.assign_local(variable, Value::Float(next));
                 if for_continues(next, end, step) {

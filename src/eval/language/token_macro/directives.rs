@@ -258,6 +258,7 @@ impl Evaluator {
                 if iterations + 1 >= self.runtime.options().limits.iterations {
                     return Err(self.loop_limit(span));
                 }
+                self.runtime.check_deadline(span)?;
                 if self.eval_condition(&condition)? {
                     run.position = body;
                     run.controls.push(Control::While {
@@ -280,6 +281,7 @@ impl Evaluator {
                 if iterations + 1 >= self.runtime.options().limits.iterations {
                     return Err(self.loop_limit(span));
                 }
+                self.runtime.check_deadline(span)?;
                 // POV-Ray reads the loop variable back, so the body may change it.
                 let current = match self.runtime.lookup(variable) {
                     Some(Value::Float(current)) => *current,
