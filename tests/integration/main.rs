@@ -8,6 +8,7 @@ mod fuzz_mutation;
 mod hostile;
 mod includes;
 mod language;
+mod lsp;
 mod povray_cli;
 mod reference_images;
 mod robustness;

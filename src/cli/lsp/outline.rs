@@ -375,7 +375,11 @@ pub fn token_at(text: &str, offset: usize) -> Option<Token> {
             return None;
         }
         if token.start <= offset && offset <= token.end {
-            // Prefer a word ending at the cursor over punctuation starting there.
+            // Punctuation ending at the cursor gives way to the word starting there.
+            let next = next_token(text, token.end).filter(|n| n.start == offset);
+            if token.kind == TokenKind::Punctuation && token.end == offset && next.is_some() {
+                return next;
+            }
             return Some(token);
         }
         position = token.end;
