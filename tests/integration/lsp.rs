@@ -64,7 +64,12 @@ impl Server {
             json!({"processId": null, "rootUri": null, "capabilities": {},
                    "initializationOptions": {"timeBudgetMs": budget_ms}}),
         );
-        assert!(init["capabilities"]["hoverProvider"].as_bool().unwrap_or(false), "{init}");
+        assert!(
+            init["capabilities"]["hoverProvider"]
+                .as_bool()
+                .unwrap_or(false),
+            "{init}"
+        );
         server.notify("initialized", json!({}));
         server
     }
@@ -155,8 +160,11 @@ fn position(line: u32, character: u32, uri: &str) -> Value {
 #[test]
 fn lsp_diagnoses_unsaved_text_and_answers_requests() {
     let dir = crate::scratch("lsp");
-    std::fs::write(dir.join("part.inc"), "#declare Part_Size = 2;\n#declare Broken = 1 + ;\n")
-        .unwrap();
+    std::fs::write(
+        dir.join("part.inc"),
+        "#declare Part_Size = 2;\n#declare Broken = 1 + ;\n",
+    )
+    .unwrap();
     let scene = dir.join("scene.pov");
     let uri = format!("file://{}", scene.display());
     let mut server = Server::start(3000);
@@ -167,9 +175,15 @@ fn lsp_diagnoses_unsaved_text_and_answers_requests() {
     );
     let first = server.diagnostics(1);
     assert_eq!(first.len(), 1, "{first:?}");
-    assert_eq!(first[0]["range"]["start"], json!({"line": 2, "character": 30}));
+    assert_eq!(
+        first[0]["range"]["start"],
+        json!({"line": 2, "character": 30})
+    );
     let message = first[0]["message"].as_str().unwrap_or("");
-    assert!(message.contains("Whte") && message.contains("White"), "{message}");
+    assert!(
+        message.contains("Whte") && message.contains("White"),
+        "{message}"
+    );
 
     // Fixed text: no diagnostics.
     let fixed = "#include \"colors.inc\"\n#declare R = 2;\n#macro Ball(Size, Colour)\n  sphere { 0, Size pigment { color Colour } }\n#end\nBall(R, White)\n";
@@ -181,7 +195,10 @@ fn lsp_diagnoses_unsaved_text_and_answers_requests() {
     // Hover: a declared identifier, a standard include's colour, a keyword.
     let hover = server.request("textDocument/hover", position(5, 5, &uri));
     let text = hover["contents"]["value"].as_str().unwrap_or("");
-    assert!(text.contains("#declare R = 2") && text.contains("line 2"), "{text}");
+    assert!(
+        text.contains("#declare R = 2") && text.contains("line 2"),
+        "{text}"
+    );
     let hover = server.request("textDocument/hover", position(5, 9, &uri));
     let text = hover["contents"]["value"].as_str().unwrap_or("");
     assert!(text.contains("colors.inc"), "{text}");
@@ -194,7 +211,10 @@ fn lsp_diagnoses_unsaved_text_and_answers_requests() {
     assert_eq!(found["uri"], json!(uri));
     assert_eq!(found["range"]["start"]["line"], json!(1));
     let found = server.request("textDocument/definition", position(5, 10, &uri));
-    assert!(found["uri"].as_str().unwrap_or("").ends_with("colors.inc"), "{found}");
+    assert!(
+        found["uri"].as_str().unwrap_or("").ends_with("colors.inc"),
+        "{found}"
+    );
 
     // Completion inside the macro: its parameters, declared names, colours, keywords.
     let items = server.request("textDocument/completion", position(3, 20, &uri));
@@ -213,12 +233,18 @@ fn lsp_diagnoses_unsaved_text_and_answers_requests() {
         .as_array()
         .map(|a| a.iter().filter_map(|i| i["label"].as_str()).collect())
         .unwrap_or_default();
-    assert!(labels.contains(&"declare") && !labels.contains(&"sphere"), "{labels:?}");
+    assert!(
+        labels.contains(&"declare") && !labels.contains(&"sphere"),
+        "{labels:?}"
+    );
 
     // Document symbols.
     server.change(&uri, 4, fixed);
     let _ = server.diagnostics(4);
-    let symbols = server.request("textDocument/documentSymbol", json!({"textDocument": {"uri": uri}}));
+    let symbols = server.request(
+        "textDocument/documentSymbol",
+        json!({"textDocument": {"uri": uri}}),
+    );
     let names: Vec<&str> = symbols
         .as_array()
         .map(|a| a.iter().filter_map(|s| s["name"].as_str()).collect())
@@ -240,9 +266,15 @@ fn lsp_cuts_off_a_looping_scene_and_keeps_answering() {
     let uri = "file:///tmp/durer-lsp-loop/loop.pov";
     let mut server = Server::start(500);
     let start = Instant::now();
-    server.open(uri, "#declare I = 0;\n#while (1)\n  #declare I = I + 1;\n#end\n");
+    server.open(
+        uri,
+        "#declare I = 0;\n#while (1)\n  #declare I = I + 1;\n#end\n",
+    );
     // Requests are answered while the scene runs.
-    let symbols = server.request("textDocument/documentSymbol", json!({"textDocument": {"uri": uri}}));
+    let symbols = server.request(
+        "textDocument/documentSymbol",
+        json!({"textDocument": {"uri": uri}}),
+    );
     assert_eq!(symbols.as_array().map(Vec::len), Some(2), "{symbols}");
     let diagnostics = server.diagnostics(1);
     let elapsed = start.elapsed();
@@ -299,7 +331,11 @@ fn validate(schema: &std::path::Path, document: &str) -> Result<(), String> {
 fn json_and_sarif_follow_their_schemas() {
     let dir = crate::scratch("formats");
     let scene = dir.join("broken.pov");
-    std::fs::write(&scene, "#declare R = 2;\nsphere { 0, R pigment { color Whte } }\n").unwrap();
+    std::fs::write(
+        &scene,
+        "#declare R = 2;\nsphere { 0, R pigment { color Whte } }\n",
+    )
+    .unwrap();
     let (code, json_text) = durer_check(&scene, "json");
     assert_eq!(code, Some(1));
     let line: Value = serde_json::from_str(json_text.trim()).expect("one JSON line");
@@ -310,7 +346,10 @@ fn json_and_sarif_follow_their_schemas() {
     let (code, sarif_text) = durer_check(&scene, "sarif");
     assert_eq!(code, Some(1));
     let sarif: Value = serde_json::from_str(&sarif_text).expect("SARIF is JSON");
-    assert_eq!(sarif["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["region"]["startLine"], json!(2));
+    assert_eq!(
+        sarif["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["region"]["startLine"],
+        json!(2)
+    );
     let schemas = crate::tests_folder().join("schemas");
     let docs_schema = crate::tests_folder()
         .join("..")
@@ -318,11 +357,49 @@ fn json_and_sarif_follow_their_schemas() {
         .join("diagnostics.schema.json");
     for (schema, text) in [
         (docs_schema, json_text),
-        (schemas.join("sarif-schema-2.1.0.json"), sarif_text.replace('\n', " ")),
+        (
+            schemas.join("sarif-schema-2.1.0.json"),
+            sarif_text.replace('\n', " "),
+        ),
     ] {
         if let Err(why) = validate(&schema, &text) {
             println!("{why}");
             return;
         }
     }
+}
+
+#[test]
+fn neovim_shows_the_diagnostic_line() {
+    let dir = crate::scratch("neovim");
+    let scene = dir.join("broken.pov");
+    std::fs::write(
+        &scene,
+        "sphere { 0, 1\n  pigment { color rgb <1, 0, 0> }\n  finsh { phong 1 }\n}\n",
+    )
+    .unwrap();
+    let init = crate::tests_folder()
+        .join("integration")
+        .join("lsp_neovim_init.lua");
+    let output = Command::new("nvim")
+        .args(["--headless", "--clean", "-u"])
+        .arg(&init)
+        .arg(&scene)
+        .current_dir(&dir)
+        .env("DURER", env!("CARGO_BIN_EXE_durer"))
+        .stdin(Stdio::null())
+        .output();
+    let output = match output {
+        Ok(output) => output,
+        Err(e) => {
+            println!("skipped: neovim is not installed ({e}); apt-get install -y neovim");
+            return;
+        }
+    };
+    let printed = String::from_utf8_lossy(&output.stdout);
+    println!("neovim: {printed}");
+    assert!(
+        printed.contains("diagnostic line 3: unknown block keyword `finsh`"),
+        "{printed}"
+    );
 }
