@@ -363,6 +363,18 @@ fn describe_expected(rules: &[Rule]) -> String {
     let mut names: Vec<&str> = rules.iter().map(|r| rule_name(*r)).collect();
     names.sort();
     names.dedup();
+    // Say what fits, not every grammar rule that could have gone on: the catch-all goes
+    // when something more precise is there, and an expression covers its kinds of value.
+    if names.len() > 1 {
+        names.retain(|n| *n != "a directive, block or value");
+    }
+    if names.contains(&"an expression") {
+        names.retain(|n| !["a number", "a vector", "an identifier", "a string"].contains(n));
+    }
+    if names.len() > 3 {
+        names.truncate(2);
+        names.push("something else");
+    }
     match names.len() {
         0 => "something else".to_string(),
         1 => names[0].to_string(),

@@ -619,7 +619,7 @@ impl Runtime {
                 "identifier"
             };
             return d.with_help(format!(
-                "`{name}` is a {what} of the standard include file `{}`: add `#include \"{}\"` \
+                "`{name}` is {what} of the standard include file `{}`: add `#include \"{}\"` \
                  before using it",
                 standard.file, standard.file
             ));
