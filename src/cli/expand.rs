@@ -15,7 +15,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Runs `durer expand` with the settings `render` would use.
-pub(super) fn run(settings: Settings) -> i32 {
+pub(super) fn run(settings: Settings, format: super::diagnostic_format::Format) -> i32 {
     let Some(scene_path) = settings.input.clone() else {
         eprintln!("durer: no scene given: name a .pov file (durer expand --help)");
         return EXIT_USAGE;
@@ -52,7 +52,8 @@ pub(super) fn run(settings: Settings) -> i32 {
         let options = eval_options(&settings, frame, file.as_deref());
         let evaluated = evaluate(&scene_path, options);
         let warnings = settings.streams.warning && settings.warning_level > 0;
-        let failed = print_diagnostics(&evaluated, warnings);
+        // Machine-format diagnostics go to standard error when the flat scene takes the output.
+        let failed = print_diagnostics(&evaluated, warnings, format, output.is_none());
         let Some(scene) = evaluated.scene.filter(|_| !failed) else {
             return EXIT_SCENE_ERROR;
         };

@@ -362,8 +362,8 @@ pub fn run() -> i32 {
         .collect();
     match words.first().map(String::as_str) {
         Some("render") => render_command(&words[1..], false),
-        Some("expand") => match parse_render_words(&words[1..], false) {
-            Ok(settings) => expand::run(settings),
+        Some("expand") => match parse_render_args(&words[1..], false) {
+            Ok((settings, args)) => expand::run(settings, args.format),
             Err(code) => code,
         },
         // `-V` alone is the version (POV-Ray's `-V`, verbose off, needs a scene with it).
@@ -403,11 +403,6 @@ fn render_command(words: &[String], povray_mode: bool) -> i32 {
         Ok((settings, args)) => render_job::run(settings, &args, povray_mode),
         Err(code) => code,
     }
-}
-
-/// The settings `render`'s words give (`Err`: the exit code after a usage message).
-fn parse_render_words(words: &[String], povray_mode: bool) -> Result<Settings, i32> {
-    parse_render_args(words, povray_mode).map(|(settings, _)| settings)
 }
 
 /// `render`'s words read into settings and the parsed flags.

@@ -560,7 +560,7 @@ fn hover(
         };
         format!(
             "{kind} of the standard include file `{}` (not included: add `#include \"{}\"`)",
-            standard.file, standard.file
+            standard.file, standard.include
         )
     } else if let Some(meaning) = keyword_help::meaning(&word) {
         format!("`{word}`: {meaning}")

@@ -237,6 +237,9 @@ pub fn outline(text: &str) -> Outline {
                             name_range: (name.start, name.end),
                             range: (token.start, tokens[end].end),
                         });
+                        // What a macro body makes is not part of the file's outline.
+                        index = end + 1;
+                        continue;
                     }
                     ("include", _) => {
                         if let Some(string) = tokens

@@ -621,7 +621,7 @@ impl Runtime {
             return d.with_help(format!(
                 "`{name}` is {what} of the standard include file `{}`: add `#include \"{}\"` \
                  before using it",
-                standard.file, standard.file
+                standard.file, standard.include
             ));
         }
         let visible = self.scopes.names();

@@ -22,6 +22,35 @@ pub struct StandardName {
     pub end: usize,
     /// Declared by `#macro` rather than `#declare`.
     pub is_macro: bool,
+    /// The file a scene includes to get the name: `file`, or for an `X_old.inc` the
+    /// standard file that includes it (`Cone_Y` is declared in `shapes_old.inc`, which
+    /// `shapes.inc` includes).
+    pub include: &'static str,
+}
+
+/// The file a scene includes for the names of `file`: `file` itself, except for an
+/// `X_old.inc` (POV-Ray moved old declarations there), whose includer (`shapes.inc`,
+/// `glass.inc`) is the file to include. Aggregates like `stdinc.inc` are never suggested.
+fn include_for(file: &'static str) -> &'static str {
+    if !file.ends_with("_old.inc") {
+        return file;
+    }
+    for (includer, text) in EMBEDDED_INCLUDES {
+        let mut position = 0;
+        let mut after_include = false;
+        while let Some(token) = next_token(text, position) {
+            position = token.end;
+            if token.kind == TokenKind::Directive {
+                after_include = token.directive_word(text) == "include";
+                continue;
+            }
+            if after_include && token.text(text).trim_matches('"') == file {
+                return includer;
+            }
+            after_include = false;
+        }
+    }
+    file
 }
 
 fn index() -> &'static HashMap<&'static str, StandardName> {
@@ -29,6 +58,7 @@ fn index() -> &'static HashMap<&'static str, StandardName> {
     INDEX.get_or_init(|| {
         let mut names = HashMap::new();
         for (file, text) in EMBEDDED_INCLUDES {
+            let include = include_for(file);
             let mut position = 0;
             let mut pending: Option<bool> = None;
             while let Some(token) = next_token(text, position) {
@@ -48,6 +78,7 @@ fn index() -> &'static HashMap<&'static str, StandardName> {
                                 start: token.start,
                                 end: token.end,
                                 is_macro,
+                                include,
                             });
                         }
                     }
@@ -94,7 +125,10 @@ mod tests {
             Some("stones1.inc")
         );
         let cone = standard_name("Cone_Y");
-        assert!(cone.is_some_and(|n| n.file == "shapes.inc"), "{cone:?}");
+        assert!(
+            cone.is_some_and(|n| n.file == "shapes_old.inc" && n.include == "shapes.inc"),
+            "{cone:?}"
+        );
         assert!(standard_name("no_such_name_anywhere").is_none());
     }
 }
