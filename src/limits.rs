@@ -83,13 +83,14 @@ pub const LIMITS: &[Limit] = &[
     },
     Limit {
         name: "iterations",
-        default: 100_000_000,
-        meaning: "most iterations of one #while or #for loop",
+        default: 10_000_000,
+        meaning: "most iterations of one #while or #for loop (a loop that leaves a value each \
+                  time holds them all: 10 million take about 0.5 GB)",
         field: |l| &mut l.iterations,
     },
     Limit {
         name: "array-size",
-        default: 100_000_000,
+        default: 16 << 20,
         meaning: "most elements of one array",
         field: |l| &mut l.array_size,
     },

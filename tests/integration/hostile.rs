@@ -155,6 +155,26 @@ fn endless_mesh_loops_stop_at_the_geometry_memory_limit() {
 }
 
 #[test]
+fn endless_loops_leaving_values_stop_at_the_iterations_limit_in_bounded_memory() {
+    // Each pass leaves a value that is kept (an array element, a map entry): the default
+    // iterations limit must stop them before memory runs out.
+    for (name, scene) in [
+        (
+            "array-loop",
+            "#declare A = array { #for (I, 0, 1e400) 5, #end }\n",
+        ),
+        (
+            "map-loop",
+            "#declare C = color_map { #for (I, 0, 1e400) [0.5 rgb 1] #end }\n",
+        ),
+    ] {
+        let (output, took) = check(name, scene, &[]);
+        assert_scene_error(&output, &["loop ran 10000000 times", "--limit iterations="]);
+        assert!(took < Duration::from_secs(60), "{name} took {took:?}");
+    }
+}
+
+#[test]
 fn growing_string_stops_at_the_string_size_limit() {
     let scene = "#declare S = \"x\";\n#while (1)\n#declare S = concat(S, S);\n#end\n";
     let (output, _) = check("string-growth", scene, &[]);

@@ -158,8 +158,10 @@ impl Evaluator {
         Ok(())
     }
 
-    /// Runs a directive to its end in the current scope and returns the values it leaves,
-    /// with their spans (commas between them are skipped).
+    /// Runs a directive in the current scope and returns the values it leaves, with their
+    /// spans (commas between them are skipped): to its end, or up to the second value,
+    /// which is already an error for both callers (a loop emitting values without end
+    /// would otherwise fill memory).
     fn directive_values(&mut self, directive: &Rc<Directive>) -> EvalResult<Vec<(Value, Span)>> {
         let items: Rc<[Item]> = Rc::from(vec![Item::Directive(directive.clone())]);
         let mut stream = Stream::new(items);
@@ -170,6 +172,9 @@ impl Evaluator {
             }
             let span = item.span();
             values.push((self.item_value(&item)?, span));
+            if values.len() == 2 {
+                break;
+            }
         }
         Ok(values)
     }
