@@ -1,0 +1,12 @@
+// error: 10:2 expected a directive, block or value, found `elseif`
+// error-text: did you mean `else`?
+// POV-Ray: Parse Error: Mis-matched '#elseif'.
+// Mistake: `#elseif` after `#else`
+#declare A = 1;
+#if (A = 0)
+  sphere { 0, 1 }
+#else
+  box { 0, 1 }
+#elseif (A = 1)
+  torus { 1, 0.2 }
+#end

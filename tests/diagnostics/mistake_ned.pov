@@ -1,0 +1,7 @@
+// error: 5:1 unterminated `#if`
+// error-text: add `#end` where the directive's body ends
+// POV-Ray: Parse Error: Expected 'object or directive', undeclared identifier 'ned' found instead
+// Mistake: `#end` misspelt `#ned`
+#if (1)
+  sphere { 0, 1 }
+#ned
