@@ -53,12 +53,7 @@ impl Evaluator {
                     }
                 }
             }
-            _ => {
-                return Err(self
-                    .runtime
-                    .error(self.stream_end_span(), "expected the light's position")
-                    .into())
-            }
+            _ => return Err(self.block_ended_early(stream, "expected the light's position")),
         };
         let mut spot = light.spotlight.unwrap_or(Spotlight {
             point_at: light.parallel.unwrap_or(DVec3::Z),

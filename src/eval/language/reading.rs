@@ -44,13 +44,7 @@ impl Evaluator {
                 )
                 .with_label(format!("expected {what}"))
                 .into()),
-            None => Err(self
-                .runtime
-                .error(
-                    self.stream_end_span(),
-                    format!("expected {what}, found the end of the block"),
-                )
-                .into()),
+            None => Err(self.block_ended_early(stream, &format!("expected {what}"))),
         }
     }
 
@@ -86,12 +80,32 @@ impl Evaluator {
         }
     }
 
-    pub(crate) fn stream_end_span(&self) -> crate::diag::Span {
-        self.runtime
-            .trace
-            .last()
-            .map(|t| t.span)
-            .unwrap_or_default()
+    /// "expected X, found the end of the block", pointing at the block's last item (or,
+    /// in a block with nothing read, at the innermost macro call or include).
+    pub(crate) fn block_ended_early(
+        &self,
+        stream: &Stream,
+        expected: &str,
+    ) -> Box<crate::diag::Diagnostic> {
+        let message = format!("{expected}, found the end of the block");
+        match stream.last_read() {
+            Some(last) => self
+                .runtime
+                .error(last, message)
+                .with_label(format!("{expected} after this"))
+                .into(),
+            None => self
+                .runtime
+                .error(
+                    self.runtime
+                        .trace
+                        .last()
+                        .map(|t| t.span)
+                        .unwrap_or_default(),
+                    message,
+                )
+                .into(),
+        }
     }
 
     /// Errors if anything but commas is left in the block.

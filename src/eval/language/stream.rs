@@ -12,6 +12,9 @@ use std::rc::Rc;
 pub(crate) struct Stream {
     frames: Vec<Frame>,
     pushed_back: Option<Item>,
+    /// The span of the last item read: where a block that ends too early is reported
+    /// ("expected the radius, found the end of the block" points after it).
+    last_read: Option<crate::diag::Span>,
 }
 
 struct Frame {
@@ -57,6 +60,7 @@ impl Stream {
                 kind: FrameKind::Plain,
             }],
             pushed_back: None,
+            last_read: None,
         }
     }
 
@@ -87,7 +91,13 @@ impl Stream {
         Stream {
             frames: Vec::new(),
             pushed_back: None,
+            last_read: None,
         }
+    }
+
+    /// The span of the last item read, if any.
+    pub(crate) fn last_read(&self) -> Option<crate::diag::Span> {
+        self.last_read
     }
 
     /// Whether every frame has been read.
@@ -119,7 +129,10 @@ impl Evaluator {
                 {
                     self.enter_macro(call, stream)?
                 }
-                other => return Ok(Some(other)),
+                other => {
+                    stream.last_read = Some(other.span());
+                    return Ok(Some(other));
+                }
             }
         }
     }

@@ -1,5 +1,5 @@
-// error: 1:1 expected a vector, found the end of the block
-// (durer prints no help line)
+// error: 5:30 expected a vector, found the end of the block
+// error-text: after this
 // POV-Ray: Parse Error: Expected 'numeric expression', } found instead
 // Mistake: `look_at` without its point
 camera { location <0, 1, -5> look_at }
