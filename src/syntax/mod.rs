@@ -98,13 +98,47 @@ fn guarded_parse(
 pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
     let bytes = text.as_bytes();
     let mut openers: Vec<(usize, usize)> = Vec::new();
+    // The start of the last string that ran over a line break.
+    let mut multiline_string: Option<usize> = None;
     let mut i = 0;
     while i < bytes.len() {
         match bytes[i] {
             b'"' => {
+                let opened = i;
                 i += 1;
                 while i < bytes.len() && bytes[i] != b'"' {
                     i += if bytes[i] == b'\\' { 2 } else { 1 };
+                }
+                if i >= bytes.len() {
+                    // A quote left open earlier is closed by the next string's opening
+                    // quote: that string then runs over lines, and its start is the mistake.
+                    if let Some(earlier) = multiline_string {
+                        return Some(
+                            Diagnostic::error(
+                                Span::new(file, earlier, earlier + 1),
+                                "this string runs over several lines: is its closing `\"` missing?",
+                            )
+                            .with_label("the string starting here ends only at a later quote")
+                            .with_help("then the last `\"` of the file opens a string that is never closed; add the missing `\"` where this string ends"),
+                        );
+                    }
+                    let lines = text[opened..].lines().count();
+                    let runs = if lines > 1 {
+                        format!("this string runs over {lines} lines to the end of the file")
+                    } else {
+                        "this string runs to the end of the file".to_string()
+                    };
+                    return Some(
+                        Diagnostic::error(
+                            Span::new(file, opened, opened + 1),
+                            "unterminated string",
+                        )
+                        .with_label(runs)
+                        .with_help("add the closing `\"` where the string ends"),
+                    );
+                }
+                if text[opened..i].contains('\n') {
+                    multiline_string = Some(opened);
                 }
                 i += 1;
             }

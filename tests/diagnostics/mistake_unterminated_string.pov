@@ -1,5 +1,5 @@
-// error: 5:14 expected a block or an expression, found `"`
-// (durer prints no help line)
+// error: 5:14 unterminated string
+// error-text: this string runs over 2 lines to the end of the file
 // POV-Ray: Parse Error: No end quote for string.
 // Mistake: string without its closing quote
 #declare S = "hello;

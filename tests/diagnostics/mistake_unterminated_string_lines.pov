@@ -1,5 +1,5 @@
-// error: 6:20 expected `,`, a block or something else, found `\`
-// (durer prints no help line)
+// error: 5:8 this string runs over several lines: is its closing `"` missing?
+// error-text: add the missing `"` where this string ends
 // POV-Ray: Parse Error: Expected 'object or directive', undeclared identifier 'second' found instead
 // Mistake: a `#debug` string whose quote is never closed, over several lines
 #debug "first line\n
