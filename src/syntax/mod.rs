@@ -149,22 +149,9 @@ pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
             }
             b'/' if bytes.get(i + 1) == Some(&b'*') => {
                 let opened = i;
-                let mut depth = 0usize;
-                while i < bytes.len() {
-                    if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'*') {
-                        depth += 1;
-                        i += 2;
-                    } else if bytes[i] == b'*' && bytes.get(i + 1) == Some(&b'/') {
-                        depth -= 1;
-                        i += 2;
-                        if depth == 0 {
-                            break;
-                        }
-                    } else {
-                        i += 1;
-                    }
-                }
-                if depth > 0 {
+                let closed;
+                (i, closed) = skip_block_comment(bytes, i);
+                if !closed {
                     return Some(
                         Diagnostic::error(Span::new(file, opened, opened + 2), "no `*/` closes this comment")
                             .with_label("this comment runs to the end of the file")
@@ -204,6 +191,28 @@ pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
         .with_label(format!("this `#{word}` has no matching `#end`"))
         .with_help("add `#end` where the directive's body ends"),
     )
+}
+
+/// Skips the (nesting) `/* */` comment opening at `start`: the offset after it and whether
+/// it was closed before the end of the text.
+fn skip_block_comment(bytes: &[u8], start: usize) -> (usize, bool) {
+    let mut depth = 0usize;
+    let mut i = start;
+    while i < bytes.len() {
+        if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'*') {
+            depth += 1;
+            i += 2;
+        } else if bytes[i] == b'*' && bytes.get(i + 1) == Some(&b'/') {
+            depth -= 1;
+            i += 2;
+            if depth == 0 {
+                return (i, true);
+            }
+        } else {
+            i += 1;
+        }
+    }
+    (i, false)
 }
 
 /// Whether braces opened under a conditional or loop directive close under another branch
@@ -463,21 +472,7 @@ fn unbalanced(text: &str, file: FileId) -> Option<Diagnostic> {
                 }
             }
             b'/' if bytes.get(i + 1) == Some(&b'*') => {
-                let mut depth = 0;
-                while i < bytes.len() {
-                    if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'*') {
-                        depth += 1;
-                        i += 2;
-                    } else if bytes[i] == b'*' && bytes.get(i + 1) == Some(&b'/') {
-                        depth -= 1;
-                        i += 2;
-                        if depth == 0 {
-                            break;
-                        }
-                    } else {
-                        i += 1;
-                    }
-                }
+                i = skip_block_comment(bytes, i).0;
                 continue;
             }
             b'{' => stack.push((b'{', i, i + 1)),
