@@ -13,6 +13,7 @@
 mod animation;
 mod diagnostic_format;
 mod expand;
+mod farm;
 mod lsp;
 mod povray_options;
 mod render_job;
@@ -191,6 +192,11 @@ struct RenderArgs {
     /// The value of `clock` for a single frame (POV-Ray's +K).
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     clock: Option<f64>,
+    /// Render only tile I of an even split into N tiles (0 <= I < N), written as a `.tile`
+    /// file for `durer merge`; `auto/N` takes I from SLURM_ARRAY_TASK_ID,
+    /// JOB_COMPLETION_INDEX or PARALLEL_SEQ (minus 1), first found wins (docs/farm.md).
+    #[arg(long, value_name = "I/N", value_parser = farm::parse_tile)]
+    tile: Option<farm::TileSpec>,
     /// Print render statistics at the end: `text` (as POV-Ray's +GS) or `json` (on
     /// standard output, for scripts).
     #[arg(long, value_name = "text|json", num_args = 0..=1, default_missing_value = "text",
@@ -272,6 +278,7 @@ const VALUE_FLAGS: &[&str] = &[
     "--threads",
     "--define",
     "--frames",
+    "--tile",
     "--frame",
     "--clock",
     "--aa-method",
@@ -366,6 +373,7 @@ pub fn run() -> i32 {
             Ok((settings, args)) => expand::run(settings, args.format),
             Err(code) => code,
         },
+        Some("merge") => farm::merge_command(&words[1..]),
         // `-V` alone is the version (POV-Ray's `-V`, verbose off, needs a scene with it).
         Some("-V") if words.len() == 1 => {
             println!("durer {}", env!("CARGO_PKG_VERSION"));

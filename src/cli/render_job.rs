@@ -256,7 +256,7 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
             0.0
         },
     });
-    let render_options = RenderOptions {
+    let mut render_options = RenderOptions {
         width: settings.width,
         height: settings.height,
         antialias,
@@ -264,11 +264,44 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
         alpha: settings.alpha,
         quality: durer::render::quality::Quality(settings.quality),
     };
+    let tile = match args.tile {
+        None => None,
+        Some(_) if region.is_some() => {
+            eprintln!("durer: --tile cannot be combined with a render region (+SR/+ER/+SC/+EC)");
+            return EXIT_USAGE;
+        }
+        Some(spec) => match super::farm::TileJob::new(
+            spec,
+            &render_options,
+            &plan.options,
+            &tile_identity(&settings, &scene_path, &render_options, &plan.options),
+            |name| std::env::var(name).ok(),
+        ) {
+            Ok(job) => {
+                render_options.region = Some(job.region);
+                Some(job)
+            }
+            Err(message) => {
+                eprintln!("durer: {message}");
+                return EXIT_USAGE;
+            }
+        },
+    };
     let mut summary = super::stats::Summary::default();
     let start = Instant::now();
     let frame_count = animation.frames.len();
     for (index, frame) in animation.frames.iter().enumerate() {
+        let frame_tile = tile.as_ref().map(|t| t.for_frame(frame));
         let file = match &plan.destination {
+            Destination::Files { base } if tile.is_some() => {
+                Some(PathBuf::from(super::farm::tile_file_name(
+                    base,
+                    settings.output.is_none(),
+                    animation.animated.then_some(frame.frame_number),
+                    animation.digits,
+                    tile.as_ref().map_or((0, 1), |t| (t.index, t.count)),
+                )))
+            }
             Destination::Files { base } => Some(PathBuf::from(frame_file_name(
                 base,
                 animation.animated.then_some(frame.frame_number),
@@ -288,6 +321,7 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
             &pool,
             &mut summary,
             args.format,
+            frame_tile.as_ref(),
         );
         match outcome {
             FrameOutcome::Done(time) => {
@@ -381,6 +415,30 @@ fn trimmed(value: f64) -> String {
     }
 }
 
+/// What makes two renders the same render, for the fingerprint tiles carry: the scene
+/// file's bytes and path, the size, anti-aliasing, alpha and quality, the output options,
+/// declared constants, include header and language version. (Files the scene includes
+/// are not hashed, nor where they are found: keep them the same on every worker.)
+fn tile_identity(
+    settings: &Settings,
+    scene_path: &Path,
+    render_options: &RenderOptions,
+    output_options: &OutputOptions,
+) -> Vec<u8> {
+    let mut identity = std::fs::read(scene_path).unwrap_or_default();
+    identity.extend_from_slice(
+        format!(
+            "|{:?}|{render_options:?}|{output_options:?}|{:?}|{:?}|{:?}",
+            scene_path.file_name(),
+            settings.declares,
+            settings.include_header,
+            settings.version
+        )
+        .as_bytes(),
+    );
+    identity
+}
+
 enum FrameOutcome {
     Done(Duration),
     Failed(i32),
@@ -431,6 +489,7 @@ fn render_frame(
     pool: &rayon::ThreadPool,
     summary: &mut super::stats::Summary,
     format: super::diagnostic_format::Format,
+    tile: Option<&super::farm::TileJob>,
 ) -> FrameOutcome {
     let start = Instant::now();
     let options = eval_options(settings, frame, file);
@@ -488,7 +547,11 @@ fn render_frame(
     }
     let write_start = Instant::now();
     if plan.destination != Destination::Nowhere {
-        let bytes = match output::encode(&image, &plan.options) {
+        let encoded = match tile {
+            Some(tile) => tile.encode(&image, &plan.options),
+            None => output::encode(&image, &plan.options),
+        };
+        let bytes = match encoded {
             Ok(bytes) => bytes,
             Err(error) => {
                 eprintln!("durer: cannot encode the image: {error}");

@@ -165,8 +165,9 @@ pub fn render(
 ///
 /// A region's pixels are those of the whole render. Anti-aliasing method 1 decides in scan
 /// order from the top left and radiosity stores samples in row order, so with either the
-/// rows above the region are traced too (at the cost of those rows); otherwise only the
-/// region is traced.
+/// rows above the region are traced too (at the cost of those rows; with method 1 also the
+/// row below, whose scan can supersample the region's last row); otherwise only the region
+/// is traced.
 pub fn render_image(
     scene: &Scene,
     world: &World,
@@ -246,15 +247,21 @@ pub fn render_image(
         .antialias
         .filter(|_| blur.is_none() && mesh.is_none());
     // The window of pixels traced: the region, or everything above it too when decisions
-    // depend on earlier rows.
-    let scan_from_top = tracer.radiosity().is_some()
-        || antialias.is_some_and(|aa| aa.method == Method::NonRecursive);
+    // depend on earlier rows. Method 1's scan of a pixel also supersamples its left and
+    // upper neighbours, so a region's last row depends on the row below it: that row is
+    // scanned too.
+    let method_1 = antialias.is_some_and(|aa| aa.method == Method::NonRecursive);
+    let scan_from_top = tracer.radiosity().is_some() || method_1;
     let window = if scan_from_top {
         Region {
             left: 0,
             top: 0,
             right: width,
-            bottom: region.bottom,
+            bottom: if method_1 {
+                (region.bottom + 1).min(height)
+            } else {
+                region.bottom
+            },
         }
     } else {
         region

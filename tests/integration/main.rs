@@ -4,6 +4,7 @@ mod architecture;
 mod cli;
 mod diagnostics;
 mod expand;
+mod farm;
 mod fuzz_mutation;
 mod hostile;
 mod includes;
