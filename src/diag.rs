@@ -156,6 +156,11 @@ impl SourceMap {
         SourceMap::default()
     }
 
+    /// The paths of the files, in the order added.
+    pub fn paths(&self) -> impl Iterator<Item = &Path> {
+        self.files.iter().map(|f| f.path.as_path())
+    }
+
     /// Adds a file and returns its id.
     pub fn add(&mut self, path: &Path, text: Arc<str>) -> FileId {
         self.files.push(SourceFile {

@@ -18,6 +18,7 @@ mod lsp;
 mod povray_options;
 mod render_job;
 mod stats;
+mod watch;
 
 use clap::{Args, Parser, Subcommand};
 use durer::diag::Severity;
@@ -63,6 +64,10 @@ enum Command {
     /// Write the evaluated scene as flat POV-Ray SDL (no macros, loops, includes or
     /// identifiers); takes render's options; `-o FLAT.pov` (default: standard output).
     Expand(RenderArgs),
+    /// Render, then render again whenever the scene or a file it read changes (a quick
+    /// preview first, then the full image); takes render's options, and `--serve [ADDR]`
+    /// for a live preview page (default 127.0.0.1:8181).
+    Watch(RenderArgs),
     /// Run a Language Server Protocol server on standard input and output (for editors).
     Lsp,
 }
@@ -374,6 +379,14 @@ pub fn run() -> i32 {
             Err(code) => code,
         },
         Some("merge") => farm::merge_command(&words[1..]),
+        Some("watch") => {
+            let mut words = words[1..].to_vec();
+            let serve = watch::take_serve_option(&mut words);
+            match parse_render_args(&words, false) {
+                Ok((settings, _)) => watch::run(settings, serve),
+                Err(code) => code,
+            }
+        }
         // `-V` alone is the version (POV-Ray's `-V`, verbose off, needs a scene with it).
         Some("-V") if words.len() == 1 => {
             println!("durer {}", env!("CARGO_PKG_VERSION"));
@@ -386,7 +399,7 @@ pub fn run() -> i32 {
                     command: Command::Check(args),
                 }) => check(args),
                 Ok(Cli {
-                    command: Command::Render(_) | Command::Expand(_),
+                    command: Command::Render(_) | Command::Expand(_) | Command::Watch(_),
                 }) => render_command(&words[1..], false),
                 Ok(Cli {
                     command: Command::Lsp,

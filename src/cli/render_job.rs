@@ -20,7 +20,7 @@ use std::time::{Duration, Instant};
 
 /// Where images go.
 #[derive(Clone, Debug, PartialEq)]
-enum Destination {
+pub(super) enum Destination {
     /// Files named from this base (the name without the format's extension).
     Files { base: String },
     /// One path taken as it is: a device, a FIFO or a symbolic link (written through).
@@ -33,16 +33,20 @@ enum Destination {
 
 /// The output format and where frames go.
 #[derive(Clone, Debug, PartialEq)]
-struct OutputPlan {
-    destination: Destination,
-    options: OutputOptions,
+pub(super) struct OutputPlan {
+    pub(super) destination: Destination,
+    pub(super) options: OutputOptions,
 }
 
 /// The format and the base name, by POV-Ray's rules: with a type given (`+F`), a name
 /// ending in that type's extension loses it and any other name keeps its extension (the
 /// type's is appended: `+FT +Oout.png` writes `out.png.tga`, as `povray` does); without
 /// one, durer takes the format from the name's extension (PNG when it names none).
-fn output_plan(settings: &Settings, scene: &Path, povray_mode: bool) -> Result<OutputPlan, String> {
+pub(super) fn output_plan(
+    settings: &Settings,
+    scene: &Path,
+    povray_mode: bool,
+) -> Result<OutputPlan, String> {
     let stem = scene
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
@@ -139,7 +143,7 @@ fn region_bounds(start: Option<f64>, end: Option<f64>, size: u32) -> (u32, u32) 
 }
 
 /// The region the settings ask for, `None` for the whole image.
-fn region(settings: &Settings) -> Result<Option<Region>, String> {
+pub(super) fn region(settings: &Settings) -> Result<Option<Region>, String> {
     if settings.start_column.is_none()
         && settings.end_column.is_none()
         && settings.start_row.is_none()
@@ -187,6 +191,32 @@ fn install_interrupt_handler() {
             std::process::exit(EXIT_INTERRUPTED);
         });
     });
+}
+
+/// The render options the settings give (size, anti-aliasing, region, alpha, quality).
+pub(super) fn render_options(settings: &Settings, region: Option<Region>) -> RenderOptions {
+    let antialias = settings.antialias.then_some(Antialias {
+        threshold: settings.antialias_threshold,
+        method: if settings.sampling_method == 2 {
+            Method::Recursive
+        } else {
+            Method::NonRecursive
+        },
+        depth: settings.antialias_depth,
+        jitter: if settings.jitter {
+            settings.jitter_amount
+        } else {
+            0.0
+        },
+    });
+    RenderOptions {
+        width: settings.width,
+        height: settings.height,
+        antialias,
+        region,
+        alpha: settings.alpha,
+        quality: durer::render::quality::Quality(settings.quality),
+    }
 }
 
 /// Runs the render the settings describe; returns the exit code.
@@ -242,28 +272,7 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
         }
     };
     install_interrupt_handler();
-    let antialias = settings.antialias.then_some(Antialias {
-        threshold: settings.antialias_threshold,
-        method: if settings.sampling_method == 2 {
-            Method::Recursive
-        } else {
-            Method::NonRecursive
-        },
-        depth: settings.antialias_depth,
-        jitter: if settings.jitter {
-            settings.jitter_amount
-        } else {
-            0.0
-        },
-    });
-    let mut render_options = RenderOptions {
-        width: settings.width,
-        height: settings.height,
-        antialias,
-        region,
-        alpha: settings.alpha,
-        quality: durer::render::quality::Quality(settings.quality),
-    };
+    let mut render_options = render_options(&settings, region);
     let tile = match args.tile {
         None => None,
         Some(_) if region.is_some() => {

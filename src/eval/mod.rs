@@ -109,6 +109,9 @@ pub struct Evaluated {
     pub diagnostics: Vec<Diagnostic>,
     /// The text of every file read, for showing diagnostics.
     pub sources: SourceMap,
+    /// Every file the scene read (scene, includes, data files, images, fonts), each once:
+    /// what `durer watch` watches.
+    pub files_read: Vec<PathBuf>,
 }
 
 /// Error type used throughout evaluation.
@@ -130,10 +133,12 @@ pub fn evaluate_file(path: &Path, options: &EvalOptions) -> Evaluated {
             None
         }
     };
+    let files_read = evaluator.runtime.files_read();
     Evaluated {
         scene,
         diagnostics,
         sources: evaluator.runtime.into_sources(),
+        files_read,
     }
 }
 

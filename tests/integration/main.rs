@@ -13,6 +13,7 @@ mod lsp;
 mod povray_cli;
 mod reference_images;
 mod robustness;
+mod watch;
 
 use std::path::{Path, PathBuf};
 

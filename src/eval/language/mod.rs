@@ -174,6 +174,9 @@ pub(crate) struct Runtime {
     text_macro_cache: token_macro::TextMacroCache,
     /// Running calls with directives among their arguments (see `argument_directives`).
     directive_cursors: Vec<argument_directives::DirectiveCursor>,
+    /// Files found on the search path or allowed as data files (images, fonts, density
+    /// and `#fopen` files; sources are in `sources`); `durer watch` watches them.
+    data_files_read: std::cell::RefCell<Vec<PathBuf>>,
 }
 
 impl Runtime {
@@ -181,6 +184,7 @@ impl Runtime {
     pub(crate) fn new(options: EvalOptions) -> Runtime {
         let policy = options.file_policy.clone();
         Runtime {
+            data_files_read: Default::default(),
             policy,
             objects_created: 0,
             geometry_bytes: 0,
@@ -367,9 +371,14 @@ impl Runtime {
         access: Access,
         span: Span,
     ) -> EvalResult<PathBuf> {
-        self.policy
+        let resolved = self
+            .policy
             .check(path, access)
-            .map_err(|refusal| self.refused(span, &refusal).into())
+            .map_err(|refusal| self.refused(span, &refusal))?;
+        if access == Access::Read {
+            self.data_files_read.borrow_mut().push(resolved.clone());
+        }
+        Ok(resolved)
     }
 
     /// Finds a file on the search path (the scene's folder, `-L` folders,
@@ -377,6 +386,16 @@ impl Runtime {
     /// library). A candidate the file policy refuses is not even probed; when nothing is
     /// found, the refusal is reported rather than "not found".
     pub(crate) fn find_include(&self, name: &str) -> Result<PathBuf, Missing> {
+        let found = self.search_include(name);
+        if let Ok(path) = &found {
+            if !path.starts_with(EMBEDDED_FOLDER) {
+                self.data_files_read.borrow_mut().push(path.clone());
+            }
+        }
+        found
+    }
+
+    fn search_include(&self, name: &str) -> Result<PathBuf, Missing> {
         let direct = Path::new(name);
         if direct.is_absolute() {
             return match self.policy.check(direct, Access::Read) {
@@ -729,5 +748,18 @@ impl Runtime {
     /// The text of every file read, for showing diagnostics.
     pub(crate) fn into_sources(self) -> SourceMap {
         self.sources
+    }
+
+    /// The files read so far: sources (not durer's embedded ones), then data files, each
+    /// once.
+    pub(crate) fn files_read(&self) -> Vec<PathBuf> {
+        let mut seen = std::collections::HashSet::new();
+        self.sources
+            .paths()
+            .filter(|p| !p.starts_with(EMBEDDED_FOLDER))
+            .map(Path::to_path_buf)
+            .chain(self.data_files_read.borrow().iter().cloned())
+            .filter(|p| seen.insert(p.clone()))
+            .collect()
     }
 }
