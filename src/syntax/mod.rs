@@ -456,6 +456,8 @@ fn rule_name(rule: Rule) -> &'static str {
 fn unbalanced(text: &str, file: FileId) -> Option<Diagnostic> {
     let bytes = text.as_bytes();
     let mut stack: Vec<(u8, usize, usize)> = Vec::new(); // (kind, start, end)
+                                                         // Starts of the open `#if`s (and `#switch`es) whose `#else` was seen.
+    let mut else_seen: Vec<usize> = Vec::new();
     let mut i = 0;
     while i < bytes.len() {
         let c = bytes[i];
@@ -500,6 +502,13 @@ fn unbalanced(text: &str, file: FileId) -> Option<Diagnostic> {
                     "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro" => {
                         stack.push((b'#', i, end))
                     }
+                    "else" | "elseif" | "case" | "range" => {
+                        if let Some(orphan) =
+                            misplaced_branch(text, file, &stack, &mut else_seen, word, i, end)
+                        {
+                            return Some(orphan);
+                        }
+                    }
                     "end" => {
                         // An `#end` inside an open brace belongs to a directive cut across braces;
                         // only report a structure problem when nothing is open at all.
@@ -538,9 +547,81 @@ fn unbalanced(text: &str, file: FileId) -> Option<Diagnostic> {
     })
 }
 
+/// A branch directive (`#else`, `#elseif`, `#case`, `#range` at `start..end`) with no
+/// directive open that it could belong to, or an `#elseif` after its `#if`'s `#else`.
+fn misplaced_branch(
+    text: &str,
+    file: FileId,
+    stack: &[(u8, usize, usize)],
+    else_seen: &mut Vec<usize>,
+    word: &str,
+    start: usize,
+    end: usize,
+) -> Option<Diagnostic> {
+    let open = |kinds: &[&str]| {
+        stack.iter().rev().find(|(kind, s, e)| {
+            *kind == b'#' && kinds.contains(&text[s + 1..*e].trim_start_matches([' ', '\t']))
+        })
+    };
+    let span = Span::new(file, start, end);
+    match word {
+        "case" | "range" => open(&["switch"]).is_none().then(|| {
+            Diagnostic::error(span, format!("`#{word}` outside a `#switch`"))
+                .with_label("no `#switch` is open here")
+                .with_help(format!(
+                    "`#{word}` starts a branch of `#switch (Value) ... #end`"
+                ))
+        }),
+        _ => match open(&["if", "ifdef", "ifndef", "switch"]) {
+            None => Some(
+                Diagnostic::error(span, format!("`#{word}` without an `#if`"))
+                    .with_label("no `#if` is open here")
+                    .with_help(format!(
+                        "`#{word}` belongs between `#if (Condition)` and its `#end`"
+                    )),
+            ),
+            Some(&(_, if_start, if_end)) => {
+                let seen = else_seen.contains(&if_start);
+                if word == "else" && !seen {
+                    else_seen.push(if_start);
+                }
+                (word == "elseif" && seen).then(|| {
+                    Diagnostic::error(span, "`#elseif` after `#else`")
+                        .with_label("this `#elseif` comes after the `#else` of its `#if`")
+                        .with_secondary(Span::new(file, if_start, if_end), "this `#if`")
+                        .with_help("put every `#elseif` before the `#else`")
+                })
+            }
+        },
+    }
+}
+
 #[cfg(test)]
 mod crossing_tests {
     use super::braces_cross_directives;
+
+    #[test]
+    fn branches_inside_their_directives_are_not_orphans() {
+        let text = "#if (1) #declare A = 1; #elseif (2) #else #end\n\
+                    #switch (2) #case (1) #break #range (2, 3) #if (1) #else #end #else #end\n\
+                    #macro M() #ifdef (A) #else #end #end\n";
+        assert!(super::unbalanced(text, 0).is_none());
+        let orphan = |t: &str| super::unbalanced(t, 0).map(|d| d.message);
+        assert_eq!(
+            orphan("#if (1) #end #else"),
+            Some("`#else` without an `#if`".into())
+        );
+        assert_eq!(
+            orphan("#if (1) #else #elseif (1) #end"),
+            Some("`#elseif` after `#else`".into())
+        );
+        assert_eq!(
+            orphan("#if (1) #range (1, 2) #end"),
+            Some("`#range` outside a `#switch`".into())
+        );
+        // An inner `#if`'s `#else` does not count for the outer one.
+        assert!(super::unbalanced("#if (1) #if (2) #else #end #elseif (3) #end", 0).is_none());
+    }
 
     #[test]
     fn braces_cut_across_branches_are_found() {

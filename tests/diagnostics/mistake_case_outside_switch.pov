@@ -1,5 +1,5 @@
-// error: 5:2 expected a directive, block or value, found `case`
-// (durer prints no help line)
+// error: 5:1 `#case` outside a `#switch`
+// error-text: `#case` starts a branch of `#switch (Value) ... #end`
 // POV-Ray: Parse Error: Mis-matched '#case' or '#range'.
 // Mistake: `#case` without `#switch`
 #case (1)

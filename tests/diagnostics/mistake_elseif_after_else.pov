@@ -1,5 +1,5 @@
-// error: 10:2 expected a directive, block or value, found `elseif`
-// error-text: did you mean `else`?
+// error: 10:1 `#elseif` after `#else`
+// error-text: put every `#elseif` before the `#else`
 // POV-Ray: Parse Error: Mis-matched '#elseif'.
 // Mistake: `#elseif` after `#else`
 #declare A = 1;

@@ -1,5 +1,5 @@
-// error: 6:2 expected a directive, block or value, found `else`
-// (durer prints no help line)
+// error: 6:1 `#else` without an `#if`
+// error-text: `#else` belongs between `#if (Condition)` and its `#end`
 // POV-Ray: Parse Error: Mis-matched '#else'.
 // Mistake: `#else` without `#if`
 sphere { 0, 1 }

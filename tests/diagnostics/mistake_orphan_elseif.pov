@@ -1,5 +1,5 @@
-// error: 6:2 expected a directive, block or value, found `elseif`
-// error-text: did you mean `else`?
+// error: 6:1 `#elseif` without an `#if`
+// error-text: `#elseif` belongs between `#if (Condition)` and its `#end`
 // POV-Ray: Parse Error: Mis-matched '#elseif'.
 // Mistake: `#elseif` without `#if`
 #declare A = 1;
