@@ -219,8 +219,16 @@ pub(super) fn render_options(settings: &Settings, region: Option<Region>) -> Ren
     }
 }
 
-/// Runs the render the settings describe; returns the exit code.
-pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
+/// What a run needs before its first frame: the scene, where images go, the frames and
+/// the region (settings' warnings printed; a usage error printed and its exit code).
+pub(super) struct RunPlan {
+    pub(super) scene_path: PathBuf,
+    pub(super) plan: OutputPlan,
+    pub(super) animation: Animation,
+    pub(super) region: Option<Region>,
+}
+
+pub(super) fn plan_run(settings: &Settings, povray_mode: bool) -> Result<RunPlan, i32> {
     for warning in &settings.warnings {
         if settings.streams.warning {
             eprintln!("durer: warning: {warning}");
@@ -231,45 +239,54 @@ pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
             "durer: no scene given: name a .pov file, or give +Iscene.pov or \
              Input_File_Name in an INI file (durer --help)"
         );
-        return EXIT_USAGE;
+        return Err(EXIT_USAGE);
     };
-    let plan = match output_plan(&settings, &scene_path, povray_mode) {
-        Ok(plan) => plan,
-        Err(message) => {
-            eprintln!("durer: {message}");
-            return EXIT_USAGE;
-        }
+    let usage = |message: String| {
+        eprintln!("durer: {message}");
+        EXIT_USAGE
     };
-    let animation = match Animation::plan(&settings) {
-        Ok(animation) => animation,
-        Err(message) => {
-            eprintln!("durer: {message}");
-            return EXIT_USAGE;
-        }
+    let plan = output_plan(settings, &scene_path, povray_mode).map_err(usage)?;
+    let animation = Animation::plan(settings).map_err(usage)?;
+    let region = region(settings).map_err(usage)?;
+    Ok(RunPlan {
+        scene_path,
+        plan,
+        animation,
+        region,
+    })
+}
+
+/// The render threads. Deep CSG (up to the `nesting` limit) is built and traced
+/// recursively on them: they get room (reserved, used only as deep as a scene goes).
+pub(super) fn render_pool(settings: &Settings) -> Result<rayon::ThreadPool, i32> {
+    let mut pool = rayon::ThreadPoolBuilder::new().stack_size(durer::limits::RENDER_STACK_BYTES);
+    if let Some(threads) = settings.threads {
+        pool = pool.num_threads(threads.max(1));
+    }
+    pool.build().map_err(|error| {
+        eprintln!("durer: cannot start render threads: {error}");
+        EXIT_SCENE_ERROR
+    })
+}
+
+/// Runs the render the settings describe; returns the exit code.
+pub fn run(settings: Settings, args: &RenderArgs, povray_mode: bool) -> i32 {
+    let RunPlan {
+        scene_path,
+        plan,
+        animation,
+        region,
+    } = match plan_run(&settings, povray_mode) {
+        Ok(run) => run,
+        Err(code) => return code,
     };
     if animation.animated && plan.destination == Destination::Stdout && animation.frames.len() > 1 {
         eprintln!("durer: an animation of several frames cannot be written to standard output");
         return EXIT_USAGE;
     }
-    let region = match region(&settings) {
-        Ok(region) => region,
-        Err(message) => {
-            eprintln!("durer: {message}");
-            return EXIT_USAGE;
-        }
-    };
-    // Deep CSG (up to the `nesting` limit) is built and traced recursively on these threads:
-    // give them room (the memory is reserved, and used only as deep as a scene goes).
-    let mut pool = rayon::ThreadPoolBuilder::new().stack_size(durer::limits::RENDER_STACK_BYTES);
-    if let Some(threads) = settings.threads {
-        pool = pool.num_threads(threads.max(1));
-    }
-    let pool = match pool.build() {
+    let pool = match render_pool(&settings) {
         Ok(pool) => pool,
-        Err(error) => {
-            eprintln!("durer: cannot start render threads: {error}");
-            return EXIT_SCENE_ERROR;
-        }
+        Err(code) => return code,
     };
     install_interrupt_handler();
     let mut render_options = render_options(&settings, region);

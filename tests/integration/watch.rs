@@ -2,7 +2,7 @@
 //! changes; an error keeps the last good image; a render in progress is abandoned; the
 //! `--serve` page in headless Chromium shows the new image and then the diagnostic.
 
-use crate::farm::have_or_install;
+use crate::farm::{free_port, have_or_install};
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
@@ -238,14 +238,6 @@ fn a_render_in_progress_is_abandoned_when_a_file_changes() {
     watch.wait_for("full 320x240", 1);
     assert_eq!(centre(&dir.join("out.png")), [255, 188, 0]);
     watch.stop();
-}
-
-/// A free local port.
-fn free_port() -> u16 {
-    std::net::TcpListener::bind("127.0.0.1:0")
-        .and_then(|l| l.local_addr())
-        .map(|a| a.port())
-        .expect("a free port")
 }
 
 /// One headless Chromium page kept open, driven over the DevTools protocol by

@@ -14,10 +14,12 @@
 
 mod server;
 
-use super::animation::{frame_file_name, Animation};
+use super::animation::frame_file_name;
 use super::povray_options::Settings;
-use super::render_job::{eval_options, output_plan, region, render_options, Destination};
-use super::{evaluate, print_diagnostics, EXIT_SCENE_ERROR, EXIT_USAGE};
+use super::render_job::{
+    eval_options, plan_run, render_options, render_pool, Destination, RunPlan,
+};
+use super::{evaluate, print_diagnostics, EXIT_USAGE};
 use durer::diag::Severity;
 use durer::render::output::{self, FileFormat, OutputOptions, RenderedImage};
 use durer::render::RenderOptions;
@@ -88,24 +90,16 @@ struct Watched {
 
 /// Runs the watch loop; returns the exit code (0 after Ctrl-C).
 pub fn run(settings: Settings, serve: Option<ServeOption>) -> i32 {
-    let Some(scene_path) = settings.input.clone() else {
-        eprintln!("durer: no scene given: durer watch SCENE [render options] [--serve [ADDR]]");
-        return EXIT_USAGE;
+    let RunPlan {
+        scene_path,
+        plan,
+        animation,
+        region,
+    } = match plan_run(&settings, false) {
+        Ok(run) => run,
+        Err(code) => return code,
     };
-    let plan = match output_plan(&settings, &scene_path, false) {
-        Ok(plan) => plan,
-        Err(message) => {
-            eprintln!("durer: {message}");
-            return EXIT_USAGE;
-        }
-    };
-    let frame = match Animation::plan(&settings) {
-        Ok(animation) => animation.frames[0],
-        Err(message) => {
-            eprintln!("durer: {message}");
-            return EXIT_USAGE;
-        }
-    };
+    let frame = animation.frames[0];
     let file = match &plan.destination {
         Destination::Files { base } => Some(PathBuf::from(frame_file_name(
             base,
@@ -120,13 +114,7 @@ pub fn run(settings: Settings, serve: Option<ServeOption>) -> i32 {
         }
         Destination::Nowhere => None,
     };
-    let full = match region(&settings) {
-        Ok(region) => render_options(&settings, region),
-        Err(message) => {
-            eprintln!("durer: {message}");
-            return EXIT_USAGE;
-        }
-    };
+    let full = render_options(&settings, region);
     let live = Arc::new(server::Live::default());
     if let Some(serve) = &serve {
         match server::start(&serve.address, live.clone()) {
@@ -137,13 +125,9 @@ pub fn run(settings: Settings, serve: Option<ServeOption>) -> i32 {
             }
         }
     }
-    let mut pool = rayon::ThreadPoolBuilder::new().stack_size(durer::limits::RENDER_STACK_BYTES);
-    if let Some(threads) = settings.threads {
-        pool = pool.num_threads(threads.max(1));
-    }
-    let Ok(pool) = pool.build() else {
-        eprintln!("durer: cannot start render threads");
-        return EXIT_SCENE_ERROR;
+    let pool = match render_pool(&settings) {
+        Ok(pool) => pool,
+        Err(code) => return code,
     };
     let _ = ctrlc::set_handler(|| {
         QUIT.store(true, Ordering::SeqCst);

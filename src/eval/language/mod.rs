@@ -175,8 +175,9 @@ pub(crate) struct Runtime {
     /// Running calls with directives among their arguments (see `argument_directives`).
     directive_cursors: Vec<argument_directives::DirectiveCursor>,
     /// Files found on the search path or allowed as data files (images, fonts, density
-    /// and `#fopen` files; sources are in `sources`); `durer watch` watches them.
-    data_files_read: std::cell::RefCell<Vec<PathBuf>>,
+    /// and `#fopen` files; sources are in `sources`), each once in the order first met
+    /// (a scene probing one file in a loop adds it once); `durer watch` watches them.
+    data_files_read: std::cell::RefCell<(Vec<PathBuf>, std::collections::HashSet<PathBuf>)>,
 }
 
 impl Runtime {
@@ -376,7 +377,7 @@ impl Runtime {
             .check(path, access)
             .map_err(|refusal| self.refused(span, &refusal))?;
         if access == Access::Read {
-            self.data_files_read.borrow_mut().push(resolved.clone());
+            self.note_file_read(&resolved);
         }
         Ok(resolved)
     }
@@ -389,10 +390,17 @@ impl Runtime {
         let found = self.search_include(name);
         if let Ok(path) = &found {
             if !path.starts_with(EMBEDDED_FOLDER) {
-                self.data_files_read.borrow_mut().push(path.clone());
+                self.note_file_read(path);
             }
         }
         found
+    }
+
+    fn note_file_read(&self, path: &Path) {
+        let mut files = self.data_files_read.borrow_mut();
+        if files.1.insert(path.to_path_buf()) {
+            files.0.push(path.to_path_buf());
+        }
     }
 
     fn search_include(&self, name: &str) -> Result<PathBuf, Missing> {
@@ -758,7 +766,7 @@ impl Runtime {
             .paths()
             .filter(|p| !p.starts_with(EMBEDDED_FOLDER))
             .map(Path::to_path_buf)
-            .chain(self.data_files_read.borrow().iter().cloned())
+            .chain(self.data_files_read.borrow().0.iter().cloned())
             .filter(|p| seen.insert(p.clone()))
             .collect()
     }
