@@ -47,6 +47,10 @@ pub struct SurfaceSample<'a> {
     pub double_illuminate: bool,
     /// The light group of the surface: which lights light it.
     pub light_group: Option<LightGroup>,
+    /// Area lights light the point from their centre, with one shadow ray, as at the hits
+    /// of radiosity's gathering rays: POV-Ray's shadow-ray counts there do not grow with an
+    /// area light's size (measured: 1×1 to 32×32 arrays add one test per gathering hit).
+    pub area_lights_as_points: bool,
 }
 
 /// Light leaving a surface point towards the viewer, before transparency and reflection.
@@ -109,11 +113,12 @@ pub fn local_light(
         let Some(arriving) = incoming(&light.source, sample.point) else {
             continue;
         };
-        let area_lit = light
+        let area = light
             .source
             .area
             .as_ref()
-            .filter(|area| area.area_illumination);
+            .filter(|_| !sample.area_lights_as_points);
+        let area_lit = area.filter(|area| area.area_illumination);
         if let Some(area) = area_lit {
             // Every point light of the array lights the surface from its own position.
             let array = AreaArray::new(area, light.source.position, sample.point);
@@ -145,11 +150,7 @@ pub fn local_light(
         if !(cosine > 0.0 || (cosine < 0.0 && lights_back(sample))) {
             continue;
         }
-        let array = light
-            .source
-            .area
-            .as_ref()
-            .map(|area| AreaArray::new(area, light.source.position, sample.point));
+        let array = area.map(|area| AreaArray::new(area, light.source.position, sample.point));
         let filter = light_filter(light, world, sample.point, &arriving, array.as_ref());
         let colour = arriving.colour * filter;
         if colour == DVec3::ZERO {

@@ -571,6 +571,7 @@ impl<'a> Tracer<'a> {
             finish: &texture.finish,
             double_illuminate: material.double_illuminate,
             light_group: material.light_group,
+            area_lights_as_points: inside.radiosity_depth > 0,
         };
         let settings = &self.scene.settings;
         let subsurface = match (&settings.subsurface, &texture.finish.subsurface) {
