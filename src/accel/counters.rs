@@ -25,10 +25,16 @@ pub enum Counter {
     /// Ray-primitive intersection tests (through the hierarchy and against unbounded
     /// primitives).
     IntersectionTests,
+    /// Radiosity samples gathered (not reused) at the first bounce.
+    RadiositySamplesFirstBounce,
+    /// Radiosity samples gathered at the second bounce.
+    RadiositySamplesSecondBounce,
+    /// Radiosity samples gathered at the third and deeper bounces.
+    RadiositySamplesDeeper,
 }
 
 /// How many counters there are.
-pub const COUNTERS: usize = 7;
+pub const COUNTERS: usize = 10;
 
 /// One thread's (or a sum of threads') counts, indexed by [`Counter`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -557,6 +557,7 @@ fn render_frame(
         bar.finish_and_clear();
     }
     let render_time = render_start.elapsed();
+    summary.threads = pool.current_num_threads();
     summary.add_frame(
         super::stats::collect(pool),
         object_count,

@@ -9,6 +9,8 @@ use std::time::Duration;
 #[derive(Clone, Debug, Default)]
 pub struct Summary {
     pub frames: usize,
+    /// Render threads (for rays per second per thread).
+    pub threads: usize,
     /// Objects and lights of the last frame.
     pub objects: usize,
     pub lights: usize,
@@ -43,6 +45,21 @@ pub fn peak_memory() -> Option<u64> {
     let kilobytes: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kilobytes * 1024)
 }
+
+/// Radiosity samples gathered by bounce, in the order printed, with their names.
+const RADIOSITY_SAMPLES: [(Counter, &str, &str); 3] = [
+    (
+        Counter::RadiositySamplesFirstBounce,
+        "first_bounce",
+        "first bounce",
+    ),
+    (
+        Counter::RadiositySamplesSecondBounce,
+        "second_bounce",
+        "second bounce",
+    ),
+    (Counter::RadiositySamplesDeeper, "deeper", "deeper bounces"),
+];
 
 /// The kinds of rays, in the order printed, with their names.
 const RAY_KINDS: [(Counter, &str, &str); 6] = [
@@ -83,12 +100,28 @@ impl Summary {
         let _ = writeln!(out, "  Objects:             {:>14}", self.objects);
         let _ = writeln!(out, "  Light sources:       {:>14}", self.lights);
         for (counter, _, name) in RAY_KINDS {
-            let _ = writeln!(
-                out,
-                "  {:<21}{:>14}",
-                format!("{name}:"),
-                self.counts.get(counter)
-            );
+            let count = self.counts.get(counter);
+            let _ = write!(out, "  {:<21}{:>14}", format!("{name}:"), count);
+            match self.rays_per_second_per_thread(count) {
+                Some(rate) if count > 0 => {
+                    let _ = writeln!(out, "  ({:.3} M/s per thread)", rate / 1e6);
+                }
+                _ => out.push('\n'),
+            }
+        }
+        if RADIOSITY_SAMPLES
+            .iter()
+            .any(|(c, _, _)| self.counts.get(*c) > 0)
+        {
+            let _ = writeln!(out, "  Radiosity samples gathered:");
+            for (counter, _, name) in RADIOSITY_SAMPLES {
+                let _ = writeln!(
+                    out,
+                    "    {:<19}{:>14}",
+                    format!("{name}:"),
+                    self.counts.get(counter)
+                );
+            }
         }
         let _ = writeln!(
             out,
@@ -119,21 +152,37 @@ impl Summary {
         out
     }
 
+    /// `count` rays over the render time and the threads, if both are known.
+    fn rays_per_second_per_thread(&self, count: u64) -> Option<f64> {
+        let seconds = self.render.as_secs_f64();
+        (seconds > 0.0 && self.threads > 0).then(|| count as f64 / seconds / self.threads as f64)
+    }
+
     /// The statistics as one JSON object.
     pub fn json(&self) -> String {
-        let mut rays = String::new();
-        for (index, (counter, key, _)) in RAY_KINDS.iter().enumerate() {
-            if index > 0 {
-                rays.push_str(", ");
-            }
-            let _ = write!(rays, "\"{key}\": {}", self.counts.get(*counter));
-        }
+        let object = |entries: &[(Counter, &str, &str)], value: &dyn Fn(Counter) -> String| {
+            let items: Vec<String> = entries
+                .iter()
+                .map(|(counter, key, _)| format!("\"{key}\": {}", value(*counter)))
+                .collect();
+            items.join(", ")
+        };
+        let rays = object(&RAY_KINDS, &|counter| self.counts.get(counter).to_string());
+        let rates = object(&RAY_KINDS, &|counter| {
+            self.rays_per_second_per_thread(self.counts.get(counter))
+                .map_or("null".to_string(), |rate| format!("{rate:.0}"))
+        });
+        let samples = object(&RADIOSITY_SAMPLES, &|counter| {
+            self.counts.get(counter).to_string()
+        });
         let seconds = |d: Duration| format!("{:.6}", d.as_secs_f64());
         format!(
-            "{{\"frames\": {}, \"objects\": {}, \"lights\": {}, \"rays\": {{{rays}}}, \
-             \"intersection_tests\": {}, \"seconds\": {{\"parse\": {}, \"bounding\": {}, \
+            "{{\"frames\": {}, \"threads\": {}, \"objects\": {}, \"lights\": {}, \
+             \"rays\": {{{rays}}}, \"rays_per_second_per_thread\": {{{rates}}}, \
+             \"radiosity_samples\": {{{samples}}}, \"intersection_tests\": {}, \"seconds\": {{\"parse\": {}, \"bounding\": {}, \
              \"render\": {}, \"write\": {}, \"total\": {}}}, \"peak_memory_bytes\": {}}}",
             self.frames,
+            self.threads,
             self.objects,
             self.lights,
             self.counts.get(Counter::IntersectionTests),

@@ -3,12 +3,14 @@
 //! In: the scene's [`RadiositySettings`], the eye position, and a way to trace a gathering
 //! ray (given by the tracer). Out: the irradiance at a surface point, which the tracer
 //! multiplies by pigment, `diffuse` and `brightness` in place of the ambient term.
-//! Holds: deterministic results at any thread count — the pretrace fills the cache on one
-//! thread in a fixed pixel order; the final render ([`map_rows_storing`]) runs in blocks of
-//! rows, each row traced by one thread that sees the cache as it was when the block began
-//! plus the samples the row itself gathered, and the rows' new samples join the cache in
-//! row order between blocks. Allocation per ray only when a sample is stored (lookups reuse
-//! a per-thread buffer).
+//! Holds: deterministic results at any thread count — the pretrace fills the cache in a
+//! fixed pixel order, each sample's rays traced in parallel a fixed batch at a time, a
+//! deeper sample's rays inside such a ray batched in turn (each ray sees the caches as its
+//! batch began plus its own deeper samples, which are kept in ray order after the batch);
+//! the final render ([`map_rows_storing`]) runs in blocks of rows, each row traced by one
+//! thread that sees the cache as it was when the block began plus the samples the row
+//! itself gathered, and the rows' new samples join the cache in row order between blocks.
+//! Allocation per ray only when a sample is stored (lookups reuse a per-thread buffer).
 //!
 //! Method (Ward's irradiance cache, as POV-Ray 3.7's manual describes it):
 //! - a sample gathers `count` rays over the hemisphere around the normal (halved for each
@@ -34,12 +36,13 @@
 //!   stored, so results do not depend on the index's layout.
 
 use super::radiosity_index::SampleIndex;
+use crate::accel::counters::{self, Counter};
 use crate::scene::RadiositySettings;
 use glam::{DVec3, DVec4};
 use rayon::prelude::*;
 use std::cell::RefCell;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
-use std::sync::RwLock;
+use std::sync::{Arc, RwLock};
 
 /// The golden ratio's fractional part, spacing the Fibonacci set's azimuths.
 const GOLDEN_FRACTION: f64 = 0.618_033_988_749_894_9;
@@ -58,7 +61,7 @@ struct Sample {
 }
 
 /// The samples of one bounce and the index finding them.
-#[derive(Default)]
+#[derive(Clone, Default)]
 struct Cache {
     /// Samples in the order they were gathered (their ids in the index).
     samples: Vec<Sample>,
@@ -90,13 +93,20 @@ impl Cache {
 const ROWS_PER_BLOCK: usize = 8;
 
 thread_local! {
-    /// Samples this thread gathered during the final render for the row it is tracing, one
-    /// cache per bounce; `None` outside [`map_rows_storing`]'s rows.
-    static ROW_SAMPLES: RefCell<Option<Vec<Cache>>> = const { RefCell::new(None) };
+    /// The samples this thread's work sees besides the shared caches, and where the samples
+    /// it gathers go (see [`PrivateSamples`]).
+    static PRIVATE: RefCell<PrivateSamples> = const {
+        RefCell::new(PrivateSamples { frozen: Vec::new(), own: None })
+    };
 
     /// Where this thread's gathers in progress stand, one entry per bounce (outermost
     /// first): the gathering point and its distance from the eye along the light's path.
     static GATHER_PATH: RefCell<Vec<(DVec3, f64)>> = const { RefCell::new(Vec::new()) };
+
+    /// Where in the direction pool this thread's next pretrace sample starts, while it
+    /// traces one ray of a batch ([`Radiosity::gather_in_batches`]); `None` elsewhere (the
+    /// shared counter is used).
+    static DIRECTION_CURSOR: std::cell::Cell<Option<u32>> = const { std::cell::Cell::new(None) };
 
     /// The lookup buffers of this thread.
     static LOOKUP_BUFFERS: RefCell<LookupBuffers> = const {
@@ -105,6 +115,18 @@ thread_local! {
             usable: Vec::new(),
         })
     };
+}
+
+/// Samples not yet in the shared caches, as one unit of parallel work sees them: the
+/// final render's row being traced, or one ray of a pretrace batch (whose gather may itself
+/// run batches: each level's samples stay its own until its batch ends).
+#[derive(Default)]
+struct PrivateSamples {
+    /// Samples of the units this one runs inside, outermost first: read-only while it runs.
+    frozen: Vec<Arc<Vec<Cache>>>,
+    /// The samples this unit gathered so far, one cache per bounce (grown on demand);
+    /// `None` outside any unit (the pretrace's top level stores in the shared caches).
+    own: Option<Vec<Cache>>,
 }
 
 /// The light seen along one gathering ray and how far away it came from.
@@ -184,56 +206,45 @@ impl Radiosity {
         point: DVec3,
         normal: DVec3,
         depth: u32,
-        gather: &dyn Fn(DVec3) -> Gathered,
+        gather: &(dyn Fn(DVec3) -> Gathered + Sync),
     ) -> DVec3 {
-        let Some(cache) = self.caches.get(depth as usize) else {
+        if self.caches.len() <= depth as usize {
             return DVec3::ZERO;
-        };
-        let filling = self.filling.load(Ordering::Relaxed);
-        // The pretrace lowers the error bound of the first bounce only: deeper bounces keep
-        // their radii (POV-Ray's deeper counts barely follow `low_error_factor`).
-        let bound_scale = if filling && depth == 0 {
-            self.settings.low_error_factor
-        } else {
-            1.0
-        };
-        let bound = self.settings.error_bound * bound_scale;
-        let (mut sum, mut weight, mut found) = {
-            let cache = cache.read().unwrap_or_else(|poison| poison.into_inner());
-            interpolate(&cache, point, normal, bound, bound_scale)
-        };
-        if !filling {
-            // The samples the current row gathered so far count as well.
-            ROW_SAMPLES.with(|row| {
-                if let Some(row_cache) = row.borrow().as_ref().and_then(|c| c.get(depth as usize)) {
-                    let (row_sum, row_weight, row_found) =
-                        interpolate(row_cache, point, normal, bound, bound_scale);
-                    sum += row_sum;
-                    weight += row_weight;
-                    found += row_found;
-                }
-            });
         }
-        let wanted = self.settings.nearest_count.max(1);
-        let reuse = if filling {
-            found >= wanted
-        } else {
-            found > 0 && !(self.settings.always_sample && found < wanted)
-        };
-        let irradiance = if reuse {
+        let filling = self.filling.load(Ordering::Relaxed);
+        let (sum, weight, found) = self.lookup(depth as usize, point, normal, filling);
+        let irradiance = if self.reuses(found, filling) {
             sum / weight
         } else {
+            counters::add(
+                match depth {
+                    0 => Counter::RadiositySamplesFirstBounce,
+                    1 => Counter::RadiositySamplesSecondBounce,
+                    _ => Counter::RadiositySamplesDeeper,
+                },
+                1,
+            );
             let directions = &self.directions[depth as usize];
             let rays = rays_at_depth(self.settings.count, depth as usize);
             let start = if filling {
-                self.next_direction.fetch_add(rays, Ordering::Relaxed)
+                DIRECTION_CURSOR.with(|cursor| match cursor.get() {
+                    Some(next) => {
+                        cursor.set(Some(next.wrapping_add(rays)));
+                        next
+                    }
+                    None => self.next_direction.fetch_add(rays, Ordering::Relaxed),
+                })
             } else {
                 0
             };
             let path_distance = self.path_distance(point, depth);
             let (irradiance, nearest_distance, harmonic_distance) =
                 with_gather_path(depth, point, path_distance, || {
-                    gather_over(directions, rays, normal, start, gather)
+                    if filling {
+                        self.gather_in_batches(directions, rays, normal, start, gather)
+                    } else {
+                        gather_over(directions, rays, normal, start, gather)
+                    }
                 });
             let distance = if depth == 0 {
                 nearest_distance
@@ -252,20 +263,7 @@ impl Radiosity {
                     irradiance,
                     radius,
                 };
-                // Found wherever some lookup (with its radius scale) could use it.
-                let reach_scale = self.settings.low_error_factor;
-                if filling {
-                    let mut cache = cache.write().unwrap_or_else(|poison| poison.into_inner());
-                    cache.push(sample, reach_scale);
-                } else {
-                    ROW_SAMPLES.with(|row| {
-                        if let Some(row_caches) = row.borrow_mut().as_mut() {
-                            if let Some(row_cache) = row_caches.get_mut(depth as usize) {
-                                row_cache.push(sample, reach_scale);
-                            }
-                        }
-                    });
-                }
+                self.store(depth as usize, sample, filling);
             }
             irradiance
         };
@@ -385,17 +383,34 @@ fn gather_over(
     start: u32,
     gather: &dyn Fn(DVec3) -> Gathered,
 ) -> (DVec3, f64, f64) {
-    let (tangent, bitangent) = normal.any_orthonormal_pair();
+    let frame = normal.any_orthonormal_pair();
+    let seen = (0..rays).filter_map(|offset| {
+        hemisphere_direction(directions, start, offset, normal, frame).map(gather)
+    });
+    summarise(seen, rays)
+}
+
+/// Direction `offset` of a sample's rays starting at `start` in `directions` (around +z),
+/// turned to the hemisphere around `normal` (`frame` is its tangent pair).
+fn hemisphere_direction(
+    directions: &[DVec3],
+    start: u32,
+    offset: u32,
+    normal: DVec3,
+    (tangent, bitangent): (DVec3, DVec3),
+) -> Option<DVec3> {
     let pool = directions.len().max(1);
+    let local = directions.get((start as usize + offset as usize) % pool)?;
+    Some(tangent * local.x + bitangent * local.y + normal * local.z)
+}
+
+/// The mean light of the rays of one sample (`rays` of them were shot, `seen` in order),
+/// the nearest hit's distance and the harmonic mean distance of the hits.
+fn summarise(seen: impl Iterator<Item = Gathered>, rays: u32) -> (DVec3, f64, f64) {
     let mut total = DVec3::ZERO;
     let mut nearest = f64::INFINITY;
     let mut inverse_distances = 0.0;
-    for offset in 0..rays {
-        let Some(local) = directions.get((start as usize + offset as usize) % pool) else {
-            continue;
-        };
-        let direction = tangent * local.x + bitangent * local.y + normal * local.z;
-        let seen = gather(direction);
+    for seen in seen {
         if seen.colour.is_finite() {
             total += seen.colour;
         }
@@ -433,10 +448,7 @@ pub fn map_rows_storing(
             .enumerate()
             .map(|(offset, line)| {
                 let row = (block * ROWS_PER_BLOCK + offset) as u32;
-                let fresh = (0..radiosity.caches.len())
-                    .map(|_| Cache::default())
-                    .collect();
-                ROW_SAMPLES.with(|samples| *samples.borrow_mut() = Some(fresh));
+                PRIVATE.with(|private| private.borrow_mut().own = Some(Vec::new()));
                 if !super::interrupted() {
                     for (column, slot) in line.iter_mut().enumerate() {
                         *slot = colour(column as u32, row);
@@ -445,31 +457,206 @@ pub fn map_rows_storing(
                 if let Some(progress) = progress {
                     progress(1);
                 }
-                ROW_SAMPLES
-                    .with(|samples| samples.borrow_mut().take())
+                PRIVATE
+                    .with(|private| private.borrow_mut().own.take())
                     .unwrap_or_default()
             })
             .collect();
-        radiosity.merge(gathered);
+        radiosity.keep_new(gathered, true);
     }
     colours
 }
 
 impl Radiosity {
-    /// Adds the samples rows gathered, row by row in order, to the caches of their bounces.
-    fn merge(&self, rows: Vec<Vec<Cache>>) {
-        let reach_scale = self.settings.low_error_factor;
-        for row in rows {
-            for (cache, row_cache) in self.caches.iter().zip(row) {
-                if row_cache.samples.is_empty() {
-                    continue;
+    /// The usable samples of bounce `depth` at `point`: the shared cache's and those of the
+    /// current unit of work and the units it runs inside (see [`PrivateSamples`]), as the
+    /// weighted sum of their irradiance, the sum of the weights and their number. The
+    /// pretrace lowers the error bound of the first bounce only: deeper bounces keep their
+    /// radii (POV-Ray's deeper counts barely follow `low_error_factor`).
+    fn lookup(
+        &self,
+        depth: usize,
+        point: DVec3,
+        normal: DVec3,
+        filling: bool,
+    ) -> (DVec3, f64, u32) {
+        let bound_scale = if filling && depth == 0 {
+            self.settings.low_error_factor
+        } else {
+            1.0
+        };
+        let bound = self.settings.error_bound * bound_scale;
+        let Some(cache) = self.caches.get(depth) else {
+            return (DVec3::ZERO, 0.0, 0);
+        };
+        let (mut sum, mut weight, mut found) = {
+            let cache = cache.read().unwrap_or_else(|poison| poison.into_inner());
+            interpolate(&cache, point, normal, bound, bound_scale)
+        };
+        PRIVATE.with(|private| {
+            let private = private.borrow();
+            let layers = private.frozen.iter().map(|layer| layer.as_slice());
+            for layer in layers.chain(private.own.as_deref()) {
+                if let Some(layer_cache) = layer.get(depth) {
+                    let (layer_sum, layer_weight, layer_found) =
+                        interpolate(layer_cache, point, normal, bound, bound_scale);
+                    sum += layer_sum;
+                    weight += layer_weight;
+                    found += layer_found;
                 }
+            }
+        });
+        (sum, weight, found)
+    }
+
+    /// Keeps a new sample of bounce `depth`: in the current unit's own samples inside one,
+    /// else in the shared cache when `shared` (the pretrace, or samples joining the cache
+    /// after a block of rows).
+    fn store(&self, depth: usize, sample: Sample, shared: bool) {
+        // Found wherever some lookup (with its radius scale) could use it.
+        let reach_scale = self.settings.low_error_factor;
+        let kept = PRIVATE.with(|private| match private.borrow_mut().own.as_mut() {
+            Some(own) => {
+                // Grown on demand: most rows and rays store nothing.
+                if own.len() <= depth {
+                    own.resize_with(depth + 1, Cache::default);
+                }
+                own[depth].push(sample, reach_scale);
+                true
+            }
+            None => false,
+        });
+        if shared && !kept {
+            if let Some(cache) = self.caches.get(depth) {
                 let mut cache = cache.write().unwrap_or_else(|poison| poison.into_inner());
-                for sample in row_cache.samples {
-                    cache.push(sample, reach_scale);
+                cache.push(sample, reach_scale);
+            }
+        }
+    }
+
+    /// Keeps the samples that parallel units (rows, or rays of a batch) gathered, unit by
+    /// unit in order, where this thread stores (see [`Radiosity::store`]). A sample that
+    /// the samples kept before it can already answer for at its own point is left out: two
+    /// units that gathered at the same place keep one sample, as one after the other would
+    /// have.
+    fn keep_new(&self, units: Vec<Vec<Cache>>, shared: bool) {
+        let filling = self.filling.load(Ordering::Relaxed);
+        for unit in units {
+            for (depth, unit_cache) in unit.into_iter().enumerate() {
+                for sample in unit_cache.samples {
+                    let (_, _, found) = self.lookup(depth, sample.point, sample.normal, filling);
+                    if !self.reuses(found, filling) {
+                        self.store(depth, sample, shared);
+                    }
                 }
             }
         }
+    }
+
+    /// Whether a lookup that found `found` usable samples reuses them rather than gathering.
+    fn reuses(&self, found: u32, filling: bool) -> bool {
+        let wanted = self.settings.nearest_count.max(1);
+        if filling {
+            found >= wanted
+        } else {
+            found > 0 && !(self.settings.always_sample && found < wanted)
+        }
+    }
+}
+
+/// Rays of one pretrace sample traced in parallel together; each ray sees the caches as
+/// they were when its batch began plus the deeper samples it gathered itself, and the
+/// batch's new samples are kept in ray order after it. A fixed number, so the image does
+/// not depend on the number of threads; small, so that a batch's rays (spread over the
+/// hemisphere by the direction set's order) seldom gather next to each other.
+const RAYS_PER_BATCH: usize = 16;
+
+impl Radiosity {
+    /// [`gather_over`] for a sample of the pretrace, its rays traced [`RAYS_PER_BATCH`] at
+    /// a time in parallel (the pretrace's pixels follow each other, so this is where its
+    /// work spreads over the threads). A ray that gathers a deeper sample batches that
+    /// sample's rays in turn, so one expensive ray does not hold its batch back. Each ray
+    /// is a unit of its own ([`PrivateSamples`]): the samples of the units it runs inside
+    /// are read-only while it runs; what the batch's rays gathered is kept after the batch,
+    /// ray by ray; the sum is taken in ray order.
+    fn gather_in_batches(
+        &self,
+        directions: &[DVec3],
+        rays: u32,
+        normal: DVec3,
+        start: u32,
+        gather: &(dyn Fn(DVec3) -> Gathered + Sync),
+    ) -> (DVec3, f64, f64) {
+        let frame = normal.any_orthonormal_pair();
+        let path = GATHER_PATH.with(|path| path.borrow().clone());
+        // This unit's own samples are read-only to the rays below: they join its frozen
+        // layers for the batches and come back afterwards.
+        let (outer_frozen, outer_own) = PRIVATE.with(|private| {
+            let mut private = private.borrow_mut();
+            (private.frozen.clone(), private.own.take())
+        });
+        let nested = outer_own.is_some();
+        let mut frozen = outer_frozen.clone();
+        frozen.extend(outer_own.map(Arc::new));
+        let offsets: Vec<u32> = (0..rays).collect();
+        let mut seen = Vec::with_capacity(offsets.len());
+        for batch in offsets.chunks(RAYS_PER_BATCH) {
+            let traced: Vec<(Option<Gathered>, Vec<Cache>)> = batch
+                .par_iter()
+                .map(|&offset| {
+                    // This thread may be in the middle of another unit (a thread waiting
+                    // for its batch runs others' rays): save its state and restore it.
+                    let unit = PrivateSamples {
+                        frozen: frozen.clone(),
+                        own: Some(Vec::new()),
+                    };
+                    let outer_unit = PRIVATE.with(|private| private.replace(unit));
+                    let outer_path = GATHER_PATH.with(|p| p.replace(path.clone()));
+                    // Deeper samples draw their directions from a place of their own.
+                    let cursor = start.wrapping_add(offset.wrapping_add(1).wrapping_mul(7919));
+                    let outer_cursor = DIRECTION_CURSOR.with(|c| c.replace(Some(cursor)));
+                    let gathered =
+                        hemisphere_direction(directions, start, offset, normal, frame).map(gather);
+                    DIRECTION_CURSOR.with(|c| c.set(outer_cursor));
+                    GATHER_PATH.with(|p| p.replace(outer_path));
+                    let unit = PRIVATE.with(|private| private.replace(outer_unit));
+                    (gathered, unit.own.unwrap_or_default())
+                })
+                .collect();
+            let mut units = Vec::with_capacity(traced.len());
+            for (gathered, samples) in traced {
+                seen.extend(gathered);
+                units.push(samples);
+            }
+            // Between batches no ray holds the layers: this unit's own samples are taken
+            // back out of them to keep the batch's samples among them, then frozen again.
+            let own = if nested {
+                frozen.pop().map(Arc::unwrap_or_clone)
+            } else {
+                None
+            };
+            PRIVATE.with(|private| {
+                *private.borrow_mut() = PrivateSamples {
+                    frozen: outer_frozen.clone(),
+                    own,
+                }
+            });
+            self.keep_new(units, true);
+            if nested {
+                let own = PRIVATE.with(|private| private.borrow_mut().own.take());
+                frozen.extend(own.map(Arc::new));
+            }
+        }
+        PRIVATE.with(|private| {
+            let mut private = private.borrow_mut();
+            private.frozen = outer_frozen;
+            private.own = if nested {
+                frozen.pop().map(Arc::unwrap_or_clone)
+            } else {
+                None
+            };
+        });
+        summarise(seen.into_iter(), rays)
     }
 }
 
@@ -486,7 +673,8 @@ fn radical_inverse(mut index: u32, base: u32) -> f64 {
 }
 
 /// Fills the caches: traces the pixel at the centre of every block of each pretrace pass,
-/// coarse to fine, on this thread in row order (`trace_pixel(column, row)`).
+/// coarse to fine, in row order (`trace_pixel(column, row)`); the rays of each first-bounce
+/// sample it gathers run in parallel ([`Radiosity::gather_in_batches`]).
 pub fn pretrace(
     radiosity: &Radiosity,
     width: u32,

@@ -36,7 +36,7 @@ impl Hash for CellKey {
 }
 
 /// The cache samples sorted into grid cells by position and reach.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub struct SampleIndex {
     cells: HashMap<CellKey, Vec<u32>, BuildHasherDefault<CellHasher>>,
     /// The levels holding at least one sample, ascending.

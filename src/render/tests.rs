@@ -394,6 +394,25 @@ fn radiosity_final_pass_is_the_same_with_one_and_three_threads() {
 }
 
 #[test]
+fn radiosity_pretrace_with_deep_bounces_is_the_same_with_one_two_and_seven_threads() {
+    let mut busy = busy_scene();
+    // A fine pretrace, three bounces and a windowed direction pool: the pretrace's batches
+    // of parallel rays gather most samples, deeper ones included.
+    busy.settings.radiosity = Some(crate::scene::RadiositySettings {
+        count: 40,
+        direction_pool: 400,
+        recursion_limit: 3,
+        error_bound: 0.4,
+        pretrace_start: 0.2,
+        pretrace_end: 0.05,
+        ..Default::default()
+    });
+    let single = render_on_threads(&busy, 40, 30, 1);
+    assert_eq!(single, render_on_threads(&busy, 40, 30, 2));
+    assert_eq!(single, render_on_threads(&busy, 40, 30, 7));
+}
+
+#[test]
 fn progress_counts_every_row() {
     let busy = busy_scene();
     let world = World::build(&busy);

@@ -486,6 +486,65 @@ fn statistics_as_json() {
 }
 
 #[test]
+fn statistics_give_rates_per_thread_and_radiosity_samples_by_bounce() {
+    let folder = scratch("stats-radiosity");
+    std::fs::write(
+        folder.join("scene.pov"),
+        "global_settings { radiosity { count 20 recursion_limit 2 } }\n\
+         camera { location <0, 1, -3> look_at <0, 0.5, 0> }\n\
+         light_source { <2, 4, -3> rgb 1 }\n\
+         plane { y, 0 pigment { rgb 1 } }\n\
+         box { <-1, 0, 0>, <1, 2, 0.2> pigment { rgb <1, 0.2, 0.2> } }\n",
+    )
+    .unwrap();
+    let output = run(
+        &folder,
+        &[
+            "render",
+            "scene.pov",
+            "--width",
+            "32",
+            "--height",
+            "24",
+            "--threads",
+            "2",
+            "--stats",
+            "json",
+        ],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    let json = String::from_utf8_lossy(&output.stdout);
+    let number_after = |text: &str, key: &str| -> f64 {
+        text.split(&format!("\"{key}\": "))
+            .nth(1)
+            .and_then(|rest| rest.split([',', '}']).next())
+            .and_then(|n| n.trim().parse().ok())
+            .unwrap_or_else(|| panic!("{key} in {text}"))
+    };
+    assert_eq!(number_after(&json, "threads"), 2.0);
+    let samples = json.split("\"radiosity_samples\": ").nth(1).unwrap();
+    assert!(number_after(samples, "first_bounce") > 0.0, "{json}");
+    assert!(number_after(samples, "second_bounce") > 0.0, "{json}");
+    assert_eq!(
+        number_after(samples, "deeper"),
+        0.0,
+        "recursion_limit 2: {json}"
+    );
+    // The rate is the count over the render time and the threads.
+    let rates = json
+        .split("\"rays_per_second_per_thread\": ")
+        .nth(1)
+        .unwrap();
+    let seconds = json.split("\"seconds\": ").nth(1).unwrap();
+    let expected = number_after(&json, "camera") / number_after(seconds, "render") / 2.0;
+    let rate = number_after(rates, "camera");
+    assert!(
+        (rate - expected).abs() <= 1.0 + expected * 1e-3,
+        "{rate} vs {expected}: {json}"
+    );
+}
+
+#[test]
 fn defines_take_any_value() {
     let folder = scratch("defines");
     std::fs::write(

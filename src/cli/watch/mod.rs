@@ -278,6 +278,7 @@ impl Round<'_> {
             let render_time = render_start.elapsed();
             let mut summary = super::stats::Summary {
                 frames: 1,
+                threads: self.pool.current_num_threads(),
                 ..Default::default()
             };
             summary.add_frame(
