@@ -18,10 +18,20 @@ pub(super) fn syntax_diagnostic(
     file: FileId,
     error: pest::error::Error<Rule>,
 ) -> Diagnostic {
-    if let Some(d) = balance::unbalanced(text, file, error_offset(&error)) {
-        return d.with_code("syntax");
+    let unbalanced = balance::unbalanced(text, file, error_offset(&error));
+    if let pest::error::ErrorVariant::CustomError { .. } = error.variant {
+        // The parser gave up (its step or stack limit): say so, and show the bracket or
+        // directive left open, which is the usual cause.
+        let d = pest_diagnostic(text, file, error);
+        return match unbalanced {
+            Some(open) => d.with_secondary(open.span, format!("{}: {}", open.message, open.label)),
+            None => d,
+        };
     }
-    pest_diagnostic(text, file, error)
+    match unbalanced {
+        Some(d) => d.with_code("syntax"),
+        None => pest_diagnostic(text, file, error),
+    }
 }
 
 /// Where pest stopped.
