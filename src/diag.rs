@@ -245,6 +245,33 @@ pub fn did_you_mean<'a>(
     best.map(|(_, c)| c)
 }
 
+/// [`did_you_mean`] for names in a scene: a one- or two-letter candidate is offered only
+/// for the same word in another case (`X` for `x`, not `if` for `I`), and a capitalised
+/// name, which scenes use for their own identifiers, only gets a lower-case keyword that
+/// starts with the same letter (`Sin` gets `sin`, `Undefined` does not get `defined`).
+///
+/// ```
+/// use durer::diag::suggest_name;
+/// assert_eq!(suggest_name("I", ["if", "x"]), None);
+/// assert_eq!(suggest_name("Undefined", ["defined"]), None);
+/// assert_eq!(suggest_name("Sphere", ["sphere"]), Some("sphere"));
+/// ```
+pub fn suggest_name<'a>(
+    name: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<&'a str> {
+    let first = name.chars().next()?;
+    let fits = |candidate: &&str| {
+        if candidate.chars().count() <= 2 {
+            return candidate.eq_ignore_ascii_case(name);
+        }
+        let other = candidate.chars().next().unwrap_or(' ');
+        !(first.is_uppercase() && other.is_lowercase())
+            || other.to_lowercase().eq(first.to_lowercase())
+    };
+    did_you_mean(name, candidates.into_iter().filter(fits))
+}
+
 /// Levenshtein distance with adjacent transpositions counted as one edit.
 fn edit_distance(a: &str, b: &str) -> usize {
     let a: Vec<char> = a.chars().collect();

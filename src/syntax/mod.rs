@@ -4,7 +4,10 @@
 //! first syntax error. Holds: every node carries a [`Span`]; no pest types escape.
 
 pub mod ast;
+mod balance;
+mod explain;
 mod grammar;
+mod headers;
 pub mod keywords;
 mod lower;
 pub mod mapping;
@@ -13,7 +16,8 @@ pub mod tokens;
 
 pub use grammar::{Rule, SdlParser};
 
-use crate::diag::{did_you_mean, Diagnostic, FileId, Span};
+use crate::diag::{Diagnostic, FileId, Span};
+use explain::{pest_diagnostic, syntax_diagnostic};
 use mapping::OffsetMap;
 use pest::Parser;
 use std::rc::Rc;
@@ -72,7 +76,7 @@ pub fn set_parse_step_limit(steps: u64) {
 }
 
 /// The budget for a file of `length` bytes.
-fn parse_step_budget(length: usize) -> usize {
+pub(super) fn parse_step_budget(length: usize) -> usize {
     PARSE_STEP_LIMIT
         .load(Ordering::Relaxed)
         .saturating_add(length.saturating_mul(PARSE_STEPS_PER_BYTE))
@@ -100,6 +104,8 @@ pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
     let mut openers: Vec<(usize, usize)> = Vec::new();
     // The start of the last string that ran over a line break.
     let mut multiline_string: Option<usize> = None;
+    // The first `#word` that looks like a misspelt `#end`.
+    let mut misspelt_end: Option<(usize, usize)> = None;
     let mut i = 0;
     while i < bytes.len() {
         match bytes[i] {
@@ -174,6 +180,13 @@ pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
                     "end" => {
                         openers.pop();
                     }
+                    // `#ned`: a misspelt `#end` (POV-Ray skips the `#`, so it ends nothing).
+                    word if word_len > 0
+                        && !tokens::DIRECTIVE_WORDS.contains(&word)
+                        && crate::diag::suggest_name(word, ["end"]).is_some() =>
+                    {
+                        misspelt_end.get_or_insert((i, end));
+                    }
                     _ => {}
                 }
                 i = end;
@@ -183,19 +196,27 @@ pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
     }
     let (start, end) = *openers.last()?;
     let word = text[start + 1..end].trim();
-    Some(
-        Diagnostic::error(
-            Span::new(file, start, end),
-            format!("unterminated `#{word}`"),
-        )
-        .with_label(format!("this `#{word}` has no matching `#end`"))
-        .with_help("add `#end` where the directive's body ends"),
+    let d = Diagnostic::error(
+        Span::new(file, start, end),
+        format!("unterminated `#{word}`"),
     )
+    .with_label(format!("this `#{word}` has no matching `#end`"));
+    Some(match misspelt_end.filter(|(at, _)| *at > start) {
+        Some((at, to)) => {
+            let typo = text[at + 1..to].trim();
+            d.with_secondary(
+                Span::new(file, at, to),
+                format!("`#{typo}` is not a directive"),
+            )
+            .with_help(format!("did you mean `#end` instead of `#{typo}`?"))
+        }
+        None => d.with_help("add `#end` where the directive's body ends"),
+    })
 }
 
 /// Skips the (nesting) `/* */` comment opening at `start`: the offset after it and whether
 /// it was closed before the end of the text.
-fn skip_block_comment(bytes: &[u8], start: usize) -> (usize, bool) {
+pub(super) fn skip_block_comment(bytes: &[u8], start: usize) -> (usize, bool) {
     let mut depth = 0usize;
     let mut i = start;
     while i < bytes.len() {
@@ -322,306 +343,9 @@ pub fn parse_prefix(
     }
 }
 
-/// Turns a pest error into a diagnostic, preferring an unclosed brace or directive when the
-/// text has one (pest would report where the file ended instead).
-fn syntax_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) -> Diagnostic {
-    if let Some(d) = unbalanced(text, file) {
-        return d.with_code("syntax");
-    }
-    pest_diagnostic(text, file, error)
-}
-
-/// Turns a pest error into a diagnostic at the place pest stopped.
-fn pest_diagnostic(text: &str, file: FileId, error: pest::error::Error<Rule>) -> Diagnostic {
-    let offset = match error.location {
-        pest::error::InputLocation::Pos(p) => p,
-        pest::error::InputLocation::Span((s, _)) => s,
-    };
-    let found = token_at(text, offset);
-    let span = Span::new(
-        file,
-        offset,
-        offset + found.len().max(1).min(text.len() - offset.min(text.len())),
-    );
-    let expected = match &error.variant {
-        pest::error::ErrorVariant::ParsingError { positives, .. } => describe_expected(positives),
-        pest::error::ErrorVariant::CustomError { message } if message.contains("limit reached") => {
-            let budget = parse_step_budget(text.len());
-            let what = if message.contains("stack") {
-                "ran out of stack: the text nests too deeply".to_string()
-            } else {
-                format!(
-                    "gave up after {budget} steps: the text makes the grammar try too many \
-                     readings (often an unclosed `<`, `(` or `[`)"
-                )
-            };
-            return Diagnostic::error(span, format!("the parser {what}"))
-                .with_label("the parser stopped here")
-                .with_help(format!(
-                    "this is the `parse-steps` limit ({} plus {PARSE_STEPS_PER_BYTE} per byte); \
-                     check the brackets before this point, or raise it with --limit parse-steps=N",
-                    PARSE_STEP_LIMIT.load(Ordering::Relaxed)
-                ));
-        }
-        pest::error::ErrorVariant::CustomError { message } => message.clone(),
-    };
-    let found_text = if found.is_empty() {
-        "end of file".to_string()
-    } else {
-        format!("`{found}`")
-    };
-    let mut d = Diagnostic::error(span, format!("expected {expected}, found {found_text}"))
-        .with_label(format!("expected {expected}"));
-    if found
-        .chars()
-        .next()
-        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
-    {
-        if let Some(k) = did_you_mean(found, keywords::ALL.iter().copied()) {
-            d = d.with_help(format!("did you mean `{k}`?"));
-        }
-    } else if [">", "=", "&", "|", "?"].contains(&found) {
-        d = d.with_help(
-            "comparisons, `&`, `|` and `? :` are only allowed inside parentheses, as in \
-             POV-Ray: write `(A > B)`",
-        );
-    }
-    d.with_code("syntax")
-}
-
-/// The word or symbol starting at `offset`.
-fn token_at(text: &str, offset: usize) -> &str {
-    let rest = text.get(offset..).unwrap_or("");
-    let word_len = rest
-        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-        .unwrap_or(rest.len());
-    if word_len > 0 {
-        &rest[..word_len]
-    } else {
-        rest.char_indices().nth(1).map_or(rest, |(i, _)| &rest[..i])
-    }
-}
-
-fn describe_expected(rules: &[Rule]) -> String {
-    let mut names: Vec<&str> = rules.iter().map(|r| rule_name(*r)).collect();
-    names.sort();
-    names.dedup();
-    // Say what fits, not every grammar rule that could have gone on: the catch-all goes
-    // when something more precise is there, and an expression covers its kinds of value.
-    if names.len() > 1 {
-        names.retain(|n| *n != "a directive, block or value");
-    }
-    if names.contains(&"an expression") {
-        names.retain(|n| !["a number", "a vector", "an identifier", "a string"].contains(n));
-    }
-    if names.len() > 3 {
-        names.truncate(2);
-        names.push("something else");
-    }
-    match names.len() {
-        0 => "something else".to_string(),
-        1 => names[0].to_string(),
-        _ => {
-            let last = names.pop().unwrap_or_default();
-            format!("{} or {last}", names.join(", "))
-        }
-    }
-}
-
-/// Human names for grammar rules in error messages.
-fn rule_name(rule: Rule) -> &'static str {
-    match rule {
-        Rule::expr
-        | Rule::full_expr
-        | Rule::postfix_expr
-        | Rule::relational_expr
-        | Rule::logical_expr => "an expression",
-        Rule::number => "a number",
-        Rule::string => "a string",
-        Rule::ident | Rule::target => "an identifier",
-        Rule::block | Rule::block_head => "a block",
-        Rule::end => "`#end`",
-        Rule::comma => "`,`",
-        Rule::keyword => "a keyword",
-        Rule::vector => "a vector",
-        Rule::EOI => "end of file",
-        Rule::map_entry => "a map entry",
-        Rule::arguments => "arguments",
-        Rule::parameters | Rule::parameter => "a parameter",
-        _ => "a directive, block or value",
-    }
-}
-
-/// Finds the first `{` or directive opener that is never closed (or a stray closer).
-fn unbalanced(text: &str, file: FileId) -> Option<Diagnostic> {
-    let bytes = text.as_bytes();
-    let mut stack: Vec<(u8, usize, usize)> = Vec::new(); // (kind, start, end)
-                                                         // Starts of the open `#if`s (and `#switch`es) whose `#else` was seen.
-    let mut else_seen: Vec<usize> = Vec::new();
-    let mut i = 0;
-    while i < bytes.len() {
-        let c = bytes[i];
-        match c {
-            b'"' => {
-                i += 1;
-                while i < bytes.len() && bytes[i] != b'"' {
-                    i += if bytes[i] == b'\\' { 2 } else { 1 };
-                }
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'/') => {
-                while i < bytes.len() && bytes[i] != b'\n' {
-                    i += 1;
-                }
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'*') => {
-                i = skip_block_comment(bytes, i).0;
-                continue;
-            }
-            b'{' => stack.push((b'{', i, i + 1)),
-            b'}' => match stack.last() {
-                Some((b'{', _, _)) => {
-                    stack.pop();
-                }
-                _ => {
-                    return Some(
-                        Diagnostic::error(Span::new(file, i, i + 1), "unexpected `}`")
-                            .with_label("this `}` closes nothing"),
-                    )
-                }
-            },
-            b'#' => {
-                let rest = &text[i + 1..];
-                let trimmed = rest.trim_start_matches([' ', '\t']);
-                let skip = rest.len() - trimmed.len();
-                let word_len = trimmed
-                    .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-                    .unwrap_or(trimmed.len());
-                let word = &trimmed[..word_len];
-                let end = i + 1 + skip + word_len;
-                match word {
-                    "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro" => {
-                        stack.push((b'#', i, end))
-                    }
-                    "else" | "elseif" | "case" | "range" => {
-                        if let Some(orphan) =
-                            misplaced_branch(text, file, &stack, &mut else_seen, word, i, end)
-                        {
-                            return Some(orphan);
-                        }
-                    }
-                    "end" => {
-                        // An `#end` inside an open brace belongs to a directive cut across braces;
-                        // only report a structure problem when nothing is open at all.
-                        if let Some(pos) = stack.iter().rposition(|(k, _, _)| *k == b'#') {
-                            stack.truncate(pos);
-                        } else {
-                            return Some(
-                                Diagnostic::error(
-                                    Span::new(file, i, end),
-                                    "`#end` without an opening directive",
-                                )
-                                .with_label("nothing to end here"),
-                            );
-                        }
-                    }
-                    _ => {}
-                }
-                i = end;
-                continue;
-            }
-            _ => {}
-        }
-        i += 1;
-    }
-    let (kind, start, end) = *stack.last()?;
-    let span = Span::new(file, start, end);
-    Some(if kind == b'{' {
-        Diagnostic::error(span, "unclosed `{`")
-            .with_label("this `{` is never closed")
-            .with_help("add the matching `}`")
-    } else {
-        let word = text[start + 1..end].trim();
-        Diagnostic::error(span, format!("unterminated `#{word}`"))
-            .with_label(format!("this `#{word}` has no matching `#end`"))
-            .with_help("add `#end` where the directive's body ends")
-    })
-}
-
-/// A branch directive (`#else`, `#elseif`, `#case`, `#range` at `start..end`) with no
-/// directive open that it could belong to, or an `#elseif` after its `#if`'s `#else`.
-fn misplaced_branch(
-    text: &str,
-    file: FileId,
-    stack: &[(u8, usize, usize)],
-    else_seen: &mut Vec<usize>,
-    word: &str,
-    start: usize,
-    end: usize,
-) -> Option<Diagnostic> {
-    let open = |kinds: &[&str]| {
-        stack.iter().rev().find(|(kind, s, e)| {
-            *kind == b'#' && kinds.contains(&text[s + 1..*e].trim_start_matches([' ', '\t']))
-        })
-    };
-    let span = Span::new(file, start, end);
-    match word {
-        "case" | "range" => open(&["switch"]).is_none().then(|| {
-            Diagnostic::error(span, format!("`#{word}` outside a `#switch`"))
-                .with_label("no `#switch` is open here")
-                .with_help(format!(
-                    "`#{word}` starts a branch of `#switch (Value) ... #end`"
-                ))
-        }),
-        _ => match open(&["if", "ifdef", "ifndef", "switch"]) {
-            None => Some(
-                Diagnostic::error(span, format!("`#{word}` without an `#if`"))
-                    .with_label("no `#if` is open here")
-                    .with_help(format!(
-                        "`#{word}` belongs between `#if (Condition)` and its `#end`"
-                    )),
-            ),
-            Some(&(_, if_start, if_end)) => {
-                let seen = else_seen.contains(&if_start);
-                if word == "else" && !seen {
-                    else_seen.push(if_start);
-                }
-                (word == "elseif" && seen).then(|| {
-                    Diagnostic::error(span, "`#elseif` after `#else`")
-                        .with_label("this `#elseif` comes after the `#else` of its `#if`")
-                        .with_secondary(Span::new(file, if_start, if_end), "this `#if`")
-                        .with_help("put every `#elseif` before the `#else`")
-                })
-            }
-        },
-    }
-}
-
 #[cfg(test)]
 mod crossing_tests {
     use super::braces_cross_directives;
-
-    #[test]
-    fn branches_inside_their_directives_are_not_orphans() {
-        let text = "#if (1) #declare A = 1; #elseif (2) #else #end\n\
-                    #switch (2) #case (1) #break #range (2, 3) #if (1) #else #end #else #end\n\
-                    #macro M() #ifdef (A) #else #end #end\n";
-        assert!(super::unbalanced(text, 0).is_none());
-        let orphan = |t: &str| super::unbalanced(t, 0).map(|d| d.message);
-        assert_eq!(
-            orphan("#if (1) #end #else"),
-            Some("`#else` without an `#if`".into())
-        );
-        assert_eq!(
-            orphan("#if (1) #else #elseif (1) #end"),
-            Some("`#elseif` after `#else`".into())
-        );
-        assert_eq!(
-            orphan("#if (1) #range (1, 2) #end"),
-            Some("`#range` outside a `#switch`".into())
-        );
-        // An inner `#if`'s `#else` does not count for the outer one.
-        assert!(super::unbalanced("#if (1) #if (2) #else #end #elseif (3) #end", 0).is_none());
-    }
 
     #[test]
     fn braces_cut_across_branches_are_found() {

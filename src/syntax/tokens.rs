@@ -46,7 +46,7 @@ impl Token {
 }
 
 /// The words that make `#word` a directive (any other `#` is ignored, as in POV-Ray).
-const DIRECTIVE_WORDS: &[&str] = &[
+pub(crate) const DIRECTIVE_WORDS: &[&str] = &[
     "declare", "local", "undef", "ifdef", "ifndef", "if", "elseif", "else", "end", "while", "for",
     "switch", "case", "range", "break", "macro", "include", "version", "default", "debug",
     "warning", "error", "fopen", "fclose", "read", "write",

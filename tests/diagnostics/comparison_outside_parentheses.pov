@@ -1,5 +1,5 @@
-// error: 5:21 found `>`
-// error-text: only allowed inside parentheses, as in POV-Ray: write `(A > B)`
+// error: 5:21 `>` outside parentheses
+// error-text: as in POV-Ray, write `(3 > 2)`: comparisons, `&`, `|` and `? :` need parentheses around them
 
 #version 3.7;
 #declare Bigger = 3 > 2;

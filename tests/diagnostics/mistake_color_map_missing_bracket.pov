@@ -1,5 +1,5 @@
-// error: 6:55 expected `,`, a block or something else, found `}`
-// (durer prints no help line)
+// error: 6:46 unclosed `[`
+// error-text: add the matching `]`
 // POV-Ray: Parse Error: Expected ']', } found instead
 // Mistake: a color_map entry without its closing `]`
 sphere { 0, 1

@@ -1,5 +1,5 @@
-// error: 6:11 expected a directive, block or value, found `.`
-// (durer prints no help line)
+// error: 6:11 a vector component cannot be assigned
+// error-text: declare the whole vector again, as in `#declare P = <5, P.y, P.z>;`
 // POV-Ray: Parse Error: Expected '=', . (period) found instead
 // Mistake: assigning one component of a vector
 #declare P = <1, 2, 3>;

@@ -1,5 +1,5 @@
-// error: 5:13 expected a block or an expression, found `=`
-// error-text: comparisons, `&`, `|` and `? :` are only allowed inside parentheses, as in POV-Ray: write `(A > B)`
+// error: 5:12 `#declare` takes a single `=`
+// error-text: write `#declare A = Value;` (comparisons are written `(A = B)`)
 // POV-Ray: Parse Error: Expected 'RValue to declare', = found instead
 // Mistake: `==` in a `#declare`
 #declare A == 1;

@@ -1,5 +1,5 @@
-// error: 5:12 expected a directive, block or value, found `-`
-// (durer prints no help line)
+// error: 5:12 a name cannot contain `-`
+// error-text: names are letters, digits and `_`: write `my_radius`
 // POV-Ray: Parse Error: Expected '=', - found instead
 // Mistake: identifier with a hyphen
 #declare my-radius = 2;

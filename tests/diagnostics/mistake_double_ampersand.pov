@@ -1,5 +1,5 @@
-// error: 6:13 expected an expression, found `&`
-// error-text: comparisons, `&`, `|` and `? :` are only allowed inside parentheses, as in POV-Ray: write `(A > B)`
+// error: 6:12 `&&` is not an operator in POV-Ray
+// error-text: POV-Ray's *and* is a single `&`: `(A > 0 & A < 2)`
 // POV-Ray: Parse Error: Expected 'numeric expression', & found instead
 // Mistake: `&&` for and (POV-Ray has `&`)
 #declare A = 1;

@@ -1,5 +1,5 @@
-// error: 6:9 expected an expression, found `=`
-// error-text: comparisons, `&`, `|` and `? :` are only allowed inside parentheses, as in POV-Ray: write `(A > B)`
+// error: 6:8 `==` is not an operator in POV-Ray
+// error-text: POV-Ray compares with a single `=`, inside parentheses: `(A = 1)`
 // POV-Ray: Parse Error: Expected 'numeric expression', = found instead
 // Mistake: `==` used for comparison (POV-Ray's is `=`)
 #declare A = 1;

@@ -1,5 +1,5 @@
-// error: 6:14 unknown function or macro `A`
-// error-text: `A` is identifier of the standard include file `makegrass.inc`: add `#include "makegrass.inc"` before using it
+// error: 6:14 `A` is a float, not a function or macro
+// error-text: only functions, macros and splines can be called; write `A` without the parentheses to use its value
 // POV-Ray: Parse Error: All #declares of float, vector, and color require semi-colon ';' at end if the language version is set to 3.5 or higher. Either add the semi-colon or set the language version to 3.1 or lower.
 // Mistake: a float called like a function
 #declare A = 5;

@@ -1,5 +1,5 @@
-// error: 5:11 expected a directive, block or value, found `)`
-// (durer prints no help line)
+// error: 5:11 `#for` needs a start and an end value
+// error-text: POV-Ray's loop is written `#for (Identifier, Start, End [, Step])`
 // POV-Ray: Parse Error: Expected 'numeric expression', ) found instead
 // Mistake: `#for` without its end value
 #for (I, 0)

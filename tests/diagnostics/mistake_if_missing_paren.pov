@@ -1,5 +1,5 @@
-// error: 7:3 expected a directive, block or value, found `sphere`
-// (durer prints no help line)
+// error: 6:5 unclosed `(`
+// error-text: add the matching `)`
 // POV-Ray: Parse Error: Expected ')', sphere found instead
 // Mistake: `#if` condition without its closing `)`
 #declare A = 2;

@@ -1,5 +1,5 @@
-// error: 6:2 expected a directive, block or value, found `ifdef`
-// error-text: did you mean `ifndef`?
+// error: 6:8 `#ifdef` needs parentheses around the name
+// error-text: write `#ifdef (A)`
 // POV-Ray: Parse Error: Expected '(', float function 'float identifier' found instead
 // Mistake: `#ifdef` without parentheses
 #declare A = 1;

@@ -1,5 +1,5 @@
-// error: 6:11 in the text this macro produced: expected `,`, a block or something else, found `=`
-// error-text: comparisons, `&`, `|` and `? :` are only allowed inside parentheses, as in POV-Ray: write `(A > B)`
+// error: 6:4 in the text this macro produced: unknown directive `#locl`
+// error-text: did you mean `#local`?
 // POV-Ray: Parse Error: Expected 'object or directive', undeclared identifier 'locl' found instead
 // Mistake: `#local` misspelt `#locl`
 #macro Ball()

@@ -1,5 +1,5 @@
-// error: 5:15 expected a parameter, found `=`
-// error-text: comparisons, `&`, `|` and `? :` are only allowed inside parentheses, as in POV-Ray: write `(A > B)`
+// error: 5:15 macro parameters cannot have default values
+// error-text: POV-Ray has no default values: write `#macro Ball(R)` and pass the value in every call
 // POV-Ray: Parse Error: Expected 'identifier or expression.', = found instead
 // Mistake: default parameter value in a `#macro` (not POV-Ray syntax)
 #macro Ball(R = 1)

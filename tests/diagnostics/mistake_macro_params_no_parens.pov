@@ -1,5 +1,5 @@
-// error: 5:2 expected a directive, block or value, found `macro`
-// (durer prints no help line)
+// error: 5:13 macro parameters go in parentheses
+// error-text: write `#macro Ball(R)`
 // POV-Ray: Parse Error: Expected 'identifier or expression.', undeclared identifier 'R' found instead
 // Mistake: `#macro` parameters without parentheses
 #macro Ball R

@@ -1,5 +1,5 @@
-// error: 7:1 expected an expression, found `}`
-// (durer prints no help line)
+// error: 6:13 unclosed `<`
+// error-text: add the matching `>`
 // POV-Ray: Parse Error: Expected '>', } found instead
 // Mistake: vector without its closing `>`
 sphere { 0, 1

@@ -1,5 +1,5 @@
-// error: 5:20 expected a directive, block or value, found `;`
-// (durer prints no help line)
+// error: 5:14 unclosed `(`
+// error-text: add the matching `)`
 // POV-Ray: Parse Error: Expected ')', ; found instead
 // Mistake: expression without its closing `)`
 #declare A = (1 + 2;

@@ -1,5 +1,5 @@
 // error: 5:1 unterminated `#if`
-// error-text: add `#end` where the directive's body ends
+// error-text: did you mean `#end` instead of `#ned`?
 // POV-Ray: Parse Error: Expected 'object or directive', undeclared identifier 'ned' found instead
 // Mistake: `#end` misspelt `#ned`
 #if (1)

@@ -1,5 +1,5 @@
-// error: 7:4 expected a directive, block or value, found `declare`
-// (durer prints no help line)
+// error: 6:8 `#while` needs parentheses around its condition
+// error-text: write `#while (I < 3)`
 // POV-Ray: Parse Error: Expected '(', float function 'float identifier' found instead
 // Mistake: `#while` condition without parentheses
 #declare I = 0;

@@ -3,6 +3,7 @@
 mod architecture;
 mod cli;
 mod diagnostics;
+mod diagnostics_wording;
 mod expand;
 mod farm;
 mod fuzz_mutation;

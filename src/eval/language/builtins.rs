@@ -513,10 +513,25 @@ pub(crate) fn call_builtin(ev: &mut Evaluator, call: &Call) -> EvalResult<Value>
             }
         }
         _ => {
+            // A declared value of another kind (`#declare A = 5;` then `A(2)`).
+            if let Some(value) = ev.runtime.lookup(call.name) {
+                return Err(ev
+                    .runtime
+                    .error(
+                        call.name_span,
+                        format!("`{name}` is {}, not a function or macro", value.type_name()),
+                    )
+                    .with_label("called here")
+                    .with_help(format!(
+                        "only functions, macros and splines can be called; write `{name}` without \
+                         the parentheses to use its value"
+                    ))
+                    .into());
+            }
             let mut d = ev.runtime.undefined(name, call.name_span);
             d.message = format!("unknown function or macro `{name}`");
             if d.help.is_none() {
-                if let Some(s) = crate::diag::did_you_mean(name, FUNCTIONS.iter().copied()) {
+                if let Some(s) = crate::diag::suggest_name(name, FUNCTIONS.iter().copied()) {
                     d.help = Some(format!("did you mean `{s}`?"));
                 }
             }

@@ -24,7 +24,7 @@ pub(crate) mod token_macro;
 pub(crate) mod value;
 
 use super::{EvalOptions, EvalResult};
-use crate::diag::{did_you_mean, Diagnostic, FileId, SourceMap, Span, TraceEntry};
+use crate::diag::{suggest_name, Diagnostic, FileId, SourceMap, Span, TraceEntry};
 use crate::file_policy::{Access, FilePolicy, Reach, Refusal};
 use crate::hash::FastHash;
 use crate::syntax::ast::Item;
@@ -640,20 +640,23 @@ impl Runtime {
             .error(span, format!("undefined identifier `{name}`"))
             .with_label("not declared");
         if let Some(standard) = standard_names::standard_name(name) {
-            let what = if standard.is_macro {
-                "macro"
-            } else {
-                "identifier"
-            };
             return d.with_help(format!(
-                "`{name}` is {what} of the standard include file `{}`: add `#include \"{}\"` \
-                 before using it",
+                "`{name}` is declared in the standard include file `{}`: add \
+                 `#include \"{}\"` before using it",
                 standard.file, standard.include
             ));
         }
+        if builtins::FUNCTIONS.contains(&name) {
+            return self
+                .error(span, format!("`{name}` needs parentheses"))
+                .with_label("a built-in function, called without `(`")
+                .with_help(format!(
+                    "built-in functions take their arguments in parentheses: `{name}(...)`"
+                ));
+        }
         let visible = self.scopes.names();
         let keywords = crate::syntax::keywords::ALL.iter().copied();
-        if let Some(similar) = did_you_mean(name, visible.chain(keywords)) {
+        if let Some(similar) = suggest_name(name, visible.chain(keywords)) {
             d = d.with_help(format!("did you mean `{similar}`?"));
         }
         d

@@ -4,7 +4,6 @@
 //! In: a block's item stream. Out: the value read, or a spanned "expected X, found Y"
 //! diagnostic. Holds: a leading comma is skipped, as POV-Ray's optional commas allow.
 
-use crate::diag::did_you_mean;
 use crate::eval::language::stream::Stream;
 use crate::eval::language::value::Value;
 use crate::eval::{EvalResult, Evaluator};
@@ -130,7 +129,9 @@ impl Evaluator {
         if let Item::Expr(crate::syntax::ast::Expr::Ident(name, _)) = item {
             if self.runtime.lookup(*name).is_none() {
                 d.message = format!("unknown keyword or identifier `{name}` inside `{block}`");
-                if let Some(s) = did_you_mean(name, crate::syntax::keywords::ALL.iter().copied()) {
+                if let Some(s) =
+                    crate::diag::suggest_name(name, crate::syntax::keywords::ALL.iter().copied())
+                {
                     d = d.with_help(format!("did you mean `{s}`?"));
                 }
             }

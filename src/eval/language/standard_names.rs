@@ -28,14 +28,19 @@ pub struct StandardName {
     pub include: &'static str,
 }
 
-/// The file a scene includes for the names of `file`: `file` itself, except for an
-/// `X_old.inc` (POV-Ray moved old declarations there), whose includer (`shapes.inc`,
-/// `glass.inc`) is the file to include. Aggregates like `stdinc.inc` are never suggested.
+/// The file a scene includes for the names of `file`: `file` itself, except for a part of
+/// a standard file named after it, such as an `X_old.inc` (POV-Ray moved old declarations
+/// there) or `stones1.inc`, whose includer (`shapes.inc`, `stones.inc`) is the file to
+/// include. Aggregates like `stdinc.inc` are never suggested.
 fn include_for(file: &'static str) -> &'static str {
-    if !file.ends_with("_old.inc") {
-        return file;
-    }
+    let stem = file.trim_end_matches(".inc");
     for (includer, text) in EMBEDDED_INCLUDES {
+        // Only a file named as a part of its includer: `stones1.inc` of `stones.inc`,
+        // `shapes_old.inc` of `shapes.inc` (not `colors.inc` of `stdinc.inc`).
+        let includer_stem = includer.trim_end_matches(".inc");
+        if includer_stem == stem || !stem.starts_with(includer_stem) {
+            continue;
+        }
         let mut position = 0;
         let mut after_include = false;
         while let Some(token) = next_token(text, position) {

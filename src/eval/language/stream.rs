@@ -414,7 +414,9 @@ impl Evaluator {
                     .insert(0, definition.name, Value::Macro(definition.clone()));
             }
             DirectiveKind::Include(name) => {
-                let name = self.eval_string(name)?;
+                let name = self
+                    .eval_string(name)
+                    .map_err(|d| unquoted_include(name, d))?;
                 self.runtime.include(&name, span, stream)?;
             }
             DirectiveKind::Version(version) => {
@@ -682,4 +684,30 @@ pub(crate) fn for_continues(value: f64, end: f64, step: f64) -> bool {
     } else {
         value >= end - 1e-10
     }
+}
+
+/// `#include colors.inc`: a file name written without quotes reads as an undefined name;
+/// say that the quotes are missing (any other error of the name is kept).
+fn unquoted_include(
+    name: &crate::syntax::ast::Expr,
+    d: Box<crate::diag::Diagnostic>,
+) -> Box<crate::diag::Diagnostic> {
+    use crate::syntax::ast::Expr;
+    let file = match name {
+        Expr::Ident(word, _) => word.to_string(),
+        Expr::Member(base, extension, _) => match &**base {
+            Expr::Ident(word, _) => format!("{word}.{extension}"),
+            _ => return d,
+        },
+        _ => return d,
+    };
+    if !d.message.starts_with("undefined identifier") {
+        return d;
+    }
+    let mut quoted =
+        crate::diag::Diagnostic::error(name.span(), "the file name of `#include` needs quotes")
+            .with_label("read as an undefined name")
+            .with_help(format!("write `#include \"{file}\"`"));
+    quoted.trace = d.trace.clone();
+    Box::new(quoted)
 }
