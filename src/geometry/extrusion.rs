@@ -27,16 +27,38 @@ pub(super) struct Segment {
     pub(super) c: DVec2,
     pub(super) b: DVec2,
     pub(super) a: DVec2,
+    /// Corners of a box holding the segment: its control points' box, widened by a hair
+    /// so that rounding in the power form never puts a point of the curve outside it.
+    pub(super) low: DVec2,
+    pub(super) high: DVec2,
 }
 
 impl Segment {
     pub(super) fn from_points([p0, p1, p2, p3]: [DVec2; 4]) -> Segment {
+        let low = p0.min(p1).min(p2.min(p3));
+        let high = p0.max(p1).max(p2.max(p3));
+        let hair = 1e-9
+            * (high - low)
+                .max_element()
+                .max(low.abs().max(high.abs()).max_element());
         Segment {
             start: p0,
             c: 3.0 * (p1 - p0),
             b: 3.0 * (p0 - 2.0 * p1 + p2),
             a: p3 - p0 + 3.0 * (p1 - p2),
+            low: low - DVec2::splat(hair),
+            high: high + DVec2::splat(hair),
         }
+    }
+
+    /// Whether the line of points `p` with `normal · p = offset` may meet the segment: it
+    /// passes between the corners of the segment's box.
+    #[inline]
+    fn line_may_meet(&self, normal: DVec2, offset: f64) -> bool {
+        let (low, high) = (normal * self.low, normal * self.high);
+        let least = low.x.min(high.x) + low.y.min(high.y);
+        let most = low.x.max(high.x) + low.y.max(high.y);
+        offset >= least && offset <= most
     }
 
     #[inline]
@@ -143,6 +165,10 @@ impl ExtrudedOutline {
         }
         let mut inside = false;
         for segment in &self.segments {
+            // Only crossings to the right of the point count.
+            if point.y < segment.low.y || point.y > segment.high.y || segment.high.x <= point.x {
+                continue;
+            }
             let (found, count) = segment.crossings_with_line(DVec2::Y, point.y);
             for &s in &found[..count] {
                 if segment.at(s).x > point.x {
@@ -182,9 +208,12 @@ impl ExtrudedOutline {
             // The plane through the apex and the line meets the outline's plane z = 1 in a
             // line; each crossing there gives a ray from the apex to meet.
             let plane = origin.cross(direction);
+            let plane_normal = DVec2::new(plane.x, plane.y);
             for (index, segment) in self.segments.iter().enumerate() {
-                let (found, found_count) =
-                    segment.crossings_with_line(DVec2::new(plane.x, plane.y), -plane.z);
+                if !segment.line_may_meet(plane_normal, -plane.z) {
+                    continue;
+                }
+                let (found, found_count) = segment.crossings_with_line(plane_normal, -plane.z);
                 for &s in &found[..found_count] {
                     let spot = segment.at(s);
                     let across_x = direction.x - spot.x * direction.z;
@@ -210,6 +239,9 @@ impl ExtrudedOutline {
             let normal = flat_direction.perp();
             let offset = normal.dot(flat_origin);
             for (index, segment) in self.segments.iter().enumerate() {
+                if !segment.line_may_meet(normal, offset) {
+                    continue;
+                }
                 let (found, found_count) = segment.crossings_with_line(normal, offset);
                 for &s in &found[..found_count] {
                     let t = (segment.at(s) - flat_origin).dot(flat_direction) / flat_speed;

@@ -226,12 +226,18 @@ impl Lathe {
 }
 
 /// False when the line `origin + s direction` surely misses the surface the segment sweeps:
-/// it stays farther from the Y axis than any radius of the segment while inside the segment's
-/// height range (both bounded by the sums of the coefficient sizes, t in [0, 1]).
+/// while inside the segment's height range it stays farther from the Y axis than any radius
+/// of the segment, or nearer than all of them (both bounded by the segment's box).
 fn line_may_meet(segment: &Segment, origin: DVec3, direction: DVec3) -> bool {
-    let spread = segment.c.abs() + segment.b.abs() + segment.a.abs();
-    let largest_radius = segment.start.x.abs() + spread.x;
-    let (low, high) = (segment.start.y - spread.y, segment.start.y + spread.y);
+    let (low, high) = (segment.low.y, segment.high.y);
+    let largest_radius = segment.low.x.abs().max(segment.high.x.abs());
+    let smallest_radius = if segment.low.x > 0.0 {
+        segment.low.x
+    } else if segment.high.x < 0.0 {
+        -segment.high.x
+    } else {
+        0.0
+    };
     // Squared distance from the axis: a s² + 2 half_b s + c, least at s = −half_b / a.
     let a = direction.x * direction.x + direction.z * direction.z;
     let half_b = origin.x * direction.x + origin.z * direction.z;
@@ -247,6 +253,7 @@ fn line_may_meet(segment: &Segment, origin: DVec3, direction: DVec3) -> bool {
     } else {
         return false;
     };
+    let squared_at = |s: f64| (a * s + 2.0 * half_b) * s + c;
     let closest = if a > 0.0 {
         (-half_b / a).clamp(first, last)
     } else {
@@ -263,7 +270,21 @@ fn line_may_meet(segment: &Segment, origin: DVec3, direction: DVec3) -> bool {
     };
     // A relative margin keeps rounding from dropping a grazing segment.
     let reach = largest_radius * largest_radius * (1.0 + 1e-9) + 1e-12;
-    nearest_squared.is_nan() || reach.is_nan() || nearest_squared <= reach
+    if nearest_squared.is_nan() || reach.is_nan() {
+        return true;
+    }
+    if nearest_squared > reach {
+        return false;
+    }
+    // The distance is convex along the line: its largest value in the range is at an end.
+    if first.is_finite() && last.is_finite() && smallest_radius > 0.0 {
+        let farthest_squared = squared_at(first).max(squared_at(last));
+        let inner = smallest_radius * smallest_radius * (1.0 - 1e-9) - 1e-12;
+        if farthest_squared < inner {
+            return false;
+        }
+    }
+    true
 }
 
 #[cfg(test)]

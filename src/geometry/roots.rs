@@ -177,6 +177,63 @@ fn refine_root(coefficients: &[f64], mut low: f64, mut high: f64, low_value: f64
     x
 }
 
+/// Whether the polynomial (highest power first, degree at least 1) surely has no root in
+/// `[low, high]`: its Bernstein coefficients over the interval all have one sign, by more
+/// than their rounding error (the polynomial lies in the convex hull of its Bernstein
+/// control points). Most rays that reach a root search meet no surface in its interval;
+/// this answers them without bracketing every critical point.
+fn surely_no_root(polynomial: &[f64], low: f64, high: f64) -> bool {
+    let degree = polynomial.len() - 1;
+    // The coefficients of p(low + u), lowest power first, by Taylor shift (repeated
+    // synthetic division), and the same computed on absolute values: a bound on rounding.
+    let mut shifted = [0.0; MAX_DEGREE + 1];
+    let mut magnitude = [0.0; MAX_DEGREE + 1];
+    for (power, &coefficient) in polynomial.iter().rev().enumerate() {
+        shifted[power] = coefficient;
+        magnitude[power] = coefficient.abs();
+    }
+    if low != 0.0 {
+        for first in 0..degree {
+            for power in (first..degree).rev() {
+                shifted[power] += low * shifted[power + 1];
+                magnitude[power] += low.abs() * magnitude[power + 1];
+            }
+        }
+    }
+    // The coefficients of p(low + width·t) for t in [0, 1].
+    let width = high - low;
+    let mut scale = 1.0;
+    let mut bound = 0.0;
+    for (coefficient, size) in shifted.iter_mut().zip(magnitude).take(degree + 1) {
+        *coefficient *= scale;
+        bound += size * scale;
+        scale *= width;
+    }
+    if !bound.is_finite() {
+        return false;
+    }
+    // Bernstein coefficient i is the sum over k ≤ i of C(i, k) / C(degree, k) · c_k.
+    let margin = 16.0 * (degree + 1) as f64 * f64::EPSILON * bound;
+    let mut sign = 0.0;
+    for index in 0..=degree {
+        let mut bernstein = 0.0;
+        let mut ratio = 1.0; // C(index, k) / C(degree, k), from k = 0
+        for (power, coefficient) in shifted.iter().enumerate().take(index + 1) {
+            bernstein += ratio * coefficient;
+            ratio *= (index - power) as f64 / (degree - power) as f64;
+        }
+        if bernstein.abs() <= margin {
+            return false;
+        }
+        if sign == 0.0 {
+            sign = bernstein.signum();
+        } else if bernstein.signum() != sign {
+            return false;
+        }
+    }
+    true
+}
+
 /// Writes the real roots of the polynomial `coefficients` (highest power first, degree at most
 /// seven) that lie in `[low, high]` into `out`, ascending, and returns how many there are.
 ///
@@ -201,6 +258,17 @@ pub fn real_roots_between(
     {
         return 0;
     }
+    let degree = polynomial.len() - 1;
+    if degree >= 3 && surely_no_root(polynomial, low, high) {
+        return 0;
+    }
+    bracketed_roots(polynomial, low, high, out)
+}
+
+/// [`real_roots_between`] for a polynomial whose leading coefficient is not zero, of degree
+/// 1 to [`MAX_DEGREE`], on a valid interval: each interval between consecutive critical
+/// points that changes sign holds one root.
+fn bracketed_roots(polynomial: &[f64], low: f64, high: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
     let degree = polynomial.len() - 1;
     if degree == 1 {
         let root = -polynomial[1] / polynomial[0];
@@ -255,6 +323,61 @@ mod tests {
         let mut out = [0.0; MAX_DEGREE];
         let count = real_roots_between(coefficients, low, high, &mut out);
         out[..count].to_vec()
+    }
+
+    #[test]
+    fn no_root_is_skipped_by_the_bernstein_test() {
+        // Random polynomials of degrees 3 to 7 built from roots near the interval (some
+        // double, some just outside it): wherever the test says "no root", the full
+        // search finds none. A fixed generator keeps the cases the same on every run.
+        let mut state: u64 = 0x9e37_79b9_7f4a_7c15;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut skipped, mut with_roots) = (0, 0);
+        for case in 0..20_000 {
+            let degree = 3 + case % 5;
+            let mut polynomial = vec![1.0 + 4.0 * next()];
+            for _ in 0..degree {
+                let root = if next() < 0.2 {
+                    1.0 + 1e-9 * next()
+                } else {
+                    3.0 * next() - 1.0
+                };
+                // Multiply by (x - root).
+                let mut product = polynomial.clone();
+                product.push(0.0);
+                for index in 1..product.len() {
+                    product[index] -= root * polynomial[index - 1];
+                }
+                polynomial = product;
+            }
+            if next() < 0.3 {
+                // Lift it off the axis so that some cases have no real roots at all.
+                *polynomial.last_mut().unwrap() += 0.1 * next();
+            }
+            let low = next() - 0.5;
+            let high = low + 2.0 * next();
+            let mut out = [0.0; MAX_DEGREE];
+            let found = bracketed_roots(&polynomial, low, high, &mut out);
+            if surely_no_root(&polynomial, low, high) {
+                skipped += 1;
+                assert_eq!(
+                    found,
+                    0,
+                    "{polynomial:?} on [{low}, {high}]: {:?}",
+                    &out[..found]
+                );
+            }
+            with_roots += usize::from(found > 0);
+        }
+        assert!(
+            skipped > 1_000 && with_roots > 1_000,
+            "{skipped} {with_roots}"
+        );
     }
 
     #[test]
