@@ -806,6 +806,9 @@ impl Builder {
                 let mut nodes: Vec<CsgNode> = pieces
                     .into_iter()
                     .map(|(piece, material)| {
+                        let inside_quadric = piece
+                            .inside_quadric(&world_from_local.inner_from_outer, inversion.odd)
+                            .map(Box::new);
                         let place = self.leaf_placement(material);
                         let (leaf, bounds) = place(
                             piece,
@@ -822,7 +825,11 @@ impl Builder {
                             inside: padded(bounds.inside),
                             outside: padded(bounds.outside),
                         };
-                        CsgNode::Leaf { index, bounds }
+                        CsgNode::Leaf {
+                            index,
+                            bounds,
+                            inside_quadric,
+                        }
                     })
                     .collect();
                 let solid_direction = match shape {

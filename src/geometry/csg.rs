@@ -12,6 +12,7 @@
 //! one per-thread scratch vector, so no ray allocates once the vector has grown.
 
 use super::leaf::Leaf;
+use super::quadric_bounds::InsideQuadric;
 use super::roots::Roots;
 use super::Ray;
 use crate::accel::{Aabb, Bvh};
@@ -143,6 +144,9 @@ pub enum CsgNode {
         index: u32,
         /// The leaf's bounds.
         bounds: NodeBounds,
+        /// The inside of an unbounded plane or quadric leaf, which an intersection uses to
+        /// bound its other children's region.
+        inside_quadric: Option<Box<InsideQuadric>>,
     },
     /// A combination of child subtrees.
     Combine {
@@ -254,9 +258,11 @@ impl CsgNode {
                     surface = join(surface, overlap(bounds.surface, others));
                     inside_after = overlap(inside_after, bounds.inside);
                 }
+                // Unbounded planes and quadrics cut the region down further.
+                let region = bounded_by_quadrics(&children, &child_bounds);
                 NodeBounds {
-                    surface,
-                    inside: inside_after,
+                    surface: overlap(surface, region),
+                    inside: overlap(inside_after, region),
                     // Outside an intersection where outside any child.
                     outside: child_bounds
                         .iter()
@@ -277,6 +283,42 @@ impl CsgNode {
             index,
         }
     }
+}
+
+/// A box holding every point that lies inside all of an intersection's `children` but at
+/// most one flat one (a triangle or mesh has no inside, yet its surface inside the others
+/// survives), found by cutting the overlap of the other children's boxes down by the children
+/// that are unbounded planes or quadrics; `None` when that gives no bound.
+fn bounded_by_quadrics(children: &[CsgNode], child_bounds: &[NodeBounds]) -> Option<Aabb> {
+    let quadrics: Vec<&InsideQuadric> = children
+        .iter()
+        .filter_map(|child| match child {
+            CsgNode::Leaf {
+                inside_quadric: Some(quadric),
+                ..
+            } => Some(&**quadric),
+            _ => None,
+        })
+        .collect();
+    if quadrics.is_empty() {
+        return None;
+    }
+    let start = child_bounds
+        .iter()
+        .filter_map(|bounds| bounds.inside.filter(|inside| !inside.is_empty()))
+        .fold(None, |all, inside| overlap(all, Some(inside)));
+    let mut corners = start.map_or((DVec3::NEG_INFINITY, DVec3::INFINITY), |r| (r.min, r.max));
+    // Each cut can let another cut further: a few rounds reach the box in practice.
+    for _ in 0..3 {
+        for quadric in &quadrics {
+            match quadric.tighten(corners) {
+                Some(tighter) => corners = tighter,
+                None => return Some(Aabb::EMPTY),
+            }
+        }
+    }
+    let found = Aabb::from_corners(corners.0, corners.1);
+    found.is_finite().then_some(found)
 }
 
 /// The overlap of two regions, where `None` stands for all of space.

@@ -59,6 +59,11 @@ impl Plane {
     pub fn normal(&self) -> DVec3 {
         self.normal
     }
+
+    /// How far the plane lies along its normal from the origin.
+    pub fn distance(&self) -> f64 {
+        self.distance
+    }
 }
 
 /// A flat ring: points of a plane between the hole radius and the outer radius of a centre.

@@ -21,6 +21,7 @@ use super::parametric::ParametricSurface;
 use super::poly::PolySurface;
 use super::polygon::{Polygon, SmoothTriangle};
 use super::quadric::Quadric;
+use super::quadric_bounds::InsideQuadric;
 use super::roots::Roots;
 use super::round::{Cone, Sphere};
 use super::sor::Sor;
@@ -396,6 +397,27 @@ impl LocalShape {
             LocalShape::Ovus(shape) => shape.normal(point, part),
             LocalShape::Lemon(shape) => shape.normal(point, part),
             LocalShape::Parametric(shape) => shape.normal(point),
+        }
+    }
+
+    /// The inside of an unbounded plane or quadric as a world-space inequality, for the boxes
+    /// of the intersections it is part of; `None` for other shapes.
+    pub fn inside_quadric(
+        &self,
+        local_from_world: &DAffine3,
+        inverted: bool,
+    ) -> Option<InsideQuadric> {
+        match self {
+            LocalShape::Plane(plane) => InsideQuadric::from_plane(
+                plane.normal(),
+                plane.distance(),
+                local_from_world,
+                inverted,
+            ),
+            LocalShape::Quadric(quadric) => {
+                InsideQuadric::from_local(quadric.coefficients(), local_from_world, inverted)
+            }
+            _ => None,
         }
     }
 

@@ -25,6 +25,7 @@ mod parametric;
 mod poly;
 mod polygon;
 mod quadric;
+mod quadric_bounds;
 mod roots;
 mod round;
 mod sor;

@@ -36,6 +36,12 @@ impl Quadric {
         (finite && !trivial).then_some(quadric)
     }
 
+    /// POV-Ray's ten coefficients `A` to `J`.
+    pub fn coefficients(&self) -> [f64; 10] {
+        let (s, m, l) = (self.squares, self.mixed, self.linear);
+        [s.x, s.y, s.z, m.x, m.y, m.z, l.x, l.y, l.z, self.constant]
+    }
+
     /// The polynomial's value at `point`.
     pub fn value(&self, point: DVec3) -> f64 {
         let p = point;
