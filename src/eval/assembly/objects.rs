@@ -128,7 +128,7 @@ impl Evaluator {
                         }
                         Item::Block(b)
                             if matches!(&b.head, crate::syntax::ast::BlockHead::Word(w)
-                                if matches!(&**w, "clipped_by" | "bounded_by" | "interior_texture" | "material" | "photons")) =>
+                                if matches!(&**w, "clipped_by" | "bounded_by" | "interior_texture" | "material" | "photons" | "finish")) =>
                         {
                             self.object_modifier(&mut object, item, stream, head, &mut uv_mapping)?;
                             None
