@@ -4,6 +4,7 @@
 usage: scripts/conformance.py [--set corpus|examples|wild|all]... [--corpus FILE]
                               [--durer PATH] [--jobs N] [--timeout S]
                               [--out docs/conformance.md] [--filter SUBSTR]
+                              [--wild-list FILE]
 
 Three sets of scenes, chosen with --set (repeatable; default corpus):
 
@@ -14,7 +15,8 @@ Three sets of scenes, chosen with --set (repeatable; default corpus):
               corpus list where it has one; POV-Ray itself decides what renders
     wild      tests/wild/list.tsv: scenes people published in their own repositories,
               `repo<TAB>commit<TAB>path<TAB>extra paths<TAB>category<TAB>yes|no<TAB>note`,
-              exported by scripts/fetch-wild.py into conformance-work/wild/ (run it first)
+              exported by scripts/fetch-wild.py into conformance-work/wild/ (run it first;
+              --wild-list FILE reads another list of that form, e.g. candidates to screen)
 
 Lines starting with `#` are comments. Each scene's folder (for wild scenes, the exported
 tree of its repository) is copied into conformance-work/ (git-ignored) and rendered there at
@@ -205,9 +207,15 @@ def remove_copy(entry, kind):
     shutil.rmtree(os.path.join(WORK, "run", entry.slug, kind), ignore_errors=True)
 
 
+def povray_option(switch, value):
+    """`+Ivalue`; POV-Ray splits options at spaces, so a value with one is quoted."""
+    return f'{switch}"{value}"' if " " in value else f"{switch}{value}"
+
+
 def povray_command(scene_name, output, folder):
-    return ["povray", "-D", f"+I{scene_name}", f"+O{output}", f"+W{WIDTH}", f"+H{HEIGHT}",
-            "-GA", "+WT1", f"+L{INCLUDE}", f"+L{folder}"]
+    return ["povray", "-D", povray_option("+I", scene_name), povray_option("+O", output),
+            f"+W{WIDTH}", f"+H{HEIGHT}", "-GA", "+WT1", f"+L{INCLUDE}",
+            povray_option("+L", folder)]
 
 
 def povray_render(entry, timeout):
@@ -416,6 +424,8 @@ def main():
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per render")
     parser.add_argument("--out", default=os.path.join(REPO, "docs", "conformance.md"))
     parser.add_argument("--filter", default="", help="only scenes whose path contains this")
+    parser.add_argument("--wild-list", default=WILD_LIST,
+                        help="the list for --set wild (default tests/wild/list.tsv)")
     parser.add_argument("--size", default=f"{WIDTH}x{HEIGHT}",
                         help="image size WIDTHxHEIGHT for both renderers (default 160x120)")
     args = parser.parse_args()
@@ -439,7 +449,7 @@ def main():
     sets = SETS if "all" in sets else [name for name in SETS if name in sets]
     readers = {"corpus": lambda: read_corpus(args.corpus),
                "examples": lambda: read_all_examples(args.corpus),
-               "wild": lambda: read_wild(WILD_LIST)}
+               "wild": lambda: read_wild(args.wild_list)}
     chosen = {name: [e for e in readers[name]() if args.filter in e.path] for name in sets}
     if not any(chosen.values()):
         print("error: no scenes selected", file=sys.stderr)

@@ -350,6 +350,29 @@ fn unquote(text: &str) -> &str {
     text
 }
 
+/// How many folders above the scene's folder [`project_folder`] reaches.
+pub const PROJECT_LEVELS: usize = 2;
+
+/// The folder a scene may read as its project: [`PROJECT_LEVELS`] folders above the
+/// scene's folder (resolved), but never a folder less than two names deep (never `/`,
+/// `/home`, `/tmp`, `/usr`), so `/home/me/scene.pov` gets `/home/me` and
+/// `/home/me/art/scenes/a/a.pov` gets `/home/me/art`. Published scenes share include files,
+/// models and images between sibling folders (`#include "../matrices.inc"`,
+/// `"../../models/orion_POV_geom.inc"`), which POV-Ray reads (its default `povray.conf`
+/// permits reading all of `%HOME%`); `None` when the scene's folder is itself that shallow.
+pub fn project_folder(scene_folder: &Path) -> Option<PathBuf> {
+    let folder = resolve(scene_folder);
+    let depth = folder
+        .components()
+        .filter(|c| matches!(c, Component::Normal(_)))
+        .count();
+    let levels = PROJECT_LEVELS.min(depth.saturating_sub(2));
+    if levels == 0 {
+        return None;
+    }
+    folder.ancestors().nth(levels).map(Path::to_path_buf)
+}
+
 /// The path with symbolic links followed and `.`/`..` removed. A path that does not exist
 /// (a file about to be written) is resolved through its nearest existing ancestor, the rest
 /// appended with `..` applied to the names.
@@ -412,6 +435,22 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         dir.canonicalize().unwrap()
+    }
+
+    #[test]
+    fn project_folder_is_two_levels_up_but_never_shallow() {
+        let p = |s: &str| project_folder(Path::new(s)).map(|f| f.display().to_string());
+        assert_eq!(
+            p("/nonexistent-d/me/art/scenes/a").as_deref(),
+            Some("/nonexistent-d/me/art")
+        );
+        assert_eq!(
+            p("/nonexistent-d/me/art").as_deref(),
+            Some("/nonexistent-d/me")
+        );
+        assert_eq!(p("/nonexistent-d/me"), None);
+        assert_eq!(p("/nonexistent-d"), None);
+        assert_eq!(p("/"), None);
     }
 
     #[test]

@@ -668,7 +668,11 @@ impl Builder {
                 }
             }
             shape => {
-                let owners_before = self.next_owner;
+                // Owners are numbered from 1 up (`new_owner` hands out the count after
+                // adding one), so the first one made for this object is the next number: an
+                // interior or texture an enclosing union made is shared by all its children
+                // (each child's own material made them refract as separate objects).
+                let first_own_owner = self.next_owner + 1;
                 // A texture no other object or identifier holds: this object's material
                 // cannot be shared (checked before the appearance takes its own reference).
                 let sole_texture = object
@@ -676,7 +680,7 @@ impl Builder {
                     .as_ref()
                     .is_some_and(|texture| Arc::strong_count(texture) == 1);
                 let appearance = self.appearance(object, &world_from_local, inherited);
-                let material = if sole_texture || appearance.owned_since(owners_before) {
+                let material = if sole_texture || appearance.owned_since(first_own_owner) {
                     self.unshared_material(&appearance)
                 } else {
                     self.material(&appearance)

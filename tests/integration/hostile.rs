@@ -318,13 +318,22 @@ fn huge_image_zero_width_and_too_many_threads_are_refused() {
 #[test]
 fn include_outside_the_file_policy_is_refused_without_reading_it() {
     let dir = scratch("policy-include");
-    std::fs::create_dir_all(dir.join("scene")).unwrap();
+    // The scene reads its project (two folders up: `a`) but not beside it.
+    std::fs::create_dir_all(dir.join("a/b/scene")).unwrap();
     std::fs::create_dir_all(dir.join("private")).unwrap();
     std::fs::write(dir.join("private/secret.inc"), "SECRET-FIRST-LINE\n").unwrap();
-    let scene = dir.join("scene/scene.pov");
+    std::fs::write(dir.join("a/shared.inc"), "#declare Shared = 1;\n").unwrap();
+    let scene = dir.join("a/b/scene/scene.pov");
+    std::fs::write(
+        &scene,
+        "#include \"../../shared.inc\"\nsphere { 0, Shared }\n",
+    )
+    .unwrap();
+    let (output, _) = run(&["check", path(&scene)]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     for name in [
         path(&dir.join("private/secret.inc")).to_string(),
-        "../private/secret.inc".to_string(),
+        "../../../private/secret.inc".to_string(),
     ] {
         std::fs::write(&scene, format!("#include \"{name}\"\nsphere {{ 0, 1 }}\n")).unwrap();
         let (output, _) = run(&["check", path(&scene)]);
@@ -345,12 +354,17 @@ fn include_outside_the_file_policy_is_refused_without_reading_it() {
 #[test]
 fn fopen_through_a_symbolic_link_is_refused() {
     let dir = scratch("policy-symlink");
-    std::fs::create_dir_all(dir.join("scene")).unwrap();
+    // The scene is deep enough that `elsewhere` is outside its project (two folders up).
+    std::fs::create_dir_all(dir.join("a/b/scene")).unwrap();
     std::fs::create_dir_all(dir.join("elsewhere")).unwrap();
     std::fs::write(dir.join("elsewhere/data.txt"), "\"x\"\n").unwrap();
-    std::os::unix::fs::symlink(dir.join("elsewhere/data.txt"), dir.join("scene/link.txt")).unwrap();
-    std::os::unix::fs::symlink(dir.join("elsewhere"), dir.join("scene/out")).unwrap();
-    let scene = dir.join("scene/scene.pov");
+    std::os::unix::fs::symlink(
+        dir.join("elsewhere/data.txt"),
+        dir.join("a/b/scene/link.txt"),
+    )
+    .unwrap();
+    std::os::unix::fs::symlink(dir.join("elsewhere"), dir.join("a/b/scene/out")).unwrap();
+    let scene = dir.join("a/b/scene/scene.pov");
     std::fs::write(&scene, "#fopen F \"link.txt\" read\n#read (F, S)\n").unwrap();
     let (output, _) = run(&["check", path(&scene)]);
     assert_scene_error(

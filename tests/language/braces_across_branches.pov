@@ -43,3 +43,18 @@ camera { location <0, 0, -5> look_at 0 }
 // A block whose keyword a branch chose (LDView writes `material` or `texture` by version).
 #declare Chosen = sphere { 0, 1 #if (version >= 3.1) material #else texture #end { texture { pigment { rgb <1, 0, 0> } } } }
 Check((abs(max_extent(Chosen).x - 1) < 1e-6), "the branch chose the block's keyword")
+
+// rand() in the file's text draws when it is read, before the directives after it (a
+// Truchet tiling drew each tile's rotations after all the tiles' choices; povray: R2 is the
+// third number of seed 15, the object drew the first two).
+#declare S15 = seed(15);
+#declare First = rand(S15);
+#declare Second = rand(S15);
+#declare Third = rand(S15);
+#declare R = seed(15);
+#switch (1)
+  #case (1) object { Pair #break
+#end
+  rotate x*90*rand(R) rotate y*90*rand(R) }
+#declare R2 = rand(R);
+Check((R2 = Third), "the object's two rand() calls drew before the #declare after it")

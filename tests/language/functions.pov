@@ -34,3 +34,13 @@ Check(Found, "#ifdef on an assigned element")
 #ifdef (A[0]) #error "#ifdef on an unassigned element" #end
 // Comparisons: <= and >= accept differences below 1e-10, like =; < and > do not.
 Check(((1 + 1e-11) <= 1 & 1 >= (1 + 1e-11) & (1 + 1e-11) = 1 & 1 < (1 + 1e-11)), "comparison epsilon")
+
+// A function body that is a macro call expanding to a pigment is a pigment function, as
+// `function { pigment { .. } }` (t-o-k's Gaussian_Blur.inc: `function { BlurPigment(..) }`).
+#macro Half_Red_Pigment(Amount) pigment { rgb <Amount, 0.25, 0> } #end
+#declare Pigment_From_Macro = function { Half_Red_Pigment(0.5) }
+#if (abs(Pigment_From_Macro(0, 0, 0).red - 0.5) > 1e-6 | abs(Pigment_From_Macro(0, 0, 0).green - 0.25) > 1e-6)
+  #error "function { Macro() } with a pigment-valued macro"
+#end
+#declare Constant_Two = function { 1 + 1 }
+#if (Constant_Two(0, 0, 0) != 2) #error "a constant function body" #end

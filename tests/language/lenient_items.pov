@@ -92,3 +92,13 @@ Check((Pair.blue = 0), "`rgb <r, g>` has blue 0")
 #declare LampUnion = union { light_source { <0, 3, 0> rgb 1 } sphere { 0, 0.5 } }
 // (povray gives such a union infinite extents and refuses it to `inside`, so it is only placed.)
 light_source { LampUnion translate 2*x }
+
+// `no_bump_scale` written in the texture itself (after the normal and its scale, as
+// POV-Ray-Object-Collection's GameSprites write it) is read, as POV-Ray reads it.
+#declare Walls = texture { pigment { rgb 0.5 } normal { bumps 0.3 scale 0.2 } scale 8 no_bump_scale }
+#declare WallsFirst = texture { no_bump_scale pigment { rgb 0.5 } normal { bumps 0.3 } scale 8 }
+sphere { 0, 1 texture { Walls } }
+
+// `cutaway_textures` after the children of a difference or an intersection.
+difference { sphere { 0, 1 pigment { rgb 1 } } box { 0, 2 } cutaway_textures }
+intersection { sphere { 0, 1 pigment { rgb 1 } } box { 0, 2 } cutaway_textures }

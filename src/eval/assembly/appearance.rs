@@ -26,6 +26,10 @@ impl Evaluator {
         let mut pattern_transform = Transform::IDENTITY;
         let mut average = false;
         let mut uv_mapping = false;
+        // `no_bump_scale` written in the texture itself, anywhere in it: POV-Ray takes it for
+        // the texture's normal (measured: `texture { no_bump_scale normal {..} scale 5 }`
+        // renders as `normal { .. no_bump_scale }`).
+        let mut no_bump_scale = None;
         // POV-Ray reads pigment, finish and normal identifiers written straight in the body
         // (`texture { P F N }`) only before any other item (measured: `texture { T P }` and
         // `texture { N P F }` render, `texture { scale 2 P }` is refused).
@@ -100,6 +104,7 @@ impl Evaluator {
                         texture.transform(&t);
                     }
                     "uv_mapping" => uv_mapping = true,
+                    "no_bump_scale" => no_bump_scale = Some(self.optional_bool(stream)?),
                     _ => return Err(self.unexpected_in(&item, "texture")),
                 },
                 Item::Block(block) => {
@@ -199,6 +204,13 @@ impl Evaluator {
                 map,
                 transform: pattern_transform,
             }));
+        }
+        if let Some(on) = no_bump_scale {
+            change_top_layer(&mut texture, |top| {
+                if let Some(normal) = &mut top.normal {
+                    normal.no_bump_scale = on;
+                }
+            });
         }
         if uv_mapping {
             map_texture_by_uv(&mut texture);

@@ -136,6 +136,21 @@ impl Evaluator {
         }
         let arity = parameters.len();
         let mut names = parameters;
+        if !self.reads_parameters(body, &names) {
+            // A body that does not read the parameters is evaluated once; a macro there may
+            // expand to a pigment (`function { BlurPigment(P, 0.1, 9) }`, where the macro's
+            // body is `pigment { average pigment_map { .. } }`), which POV-Ray takes as
+            // `function { pigment { .. } }`.
+            let value = self.eval_expr(body)?;
+            if let Value::Pigment(pigment) = value {
+                let pigment = Rc::unwrap_or_clone(pigment);
+                return Ok(Arc::new(Function::with_body(Body::Pigment(Box::new(
+                    pigment,
+                )))));
+            }
+            let root = Node::Constant(self.to_float(value, body.span())?);
+            return Ok(Arc::new(Function::new(root, arity)));
+        }
         let root = self.compile_expr(body, &mut names)?;
         Ok(Arc::new(Function::new(root, arity)))
     }

@@ -675,6 +675,14 @@ impl Runtime {
         self.scene_folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
         self.policy
             .allow(&self.scene_folder, true, Reach::Tree, "the scene's folder");
+        if let Some(project) = crate::file_policy::project_folder(&self.scene_folder) {
+            self.policy.allow(
+                &project,
+                false,
+                Reach::Tree,
+                "the scene's project: two folders up, read only",
+            );
+        }
         if let Some(output) = &self.options.output_folder {
             self.policy
                 .allow(output, true, Reach::Tree, "the output image's folder");

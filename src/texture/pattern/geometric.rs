@@ -198,7 +198,13 @@ pub fn triangular_block(point: DVec3) -> usize {
 /// `brick`: block 0 (mortar) or 1 (brick). Courses are `size.y` high with the mortar in the
 /// top `mortar` of each; odd courses shift the bricks half a length along x, even courses
 /// half a depth along z; the mortar lies at the far end of each brick along x and z.
+///
+/// POV-Ray evaluates the pattern 1e-10 further along each axis (measured: at x = -9e-11 it
+/// gives brick, at 0.9875 - 9e-11 with `brick_size 1 mortar 0.0125` mortar), so a face lying
+/// on a brick boundary, such as a box top at y = 0 under `rotate z*90` (which leaves x at
+/// about -1e-16 there), shows bricks rather than speckled mortar.
 pub fn brick_block(point: DVec3, size: DVec3, mortar: f64) -> usize {
+    let point = point + DVec3::splat(1e-10);
     let course = (point.y / size.y).floor();
     let in_course = point.y - course * size.y;
     let odd = course.rem_euclid(2.0) >= 1.0;

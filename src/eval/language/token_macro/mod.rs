@@ -141,6 +141,9 @@ pub(crate) struct TextMacroCache {
     expansions: HashMap<(String, OffsetMap), Rc<[Item]>>,
     /// Bytes of emitted text held in `expansions`.
     expansion_bytes: usize,
+    /// The `rand(...)` calls evaluated as they are met, parsed once per place in a file
+    /// (`None`: not a call that can be evaluated on its own).
+    eager: HashMap<(FileId, usize), Option<Rc<crate::syntax::ast::Expr>>>,
     /// Files included by text macros (read, never parsed whole), by path.
     included: HashMap<PathBuf, (FileId, Arc<str>)>,
 }
@@ -332,9 +335,84 @@ impl Evaluator {
                 TokenKind::Word if !run.sink.after_dot && self.is_macro_call(&run, token) => {
                     self.splice_call(&mut run, token)?
                 }
+                TokenKind::Word if !run.sink.after_dot && token.text(text) == "rand" => {
+                    if !self.eager_rand(&mut run, token)? {
+                        self.emit(&mut run, token)?
+                    }
+                }
                 _ => self.emit(&mut run, token)?,
             }
         }
+    }
+
+    /// Evaluates a `rand(...)` call met in a text body at once and emits a hidden name bound
+    /// to its number, as POV-Ray draws the number when it reads the call: left in the
+    /// emitted text, it would be drawn only when that text is run, after every directive that
+    /// followed it (a `#declare N = rand(S)` later in a loop would draw first and the
+    /// sequence would be dealt out in another order). Returns `false` (the call is emitted as
+    /// text) when a directive comes before its closing `)`.
+    fn eager_rand(&mut self, run: &mut TextRun, token: Token) -> EvalResult<bool> {
+        let mut depth = 0usize;
+        let mut position = token.end;
+        let mut end = None;
+        while let Some(next) = next_token(run.text, position) {
+            position = next.end;
+            if next.kind == TokenKind::Directive {
+                return Ok(false);
+            }
+            match next.text(run.text) {
+                "(" => depth += 1,
+                ")" if depth <= 1 => {
+                    end = Some(next.end);
+                    break;
+                }
+                ")" => depth -= 1,
+                _ if depth == 0 => return Ok(false),
+                _ => {}
+            }
+        }
+        let Some(end) = end else {
+            return Ok(false);
+        };
+        let key = (run.file, run.base + token.start);
+        let parsed = match self.runtime.text_macro_cache.eager.get(&key) {
+            Some(parsed) => parsed.clone(),
+            None => {
+                let text = &run.text[token.start..end];
+                let parsed = parse_prefix(Rule::expr, text, &run.map_from(token.start))
+                    .ok()
+                    .and_then(|(prefix, length)| match prefix {
+                        Prefix::Expr(expr) if length == text.len() => Some(Rc::new(expr)),
+                        _ => None,
+                    });
+                self.runtime
+                    .text_macro_cache
+                    .eager
+                    .insert(key, parsed.clone());
+                parsed
+            }
+        };
+        let Some(expr) = parsed else {
+            return Ok(false);
+        };
+        let value = self.eval_expr(&expr)?;
+        run.position = end;
+        let hidden: Rc<str> = Rc::from(format!("_text_{}", run.sink.hidden_names));
+        run.sink.hidden_names += 1;
+        self.runtime
+            .scopes
+            .insert(run.sink.bind_scope, Symbol::intern(&hidden), value);
+        run.sink.after_dot = false;
+        let source = run.span(token.start, end);
+        let Some(pending) = &mut run.sink.pending else {
+            run.sink.emitted.push(&hidden, source);
+            return self
+                .check_emitted_size(run.sink.emitted.text.len(), source)
+                .map(|()| true);
+        };
+        pending.emitted.push(&hidden, source);
+        pending.completed_by(&hidden);
+        Ok(true)
     }
 
     /// Refuses a directive met inside a collected macro call's arguments where POV-Ray's
