@@ -85,14 +85,7 @@ pub(super) fn unbalanced(text: &str, file: FileId, failed_at: usize) -> Option<D
                 }
             }
             b'#' => {
-                let rest = &text[i + 1..];
-                let trimmed = rest.trim_start_matches([' ', '\t']);
-                let skip = rest.len() - trimmed.len();
-                let word_len = trimmed
-                    .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-                    .unwrap_or(trimmed.len());
-                let word = &trimmed[..word_len];
-                let end = i + 1 + skip + word_len;
+                let (word, end) = super::directive_word(text, i);
                 match word {
                     "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro" => {
                         stack.push((b'#', i, end))

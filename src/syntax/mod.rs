@@ -166,14 +166,8 @@ pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
                 }
             }
             b'#' => {
-                let rest = &text[i + 1..];
-                let trimmed = rest.trim_start_matches([' ', '\t']);
-                let skip = rest.len() - trimmed.len();
-                let word_len = trimmed
-                    .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-                    .unwrap_or(trimmed.len());
-                let end = i + 1 + skip + word_len;
-                match &trimmed[..word_len] {
+                let (word, end) = directive_word(text, i);
+                match word {
                     "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro" => {
                         openers.push((i, end))
                     }
@@ -181,7 +175,7 @@ pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
                         openers.pop();
                     }
                     // `#ned`: a misspelt `#end` (POV-Ray skips the `#`, so it ends nothing).
-                    word if word_len > 0
+                    word if !word.is_empty()
                         && !tokens::DIRECTIVE_WORDS.contains(&word)
                         && crate::diag::suggest_name(word, ["end"]).is_some() =>
                     {
@@ -212,6 +206,18 @@ pub fn unterminated(text: &str, file: FileId) -> Option<Diagnostic> {
         }
         None => d.with_help("add `#end` where the directive's body ends"),
     })
+}
+
+/// The word after the `#` at byte `hash` of `text` (blanks after the `#` allowed) and the
+/// byte just past it.
+pub(crate) fn directive_word(text: &str, hash: usize) -> (&str, usize) {
+    let rest = &text[hash + 1..];
+    let trimmed = rest.trim_start_matches([' ', '\t']);
+    let skip = rest.len() - trimmed.len();
+    let word_len = trimmed
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .unwrap_or(trimmed.len());
+    (&trimmed[..word_len], hash + 1 + skip + word_len)
 }
 
 /// Skips the (nesting) `/* */` comment opening at `start`: the offset after it and whether
