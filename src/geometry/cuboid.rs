@@ -17,9 +17,11 @@ pub struct Cuboid {
 }
 
 impl Cuboid {
-    /// A box from two opposite corners in any order; `None` when a coordinate is not finite.
+    /// A box from two opposite corners in any order; `None` when a coordinate is not a
+    /// number. An infinite coordinate makes a box that runs on forever that way (POV-Ray
+    /// renders `box { <0, 0, 1>, <1, 1, 5/0> }`, whose corner is at infinity).
     pub fn new(corner1: DVec3, corner2: DVec3) -> Option<Cuboid> {
-        (corner1.is_finite() && corner2.is_finite()).then_some(Cuboid {
+        (!corner1.is_nan() && !corner2.is_nan()).then_some(Cuboid {
             min: corner1.min(corner2),
             max: corner1.max(corner2),
         })
@@ -27,10 +29,21 @@ impl Cuboid {
 
     /// The same box after a map that only scales and translates each axis (diagonal matrix).
     pub fn scaled_and_moved(&self, map: &DAffine3) -> Option<Cuboid> {
+        // Axis by axis, so that an infinite corner meets no zero off the diagonal.
+        let scale = DVec3::new(
+            map.matrix3.x_axis.x,
+            map.matrix3.y_axis.y,
+            map.matrix3.z_axis.z,
+        );
         Cuboid::new(
-            map.transform_point3(self.min),
-            map.transform_point3(self.max),
+            self.min * scale + map.translation,
+            self.max * scale + map.translation,
         )
+    }
+
+    /// Whether every corner coordinate is finite.
+    pub fn is_finite(&self) -> bool {
+        self.min.is_finite() && self.max.is_finite()
     }
 
     /// Pushes where the line enters and leaves the box.

@@ -426,7 +426,7 @@ impl LocalShape {
         match self {
             LocalShape::Empty => Some(Aabb::EMPTY),
             LocalShape::Sphere(shape) => Some(shape.bounds()),
-            LocalShape::Cuboid(shape) => Some(shape.bounds()),
+            LocalShape::Cuboid(shape) => shape.is_finite().then(|| shape.bounds()),
             LocalShape::Plane(_) | LocalShape::Quadric(_) | LocalShape::Poly(_) => None,
             LocalShape::Cone(shape) => Some(shape.bounds()),
             LocalShape::Torus(shape) => Some(shape.bounds()),

@@ -81,3 +81,14 @@ Check(abs(ModifiedSample.green - 0.8) < 1e-6 & abs(ModifiedSample.blue - 0.6) < 
 #declare OldMap = function { pigment { gradient x color_map { [0 red 1 green 0.5] [1 rgb <0, 0, 1> red 0.5] } } }
 #declare Halfway = OldMap(0.5, 0, 0);
 Check(abs(Halfway.red - 0.75) < 1e-6 & abs(Halfway.green - 0.25) < 1e-6 & abs(Halfway.blue - 0.5) < 1e-6, "old colours in a colour map")
+
+// Division by zero: POV-Ray warns and goes on with positive infinity, whatever the sign of
+// the numerator (measured: 5/0, -5/0, 0/0 and each component of <5,-5,0>/0 print inf).
+#declare DivZero = 0;
+#declare PosInf = 5/DivZero;
+Check(PosInf > 1e300 & -5/DivZero > 1e300 & 0/DivZero > 1e300, "x/0 is +infinity")
+#declare InfVector = <5, -5, 0>/DivZero;
+Check(InfVector.x > 1e300 & InfVector.y > 1e300 & InfVector.z > 1e300, "<..>/0 is +infinity")
+// Infinity minus infinity is no number: =, <= and >= then hold and != does not (measured).
+Check(PosInf = PosInf & PosInf <= PosInf & PosInf >= PosInf & !(PosInf != PosInf), "inf = inf")
+Check(!(PosInf = 5) & PosInf != 5 & !(PosInf < PosInf), "inf is no finite number")

@@ -295,10 +295,13 @@ impl Evaluator {
             let result = match op {
                 Less => x < y,
                 // POV-Ray's `<=` and `>=` accept a difference below the epsilon, like `=`.
-                LessEqual => x - y < EQUALITY_EPSILON,
-                Equal => (x - y).abs() < EQUALITY_EPSILON,
+                // A difference that is no number (infinity minus infinity) counts as equal,
+                // as in POV-Ray (measured: with K = 5/0, K = K, K <= K and K >= K are 1,
+                // K != K is 0).
+                LessEqual => (x - y).is_nan() || x - y < EQUALITY_EPSILON,
+                Equal => (x - y).is_nan() || (x - y).abs() < EQUALITY_EPSILON,
                 NotEqual => (x - y).abs() >= EQUALITY_EPSILON,
-                GreaterEqual => y - x < EQUALITY_EPSILON,
+                GreaterEqual => (y - x).is_nan() || y - x < EQUALITY_EPSILON,
                 Greater => x > y,
                 And => x != 0.0 && y != 0.0,
                 _ => x != 0.0 || y != 0.0,
@@ -322,10 +325,14 @@ impl Evaluator {
                 .with_label(format!("{} met {}", a.type_name(), b.type_name()))
                 .into());
         }
+        // Dividing by zero gives positive infinity whatever the numerator (POV-Ray warns
+        // "Divide by zero" and goes on; measured: 5/0, -5/0 and 0/0 all print inf, as do the
+        // components of <5,-5,0>/0).
         let apply = |x: f64, y: f64| match op {
             Add => x + y,
             Subtract => x - y,
             Multiply => x * y,
+            _ if y == 0.0 => f64::INFINITY,
             _ => x / y,
         };
         match (&a, &b) {
