@@ -8,6 +8,7 @@
 //! follows it in the array; the tree is at most [`MAX_DEPTH`] levels deep.
 
 use super::aabb::Aabb;
+use arrayvec::ArrayVec;
 use glam::DVec3;
 
 /// The deepest level the builder creates; deeper ranges become (large) leaves.
@@ -106,8 +107,9 @@ impl Bvh {
         let mut best = None;
         root.bounds
             .ray_entry(origin, inverse_direction, min_distance, closest)?;
-        let mut stack = [(0u32, 0.0f64); STACK_SIZE];
-        let mut stack_len = 0;
+        // Not zero-filled on every call (a plain array of this size was: 4-6% of a
+        // radiosity render's time, measured with perf on radiosity/cornell.pov).
+        let mut stack = ArrayVec::<(u32, f64), STACK_SIZE>::new();
         let mut current = 0usize;
         let mut tests = 0u64;
         let mut test = |position: usize, closest: f64| {
@@ -145,10 +147,8 @@ impl Bvh {
                         } else {
                             (right, left, left_entry)
                         };
-                        if stack_len < STACK_SIZE {
-                            stack[stack_len] = (far as u32, far_entry);
-                            stack_len += 1;
-                        }
+                        // Never full: the tree is at most MAX_DEPTH deep.
+                        let _ = stack.try_push((far as u32, far_entry));
                         next = Some(near);
                     }
                     (Some(_), None) => next = Some(left),
@@ -159,11 +159,9 @@ impl Bvh {
             current = match next {
                 Some(index) => index,
                 None => loop {
-                    if stack_len == 0 {
+                    let Some((index, entry)) = stack.pop() else {
                         break 'walk best;
-                    }
-                    stack_len -= 1;
-                    let (index, entry) = stack[stack_len];
+                    };
                     if entry < closest {
                         break index as usize;
                     }
@@ -215,8 +213,7 @@ impl Bvh {
         if !admit(root) {
             return false;
         }
-        let mut stack = [0u32; STACK_SIZE];
-        let mut stack_len = 0;
+        let mut stack = ArrayVec::<u32, STACK_SIZE>::new();
         let mut current = 0usize;
         loop {
             let node = &self.nodes[current];
@@ -232,9 +229,8 @@ impl Bvh {
                 let left = current + 1;
                 let right = node.first as usize;
                 let (take_left, take_right) = (admit(&self.nodes[left]), admit(&self.nodes[right]));
-                if take_left && take_right && stack_len < STACK_SIZE {
-                    stack[stack_len] = right as u32;
-                    stack_len += 1;
+                if take_left && take_right {
+                    let _ = stack.try_push(right as u32);
                 }
                 if take_left {
                     next = Some(left);
@@ -244,11 +240,10 @@ impl Bvh {
             }
             current = match next {
                 Some(index) => index,
-                None if stack_len == 0 => return false,
-                None => {
-                    stack_len -= 1;
-                    stack[stack_len] as usize
-                }
+                None => match stack.pop() {
+                    Some(index) => index as usize,
+                    None => return false,
+                },
             };
         }
     }
