@@ -23,6 +23,7 @@
 //! - area lights: see [`super::area_light`]; the diffuse and highlight directions are the
 //!   centre's unless `area_illumination` is on.
 
+use crate::math::power;
 use crate::geometry::World;
 use crate::scene::{Fog, LightPhotons, LightSource, Media, Scene, Spotlight};
 use glam::DVec3;
@@ -125,7 +126,7 @@ pub fn incoming(light: &LightSource, point: DVec3) -> Option<Incoming> {
 /// POV-Ray's distance attenuation `2 / (1 + (d / fade_distance)^fade_power)`.
 pub fn fade_factor(light: &LightSource, distance: f64) -> f64 {
     if light.fade_distance > 0.0 && light.fade_power > 0.0 {
-        2.0 / (1.0 + (distance / light.fade_distance).powf(light.fade_power))
+        2.0 / (1.0 + power(distance / light.fade_distance, light.fade_power))
     } else {
         1.0
     }
@@ -146,7 +147,7 @@ pub fn spotlight_factor(spot: &Spotlight, position: DVec3, to_light: DVec3) -> f
         return 0.0;
     }
     let tight = if spot.tightness != 0.0 {
-        cosine.max(0.0).powf(spot.tightness)
+        power(cosine.max(0.0), spot.tightness)
     } else {
         1.0
     };
@@ -174,7 +175,7 @@ pub fn cylinder_factor(spot: &Spotlight, position: DVec3, point: DVec3) -> f64 {
         return 0.0;
     }
     let mut factor = if spot.tightness != 0.0 {
-        (1.0 - from_axis / spot.falloff).powf(spot.tightness)
+        power(1.0 - from_axis / spot.falloff, spot.tightness)
     } else {
         1.0
     };
