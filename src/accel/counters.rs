@@ -56,22 +56,23 @@ impl Counts {
 }
 
 thread_local! {
-    static COUNTS: Cell<[u64; COUNTERS]> = const { Cell::new([0; COUNTERS]) };
+    /// One cell per counter, so that adding to one does not copy them all (a single
+    /// `Cell<[u64; N]>` copied the array out and back on every call).
+    static COUNTS: [Cell<u64>; COUNTERS] = const { [const { Cell::new(0) }; COUNTERS] };
 }
 
 /// Adds `amount` to the calling thread's `counter`.
 #[inline]
 pub fn add(counter: Counter, amount: u64) {
     COUNTS.with(|counts| {
-        let mut values = counts.get();
-        values[counter as usize] = values[counter as usize].wrapping_add(amount);
-        counts.set(values);
+        let cell = &counts[counter as usize];
+        cell.set(cell.get().wrapping_add(amount));
     });
 }
 
 /// The calling thread's counts since the last `take`, which starts them again from zero.
 pub fn take() -> Counts {
-    Counts(COUNTS.with(|counts| counts.replace([0; COUNTERS])))
+    Counts(COUNTS.with(|counts| std::array::from_fn(|index| counts[index].replace(0))))
 }
 
 #[cfg(test)]
