@@ -114,6 +114,27 @@ fn output_is_identical_for_any_thread_count() {
 }
 
 #[test]
+fn radiosity_renders_are_identical_on_one_two_and_seven_threads() {
+    // Three bounces, a pretrace whose gathers run in parallel batches and a final pass that
+    // stores samples: the written PNG files must be the same bytes on any thread count.
+    let scene = tests_folder().join("reference/radiosity_deep_reuse.pov");
+    let dir = scratch("radiosity-threads");
+    let mut images = Vec::new();
+    for threads in ["1", "2", "7"] {
+        let out = dir.join(format!("t{threads}.png"));
+        let status = durer()
+            .args(["render", path(&scene), "-o", path(&out)])
+            .args(["--width", "48", "--height", "36", "--threads", threads, "--quiet"])
+            .status()
+            .unwrap();
+        assert_eq!(status.code(), Some(0));
+        images.push(std::fs::read(out).unwrap());
+    }
+    assert_eq!(images[0], images[1], "1 and 2 threads differ");
+    assert_eq!(images[0], images[2], "1 and 7 threads differ");
+}
+
+#[test]
 fn antialiasing_options_render_deterministically() {
     let dir = scratch("antialias");
     let scene = dir.join("scene.pov");
