@@ -34,7 +34,10 @@ mod tests {
             for exponent in [0.5, 1.0, 2.0, 3.0, 10.0] {
                 let expected = f64::powf(base, exponent);
                 let got = power(base, exponent);
-                assert!((got - expected).abs() <= 1e-15 * expected.abs(), "{base} {exponent}");
+                assert!(
+                    (got - expected).abs() <= 1e-15 * expected.abs(),
+                    "{base} {exponent}"
+                );
             }
         }
     }

@@ -23,8 +23,8 @@
 //! - area lights: see [`super::area_light`]; the diffuse and highlight directions are the
 //!   centre's unless `area_illumination` is on.
 
-use crate::math::power;
 use crate::geometry::World;
+use crate::math::power;
 use crate::scene::{Fog, LightPhotons, LightSource, Media, Scene, Spotlight};
 use glam::DVec3;
 

@@ -124,7 +124,15 @@ fn radiosity_renders_are_identical_on_one_two_and_seven_threads() {
         let out = dir.join(format!("t{threads}.png"));
         let status = durer()
             .args(["render", path(&scene), "-o", path(&out)])
-            .args(["--width", "48", "--height", "36", "--threads", threads, "--quiet"])
+            .args([
+                "--width",
+                "48",
+                "--height",
+                "36",
+                "--threads",
+                threads,
+                "--quiet",
+            ])
             .status()
             .unwrap();
         assert_eq!(status.code(), Some(0));
