@@ -722,6 +722,16 @@ impl Leaf {
         self.material
     }
 
+    /// True when a hit on the leaf may show materials besides [`Leaf::material`] (a mesh
+    /// face's corner textures, a blob's component textures).
+    pub fn shows_other_materials(&self) -> bool {
+        match &self.shape {
+            LocalShape::MeshFace(_) => true,
+            LocalShape::Blob(blob) => blob.is_textured(),
+            _ => false,
+        }
+    }
+
     /// Pushes every crossing of the world ray (as ray parameters) into `roots`.
     #[inline]
     pub fn intersect(&self, ray: &Ray, roots: &mut Roots) {

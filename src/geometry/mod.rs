@@ -43,7 +43,7 @@ mod tests;
 
 pub use roots::MAX_ROOTS as MAX_CROSSINGS;
 pub use spindle::lemon_smallest_inner_radius;
-pub use world::World;
+pub use world::{ShadowQuery, World};
 
 use crate::{scene::Interior, texture::Texture};
 use glam::{DVec2, DVec3};

@@ -28,6 +28,20 @@ pub struct World {
     leaf_count: usize,
     /// Photon targets: bounds and material (see [`World::photon_targets`]).
     photon_targets: Vec<(Aabb, u32)>,
+    /// By material: a leaf hit showing it stops every shadow ray (it casts shadows and lets
+    /// no light through anywhere; see [`World::shadow_query`]).
+    blocks_shadows: Vec<bool>,
+}
+
+/// What a shadow ray meets first, as [`World::shadow_query`] answers.
+pub enum ShadowQuery {
+    /// Nothing between the limits.
+    Clear,
+    /// A surface that lets no light through, somewhere between the limits (not
+    /// necessarily the nearest one).
+    Blocked,
+    /// The nearest surface, which may let light through.
+    Hit(SurfaceHit),
 }
 
 /// The nearest hit found so far, before its normal is computed.
@@ -139,7 +153,10 @@ impl World {
         let (bvh, order) = Bvh::build(&bounds);
         drop(bounds);
         permute_in_place(&mut primitives, &order);
+        let blocks_shadows =
+            shadow_blocking_materials(&built.materials, primitives.iter().chain(&unbounded));
         World {
+            blocks_shadows,
             materials: built.materials,
             primitives,
             bvh,
@@ -237,6 +254,44 @@ impl World {
         })
     }
 
+    /// What a shadow ray from `ray.origin` meets between the limits, skipping `no_shadow`
+    /// objects: [`ShadowQuery::Blocked`] as soon as the search finds a surface that lets no
+    /// light through (in whatever order the hierarchy visits them: any such surface blacks
+    /// the light out), else the nearest surface as [`World::first_shadow_hit`] finds it.
+    /// Measured on radiosity/cornell.pov and a field of spheres: the same images, bit for
+    /// bit, as the nearest-hit search.
+    pub fn shadow_query(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> ShadowQuery {
+        let materials = &self.materials;
+        let skip = |material: u32| {
+            materials
+                .get(material as usize)
+                .is_some_and(|material| material.no_shadow)
+        };
+        let blocked = std::cell::Cell::new(false);
+        let blocking = |pending: &PendingHit| match pending {
+            PendingHit::Leaf(leaf, _) => self
+                .blocks_shadows
+                .get(leaf.material() as usize)
+                .copied()
+                .unwrap_or(false),
+            PendingHit::MeshTriangle(..) => false,
+        };
+        let found = self.search_until(ray, min_distance, max_distance, true, &skip, &|pending| {
+            let stop = blocking(pending);
+            if stop {
+                blocked.set(true);
+            }
+            stop
+        });
+        if blocked.get() {
+            return ShadowQuery::Blocked;
+        }
+        match found {
+            Some(hit) => ShadowQuery::Hit(hit),
+            None => ShadowQuery::Clear,
+        }
+    }
+
     /// Nearest hit like [`World::first_hit`], ignoring objects whose material `skip` rejects.
     pub fn first_hit_skipping(
         &self,
@@ -279,6 +334,20 @@ impl World {
         shadow: bool,
         skip: &impl Fn(u32) -> bool,
     ) -> Option<SurfaceHit> {
+        self.search_until(ray, min_distance, max_distance, shadow, skip, &|_| false)
+    }
+
+    /// [`World::search`] that ends as soon as a hit satisfies `stop` (returning nothing:
+    /// `stop` has seen it), visiting no further node.
+    fn search_until(
+        &self,
+        ray: &Ray,
+        min_distance: f64,
+        max_distance: f64,
+        shadow: bool,
+        skip: &impl Fn(u32) -> bool,
+        stop: &dyn Fn(&PendingHit) -> bool,
+    ) -> Option<SurfaceHit> {
         if !usable(ray, min_distance, max_distance) {
             return None;
         }
@@ -297,25 +366,41 @@ impl World {
                 shadow,
                 skip,
             ) {
+                if stop(&found.1) {
+                    return None;
+                }
                 closest = found.0;
                 best = Some(found);
             }
         }
+        let mut stopped = false;
         let from_bvh = self.bvh.nearest_hit(
             ray.origin,
             inverse_direction,
             min_distance,
             closest,
             |at, limit| {
-                self.primitives[at].nearest(
+                if stopped {
+                    return None;
+                }
+                let found = self.primitives[at].nearest(
                     ray,
                     inverse_direction,
                     (min_distance, limit),
                     shadow,
                     skip,
-                )
+                )?;
+                if stop(&found.1) {
+                    stopped = true;
+                    // The nearest possible distance: every node left is beyond it.
+                    return Some((min_distance.next_up(), found.1));
+                }
+                Some(found)
             },
         );
+        if stopped {
+            return None;
+        }
         finish(ray, from_bvh.or(best), &self.materials)
     }
 
@@ -359,6 +444,42 @@ impl World {
         }
         finish(ray, best, &self.materials)
     }
+}
+
+/// By material: whether a hit showing it stops a shadow ray outright. It must cast shadows and
+/// be opaque everywhere (both its textures); a material that leaves may show blended with
+/// others (mesh corner textures, blob component textures) never counts, as their hits'
+/// transparency comes from the blend.
+fn shadow_blocking_materials<'a>(
+    materials: &[Material],
+    primitives: impl Iterator<Item = &'a Primitive>,
+) -> Vec<bool> {
+    let mut blocks: Vec<bool> = materials
+        .iter()
+        .map(|material| {
+            !material.no_shadow
+                && material.texture.surely_opaque()
+                && material
+                    .interior_texture
+                    .as_ref()
+                    .is_none_or(|texture| texture.surely_opaque())
+        })
+        .collect();
+    let mut exclude = |leaf: &Leaf| {
+        if leaf.shows_other_materials() {
+            if let Some(flag) = blocks.get_mut(leaf.material() as usize) {
+                *flag = false;
+            }
+        }
+    };
+    for primitive in primitives {
+        match primitive {
+            Primitive::Leaf(leaf) => exclude(leaf),
+            Primitive::Csg(tree) => tree.leaves.iter().for_each(&mut exclude),
+            Primitive::Mesh(_) => {}
+        }
+    }
+    blocks
 }
 
 /// True when a query can be answered: finite ray, non-zero direction, non-empty range.

@@ -24,7 +24,7 @@ use super::extinction::transmittance;
 use super::lights::{Incoming, SceneLight};
 use super::optics::{interior_fade, transmission};
 use super::surface::surface_pigment;
-use crate::geometry::{Material, Ray, SurfaceHit, World};
+use crate::geometry::{Material, Ray, ShadowQuery, SurfaceHit, World};
 use crate::scene::LightPhotons;
 use crate::texture::normal::perturbed_normal;
 use crate::texture::pigment::hit_surface;
@@ -148,8 +148,12 @@ pub fn shadow_filter(
         let hit = match coincident {
             Some(hit) => hit,
             None => {
-                let Some(hit) = world.first_shadow_hit(&ray, start, distance) else {
-                    return filter;
+                // A surface letting no light through anywhere ends the search, whichever
+                // surfaces lie before it: the light is black past it.
+                let hit = match world.shadow_query(&ray, start, distance) {
+                    ShadowQuery::Clear => return filter,
+                    ShadowQuery::Blocked => return DVec3::ZERO,
+                    ShadowQuery::Hit(hit) => hit,
                 };
                 together.restart(start, hit.distance + SHADOW_EPSILON);
                 hit

@@ -312,7 +312,37 @@ impl<T> BlendMap<T> {
     }
 }
 
+impl Texture {
+    /// True when no point of the texture lets light through: a plain texture (not layered
+    /// or patterned) whose pigment is [`Pigment::surely_opaque`]. Shadow rays stop at the
+    /// first such surface they find, in any order (see `World::shadow_query`).
+    pub fn surely_opaque(&self) -> bool {
+        self.compound.is_none() && self.pigment.surely_opaque()
+    }
+}
+
 impl Pigment {
+    /// True when every colour the pigment can give has no filter and no transmit (image
+    /// maps, whose pixels may be transparent, never count).
+    pub fn surely_opaque(&self) -> bool {
+        let opaque = |colour: &Colour| colour.filter == 0.0 && colour.transmit == 0.0;
+        match self {
+            Pigment::Solid(colour) => opaque(colour),
+            Pigment::Pattern { map, .. } => match map {
+                PigmentMap::Colours(entries) => entries.iter().all(|(_, colour)| opaque(colour)),
+                PigmentMap::Blocks(blocks) => blocks.iter().all(Pigment::surely_opaque),
+                PigmentMap::Pigments(entries) => {
+                    entries.iter().all(|(_, pigment)| pigment.surely_opaque())
+                }
+            },
+            Pigment::Average { entries, .. } => {
+                entries.iter().all(|(_, pigment)| pigment.surely_opaque())
+            }
+            Pigment::Image { .. } => false,
+            Pigment::UvMapped(inner) => inner.surely_opaque(),
+        }
+    }
+
     /// Composes `t` into the pigment's pattern transform and those of every nested pigment.
     /// Uv-mapped pigments are left as they are, wherever they sit (measured: once the block
     /// that says `uv_mapping` is closed, POV-Ray applies no transformation to the pigment:
