@@ -102,3 +102,14 @@ sphere { 0, 1 texture { Walls } }
 // `cutaway_textures` after the children of a difference or an intersection.
 difference { sphere { 0, 1 pigment { rgb 1 } } box { 0, 2 } cutaway_textures }
 intersection { sphere { 0, 1 pigment { rgb 1 } } box { 0, 2 } cutaway_textures }
+
+// `looks_like` and `projected_through` read an `object { }` body: a declared object may be
+// followed by object modifiers (the light's later transformations move both objects with
+// it: reference scene light_projected_through_moved).
+#declare Bulb = sphere { 0, 0.25 }
+#declare Lamp = union {
+  sphere { 0, 0.1 }
+  light_source { <0, 2, 0>, rgb 1 looks_like { Bulb translate 0.5 * x } projected_through { Bulb scale 2 translate 2 * y } }
+  translate 3 * x
+}
+object { Lamp }
