@@ -85,6 +85,18 @@ Check(FromExtensionless, "the include without an extension read lenient_without_
 Check((Short.filter = 0 & abs(Short.blue - 0.2) < 1e-6), "`rgbf <r, g, b>` has filter 0")
 #declare Pair = rgb <1, 0.5>;
 Check((Pair.blue = 0), "`rgb <r, g>` has blue 0")
+// A longer one keeps its extra components (povray warns "Suspicious expression after rgb"):
+// `rgb <r, g, b, f, t>` has that filter and transmit, `rgbf` keeps a fifth as transmit,
+// `rgbt` takes the fourth as transmit and drops a fifth; a colour after `rgb` is all of it.
+#declare Long4 = rgb <0.1, 0.2, 0.3, 0.7>;
+Check((abs(Long4.filter - 0.7) < 1e-6 & Long4.transmit = 0), "`rgb <r, g, b, f>` keeps the filter")
+#declare Long5 = rgbf <0.1, 0.2, 0.3, 0.7, 0.8>;
+Check((abs(Long5.filter - 0.7) < 1e-6 & abs(Long5.transmit - 0.8) < 1e-6), "`rgbf` keeps a fifth as transmit")
+#declare LongT = rgbt <0.1, 0.2, 0.3, 0.7, 0.8>;
+Check((LongT.filter = 0 & abs(LongT.transmit - 0.7) < 1e-6), "`rgbt` takes the fourth as transmit")
+#declare Whole = rgbft <0.1, 0.2, 0.3, 0.4, 0.5>;
+#declare Again = rgb Whole;
+Check((abs(Again.filter - 0.4) < 1e-6 & abs(Again.transmit - 0.5) < 1e-6), "`rgb Colour` is the whole colour")
 // A second diffuse value without its comma (Blender's exporter writes `diffuse 0.8 0`).
 #declare Matte = finish { diffuse 0.8 0 ambient 0.1 }
 
