@@ -97,6 +97,18 @@ Check((LongT.filter = 0 & abs(LongT.transmit - 0.7) < 1e-6), "`rgbt` takes the f
 #declare Whole = rgbft <0.1, 0.2, 0.3, 0.4, 0.5>;
 #declare Again = rgb Whole;
 Check((abs(Again.filter - 0.4) < 1e-6 & abs(Again.transmit - 0.5) < 1e-6), "`rgb Colour` is the whole colour")
+// Colour components in a pigment modify a colour right before them; anywhere else (after a
+// pigment identifier, first in a pigment modifying a texture's) they start from black.
+#declare GreenP = pigment { rgb <0, 1, 0> }
+#declare Clear = pigment { GreenP transmit 0.5 }
+#declare ClearF = function { pigment { Clear } }
+#declare ClearC = ClearF(0, 0, 0);
+Check((ClearC.green = 0 & abs(ClearC.transmit - 0.5) < 1e-6), "`pigment { P transmit 0.5 }` is black with transmit 0.5")
+#declare NamedRed = rgb <1, 0, 0>;
+#declare Kept = pigment { NamedRed green 0.5 }
+#declare KeptF = function { pigment { Kept } }
+#declare KeptC = KeptF(0, 0, 0);
+Check((KeptC.red = 1 & abs(KeptC.green - 0.5) < 1e-6), "`pigment { Colour green 0.5 }` modifies that colour")
 // A second diffuse value without its comma (Blender's exporter writes `diffuse 0.8 0`).
 #declare Matte = finish { diffuse 0.8 0 ambient 0.1 }
 
