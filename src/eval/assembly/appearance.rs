@@ -386,7 +386,11 @@ impl Evaluator {
 
     /// A `pigment { .. }` block that modifies `base` (the pigment of the texture it is
     /// written in); a pattern or pigment named in it replaces `base`.
-    fn eval_pigment_from(&mut self, stream: &mut Stream, base: Pigment) -> EvalResult<Pigment> {
+    pub(crate) fn eval_pigment_from(
+        &mut self,
+        stream: &mut Stream,
+        base: Pigment,
+    ) -> EvalResult<Pigment> {
         let mut pigment = base;
         let mut colour_map: Option<Vec<(f64, Colour)>> = None;
         let mut average = false;
