@@ -22,8 +22,8 @@ use super::area_light::AreaArray;
 use super::atmosphere::fog_transmittance;
 use super::extinction::transmittance;
 use super::lights::{Incoming, SceneLight};
-use super::optics::{interior_fade, transmission};
-use super::surface::surface_pigment;
+use super::optics::interior_fade;
+use super::surface::surface_transmission;
 use crate::geometry::{Material, Ray, ShadowQuery, SurfaceHit, World};
 use crate::scene::LightPhotons;
 use crate::texture::normal::perturbed_normal;
@@ -297,7 +297,7 @@ fn hit_transmission(world: &World, hit: &SurfaceHit, direction: DVec3) -> DVec3 
             .get(material as usize)
             .map_or(DVec3::ZERO, |material| {
                 let texture = material.texture_facing(direction, hit.normal);
-                transmission(surface_pigment(texture, hit, &surface))
+                surface_transmission(texture, hit, &surface)
             })
     };
     match &hit.blend {

@@ -67,8 +67,9 @@ impl LightSource {
         }
     }
 
-    /// The light moved by `t`: its position, aim, area axes and `looks_like` shape; a
-    /// `projected_through` object stays where it was written.
+    /// The light moved by `t`: its position, aim, area axes, `looks_like` shape and
+    /// `projected_through` object (a lamp union placed twice lights through each copy's
+    /// shade, as povray renders it).
     pub fn transformed(&self, t: &Transform) -> LightSource {
         let mut light = self.clone();
         light.position = t.point_to_outer(light.position);
@@ -85,6 +86,9 @@ impl LightSource {
         if let Some(object) = &mut light.looks_like {
             let object = Arc::make_mut(object);
             object.transform_by(t);
+        }
+        if let Some(object) = &mut light.projected_through {
+            Arc::make_mut(object).transform_by(t);
         }
         light
     }

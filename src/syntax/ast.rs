@@ -248,6 +248,22 @@ pub enum ColourType {
     Srgbft,
 }
 
+impl ColourType {
+    /// The keyword as written in a scene.
+    pub fn keyword(self) -> &'static str {
+        match self {
+            ColourType::Rgb => "rgb",
+            ColourType::Rgbf => "rgbf",
+            ColourType::Rgbt => "rgbt",
+            ColourType::Rgbft => "rgbft",
+            ColourType::Srgb => "srgb",
+            ColourType::Srgbf => "srgbf",
+            ColourType::Srgbt => "srgbt",
+            ColourType::Srgbft => "srgbft",
+        }
+    }
+}
+
 /// A colour component keyword.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ColourComponent {

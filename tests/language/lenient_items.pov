@@ -85,6 +85,30 @@ Check(FromExtensionless, "the include without an extension read lenient_without_
 Check((Short.filter = 0 & abs(Short.blue - 0.2) < 1e-6), "`rgbf <r, g, b>` has filter 0")
 #declare Pair = rgb <1, 0.5>;
 Check((Pair.blue = 0), "`rgb <r, g>` has blue 0")
+// A longer one keeps its extra components (povray warns "Suspicious expression after rgb"):
+// `rgb <r, g, b, f, t>` has that filter and transmit, `rgbf` keeps a fifth as transmit,
+// `rgbt` takes the fourth as transmit and drops a fifth; a colour after `rgb` is all of it.
+#declare Long4 = rgb <0.1, 0.2, 0.3, 0.7>;
+Check((abs(Long4.filter - 0.7) < 1e-6 & Long4.transmit = 0), "`rgb <r, g, b, f>` keeps the filter")
+#declare Long5 = rgbf <0.1, 0.2, 0.3, 0.7, 0.8>;
+Check((abs(Long5.filter - 0.7) < 1e-6 & abs(Long5.transmit - 0.8) < 1e-6), "`rgbf` keeps a fifth as transmit")
+#declare LongT = rgbt <0.1, 0.2, 0.3, 0.7, 0.8>;
+Check((LongT.filter = 0 & abs(LongT.transmit - 0.7) < 1e-6), "`rgbt` takes the fourth as transmit")
+#declare Whole = rgbft <0.1, 0.2, 0.3, 0.4, 0.5>;
+#declare Again = rgb Whole;
+Check((abs(Again.filter - 0.4) < 1e-6 & abs(Again.transmit - 0.5) < 1e-6), "`rgb Colour` is the whole colour")
+// Colour components in a pigment modify a colour right before them; anywhere else (after a
+// pigment identifier, first in a pigment modifying a texture's) they start from black.
+#declare GreenP = pigment { rgb <0, 1, 0> }
+#declare Clear = pigment { GreenP transmit 0.5 }
+#declare ClearF = function { pigment { Clear } }
+#declare ClearC = ClearF(0, 0, 0);
+Check((ClearC.green = 0 & abs(ClearC.transmit - 0.5) < 1e-6), "`pigment { P transmit 0.5 }` is black with transmit 0.5")
+#declare NamedRed = rgb <1, 0, 0>;
+#declare Kept = pigment { NamedRed green 0.5 }
+#declare KeptF = function { pigment { Kept } }
+#declare KeptC = KeptF(0, 0, 0);
+Check((KeptC.red = 1 & abs(KeptC.green - 0.5) < 1e-6), "`pigment { Colour green 0.5 }` modifies that colour")
 // A second diffuse value without its comma (Blender's exporter writes `diffuse 0.8 0`).
 #declare Matte = finish { diffuse 0.8 0 ambient 0.1 }
 
@@ -102,3 +126,14 @@ sphere { 0, 1 texture { Walls } }
 // `cutaway_textures` after the children of a difference or an intersection.
 difference { sphere { 0, 1 pigment { rgb 1 } } box { 0, 2 } cutaway_textures }
 intersection { sphere { 0, 1 pigment { rgb 1 } } box { 0, 2 } cutaway_textures }
+
+// `looks_like` and `projected_through` read an `object { }` body: a declared object may be
+// followed by object modifiers (the light's later transformations move both objects with
+// it: reference scene light_projected_through_moved).
+#declare Bulb = sphere { 0, 0.25 }
+#declare Lamp = union {
+  sphere { 0, 0.1 }
+  light_source { <0, 2, 0>, rgb 1 looks_like { Bulb translate 0.5 * x } projected_through { Bulb scale 2 translate 2 * y } }
+  translate 3 * x
+}
+object { Lamp }

@@ -386,7 +386,11 @@ impl Evaluator {
 
     /// A `pigment { .. }` block that modifies `base` (the pigment of the texture it is
     /// written in); a pattern or pigment named in it replaces `base`.
-    fn eval_pigment_from(&mut self, stream: &mut Stream, base: Pigment) -> EvalResult<Pigment> {
+    pub(crate) fn eval_pigment_from(
+        &mut self,
+        stream: &mut Stream,
+        base: Pigment,
+    ) -> EvalResult<Pigment> {
         let mut pigment = base;
         let mut colour_map: Option<Vec<(f64, Colour)>> = None;
         let mut average = false;
@@ -395,7 +399,17 @@ impl Evaluator {
         // A uv-mapped pigment named here takes no transformation (POV-Ray: only those in
         // the block that says `uv_mapping` apply).
         let mut sealed_uv = false;
+        // Whether the item before (commas aside) was a colour: components after one modify
+        // it (`pigment { Red green 0.5 }`); anywhere else they start a colour of their own
+        // from black, as povray reads them (measured: `texture { T pigment { transmit 0.5
+        // } }` and `pigment { P_ident transmit 0.5 }` are black with transmit 0.5, not
+        // T's or P's colour made transparent).
+        let mut colour_before = false;
         while let Some(item) = self.next_item(stream)? {
+            let after_colour = std::mem::replace(&mut colour_before, false);
+            if matches!(item, Item::Comma(_)) {
+                colour_before = after_colour;
+            }
             // `uv_mapping` and a first pigment identifier (`pigment { P bozo .. }`) may
             // precede the pattern; nothing else may (POV-Ray).
             let earlier = match &item {
@@ -530,7 +544,11 @@ impl Evaluator {
                         // (`red 1`, which the grammar reads as a colour, is handled below).
                         let amount = self.expect_float(stream, "a float")?;
                         if let Pigment::Solid(colour) = &mut pigment {
+                            if !after_colour {
+                                *colour = Colour::BLACK;
+                            }
                             set_colour_component(colour, word, amount);
+                            colour_before = true;
                         }
                     }
                     "quick_color" | "quick_colour" => {
@@ -560,7 +578,11 @@ impl Evaluator {
                 // `pigment { Red green 0.5 }`: components alone modify the colour.
                 Item::Expr(Expr::Colour(literal)) if literal.is_components_only() => {
                     if let Pigment::Solid(colour) = &mut pigment {
+                        if !after_colour {
+                            *colour = Colour::BLACK;
+                        }
                         self.apply_colour_components(colour, literal)?;
+                        colour_before = true;
                     }
                 }
                 Item::Expr(expr) => match self.eval_expr(expr)? {
@@ -573,7 +595,8 @@ impl Evaluator {
                         }
                     }
                     value @ (Value::Colour(_) | Value::Float(_) | Value::Vector(_)) => {
-                        pigment = Pigment::Solid(self.to_colour(value, expr.span())?)
+                        pigment = Pigment::Solid(self.to_colour(value, expr.span())?);
+                        colour_before = true;
                     }
                     // `pigment { function { .. } color_map { .. } }`: a function pattern.
                     Value::Function(literal) => {

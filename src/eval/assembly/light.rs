@@ -143,7 +143,15 @@ impl Evaluator {
                         self.eval_light_photons(&mut body, &mut light.photons)?;
                     }
                     BlockHead::Word(w) if &**w == "projected_through" => {
-                        let object = self.single_object(block, "projected_through")?;
+                        let mut object = self.single_object(block, "projected_through")?;
+                        // Only the shape matters; povray warns and drops a texture.
+                        if object.texture.take().is_some() {
+                            self.runtime.warn(
+                                block.head_span,
+                                "a `projected_through` object cannot have a texture; it is \
+                                 removed",
+                            );
+                        }
                         light.projected_through = Some(Arc::new(object));
                     }
                     _ => match self.eval_block(block)? {
@@ -248,6 +256,14 @@ impl Evaluator {
     /// The one object in a `looks_like { .. }` or `projected_through { .. }` block.
     fn single_object(&mut self, block: &Block, word: &str) -> EvalResult<Object> {
         let mut body = Stream::new(block.body.clone());
+        // `looks_like { Lamp_Ident translate T }`, `projected_through { Shade scale 2 }`:
+        // povray reads the block as an `object { .. }` body, so a declared object may be
+        // followed by object modifiers (measured).
+        if self.starts_with_declared_object(&mut body)? {
+            if let Some(object) = self.eval_object("object", block, &mut body)? {
+                return Ok(object);
+            }
+        }
         let mut found = None;
         while let Some(item) = self.next_item(&mut body)? {
             match &item {
@@ -270,8 +286,8 @@ impl Evaluator {
     }
 }
 
-/// Moves a light (and its aim, area axes and `looks_like` object) by `t`; a
-/// `projected_through` object stays where it was written.
+/// Moves a light (and its aim, area axes, `looks_like` and `projected_through` objects)
+/// by `t`.
 fn transform_light(light: &mut LightSource, spot: &mut Spotlight, t: &Transform) {
     light.position = t.point_to_outer(light.position);
     spot.point_at = t.point_to_outer(spot.point_at);
@@ -280,6 +296,12 @@ fn transform_light(light: &mut LightSource, spot: &mut Spotlight, t: &Transform)
         area.axis2 = t.vector_to_outer(area.axis2);
     }
     if let Some(object) = &mut light.looks_like {
+        apply_transform(Arc::make_mut(object), t);
+    }
+    // The `projected_through` object moves with the light too, when it was given before
+    // the transformation, as povray renders it (`light_source { .. projected_through
+    // { A } translate T }` lights through A moved by T).
+    if let Some(object) = &mut light.projected_through {
         apply_transform(Arc::make_mut(object), t);
     }
 }

@@ -1,7 +1,7 @@
 //! Objects: shapes, CSG, `object { Ident }`, and the modifiers and transformations that
 //! apply to them.
 
-use super::texture_maps::{change_top_layer, layered, top_layer_finish};
+use super::texture_maps::{change_top_layer, layered, top_layer, top_layer_finish};
 use crate::diag::Span;
 use crate::eval::language::stream::Stream;
 use crate::eval::language::value::{MaterialValue, Value};
@@ -411,6 +411,22 @@ impl Evaluator {
                     }
                     if &**w == "clipped_by" || &**w == "bounded_by" {
                         return self.eval_clip_or_bound(object, w, block);
+                    }
+                    // `object { O pigment { scale 2 } }`: a pigment given to an object that
+                    // has a texture modifies that texture's (its top layer's), as povray
+                    // renders it (measured: the pattern keeps its map and transformations, and
+                    // a new pattern keeps the old one's transformations, as in `texture { T
+                    // pigment { .. } }`), evaluated where the object stands.
+                    if &**w == "pigment" && object.texture.is_some() && !*uv_mapping {
+                        let mut texture = self.object_texture(object);
+                        let mut base = top_layer(&texture).pigment.clone();
+                        base.transform(object.transform());
+                        let mut body = Stream::new(block.body.clone());
+                        let mut pigment = self.eval_pigment_from(&mut body, base)?;
+                        pigment.transform(&object.transform().inverse());
+                        change_top_layer(&mut texture, |top| top.pigment = pigment);
+                        object.texture = Some(Arc::new(texture));
+                        return Ok(());
                     }
                     if &**w == "finish" {
                         let mut texture = self.object_texture(object);

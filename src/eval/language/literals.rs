@@ -25,17 +25,18 @@ impl Evaluator {
                             | ColourType::Srgbt
                             | ColourType::Srgbft
                     );
-                    let c: [f64; 5] = match value {
-                        Value::Float(f) => [f, f, f, f, f],
+                    // How many components the value brings: a colour always has five.
+                    let (c, given): ([f64; 5], usize) = match value {
+                        Value::Float(f) => ([f, f, f, f, f], 1),
                         // A shorter vector has its missing components 0, as povray reads
                         // `rgbf <r, g, b>` and `rgb <r, g>` (measured, no warning).
                         Value::Vector(v) => {
                             let mut components = [0.0; 5];
                             let given = (v.len as usize).min(5);
                             components[..given].copy_from_slice(&v.components[..given]);
-                            components
+                            (components, given)
                         }
-                        Value::Colour(c) => c.to_array(),
+                        Value::Colour(c) => (c.to_array(), 5),
                         other => {
                             return Err(self
                                 .runtime
@@ -46,15 +47,48 @@ impl Evaluator {
                                 .into())
                         }
                     };
+                    // More components than the keyword names are kept, not dropped, as
+                    // povray reads them (measured with `vstr`): `rgb <r, g, b, f, t>` has
+                    // that filter and transmit, `rgbf` keeps the fifth as transmit, `rgbt`
+                    // takes the fourth as transmit and drops the fifth; povray warns
+                    // "Suspicious expression after rgb", and so does durer.
+                    let needed = match kind {
+                        ColourType::Rgb | ColourType::Srgb => 3,
+                        ColourType::Rgbf
+                        | ColourType::Srgbf
+                        | ColourType::Rgbt
+                        | ColourType::Srgbt => 4,
+                        ColourType::Rgbft | ColourType::Srgbft => 5,
+                    };
+                    if given > needed {
+                        self.runtime.warn(
+                            span,
+                            format!(
+                                "suspicious expression after `{}`: {given} components where \
+                                 {needed} are expected",
+                                kind.keyword()
+                            ),
+                        );
+                    }
                     let mut result = Colour::rgb(c[0], c[1], c[2]);
                     match kind {
-                        ColourType::Rgbf | ColourType::Srgbf => result.filter = c[3],
                         ColourType::Rgbt | ColourType::Srgbt => result.transmit = c[3],
+                        ColourType::Rgb | ColourType::Srgb => {
+                            if given > 3 {
+                                result.filter = c[3];
+                                result.transmit = c[4];
+                            }
+                        }
+                        ColourType::Rgbf | ColourType::Srgbf => {
+                            result.filter = c[3];
+                            if given > 4 {
+                                result.transmit = c[4];
+                            }
+                        }
                         ColourType::Rgbft | ColourType::Srgbft => {
                             result.filter = c[3];
                             result.transmit = c[4];
                         }
-                        _ => {}
                     }
                     if srgb {
                         result.red = srgb_to_linear(result.red);
