@@ -91,11 +91,30 @@ impl InsideQuadric {
         if !self.is_axis_aligned() {
             return Some((min, max));
         }
+        // A square term that is rounding noise (a paraboloid turned 180 degrees keeps a y²
+        // of 6e-34 beside its 0.04) counts as none when positive: dropping a positive term
+        // only loosens the inequality, where dividing by it lost the bound to cancellation
+        // (POV-Ray's arches.pov lost the top of its arches). A negative one is kept: it
+        // already cuts nothing.
+        let largest = self
+            .squares
+            .x_axis
+            .x
+            .abs()
+            .max(self.squares.y_axis.y.abs())
+            .max(self.squares.z_axis.z.abs());
         let square = [
             self.squares.x_axis.x,
             self.squares.y_axis.y,
             self.squares.z_axis.z,
-        ];
+        ]
+        .map(|a| {
+            if a > 0.0 && a <= 1e-12 * largest {
+                0.0
+            } else {
+                a
+            }
+        });
         let half_linear = self.half_linear.to_array();
         for axis in 0..3 {
             // The least the other axes' terms can add.
@@ -198,6 +217,26 @@ mod tests {
         let reach = (1.0f64 + 5.5 * 5.5).sqrt();
         assert!((region.0.y - 2.5).abs() < 1e-6 && (region.1.y - 5.5).abs() < 1e-6);
         assert!((region.1.x - reach).abs() < 1e-6 && (region.0.z + reach).abs() < 1e-6);
+    }
+
+    #[test]
+    fn a_paraboloid_turned_upside_down_keeps_its_top() {
+        // shapes.inc's Paraboloid_Y (x² + z² − y < 0) scaled <20, 20, 5>, rotated 180 degrees
+        // about x and moved to y = 30, as in POV-Ray's arches.pov: its inside reaches up to
+        // y = 30 (the rotation leaves a y² term of rounding noise behind).
+        let place = DAffine3::from_translation(DVec3::new(0.0, 30.0, -25.0))
+            * DAffine3::from_rotation_x(std::f64::consts::PI)
+            * DAffine3::from_scale(DVec3::new(20.0, 20.0, 5.0));
+        let paraboloid = InsideQuadric::from_local(
+            [1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0],
+            &place.inverse(),
+            false,
+        )
+        .unwrap();
+        let (min, max) = paraboloid.tighten(EVERYWHERE).unwrap();
+        let top = DVec3::new(0.0, 29.9, -25.0);
+        assert!(top.cmpge(min).all() && top.cmple(max).all(), "{min} {max}");
+        assert!((max.y - 30.0).abs() < 1e-6, "{}", max.y);
     }
 
     #[test]
