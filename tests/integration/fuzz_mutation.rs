@@ -522,7 +522,12 @@ fn run_one(
     let output = dir.join("case.png");
     let output_arg = output.to_str().expect("utf-8 path");
     let render = rng.chance(3);
-    let args: Vec<&str> = if render {
+    // Every case must end, within the limits: a tenth of the default object and iteration
+    // limits keeps each one short (a loop turned endless by a mutated bound reached the
+    // default 5,000,000 objects in 16 s on a loaded 2-core machine, past the 20 s budget
+    // when tests share the machine).
+    let limits = ["--limit", "objects=500000", "--limit", "iterations=1000000"];
+    let mut args: Vec<&str> = if render {
         tally.renders += 1;
         vec![
             "render",
@@ -545,6 +550,7 @@ fn run_one(
             "check", scene_arg, "-L", library, "--width", "8", "--height", "6",
         ]
     };
+    args.extend(limits);
     let start = Instant::now();
     let (verdict, stderr) = run_case(&args, Duration::from_secs(20));
     tally.slowest = tally.slowest.max(start.elapsed());
