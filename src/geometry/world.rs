@@ -33,7 +33,8 @@ pub struct World {
     blocks_shadows: Vec<bool>,
 }
 
-/// What a shadow ray meets first, as [`World::shadow_query`] answers.
+/// What a shadow ray meets first, as [`World::shadow_query`] answers (and what every search
+/// finds, where only shadow rays stop early).
 pub enum ShadowQuery {
     /// Nothing between the limits.
     Clear,
@@ -42,6 +43,16 @@ pub enum ShadowQuery {
     Blocked,
     /// The nearest surface, which may let light through.
     Hit(SurfaceHit),
+}
+
+impl ShadowQuery {
+    /// The surface found, if any (a search that cannot stop early is never `Blocked`).
+    fn hit(self) -> Option<SurfaceHit> {
+        match self {
+            ShadowQuery::Hit(hit) => Some(hit),
+            ShadowQuery::Clear | ShadowQuery::Blocked => None,
+        }
+    }
 }
 
 /// The nearest hit found so far, before its normal is computed.
@@ -223,7 +234,10 @@ impl World {
 
     /// Nearest hit with `min_distance < distance < max_distance`.
     pub fn first_hit(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> Option<SurfaceHit> {
-        self.search(ray, min_distance, max_distance, false, &|_| false)
+        self.search(ray, min_distance, max_distance, false, &|_| false, &|_| {
+            false
+        })
+        .hit()
     }
 
     /// Nearest hit like [`World::first_hit`], ignoring objects marked `no_shadow`.
@@ -245,13 +259,16 @@ impl World {
         max_distance: f64,
         skip: &impl Fn(u32) -> bool,
     ) -> Option<SurfaceHit> {
-        let materials = &self.materials;
-        self.search(ray, min_distance, max_distance, true, &|material: u32| {
-            skip(material)
-                || materials
-                    .get(material as usize)
-                    .is_some_and(|material| material.no_shadow)
-        })
+        let skip = |material: u32| skip(material) || self.casts_no_shadow(material);
+        self.search(ray, min_distance, max_distance, true, &skip, &|_| false)
+            .hit()
+    }
+
+    /// Whether objects of `material` are left out of shadow rays (`no_shadow`).
+    fn casts_no_shadow(&self, material: u32) -> bool {
+        self.materials
+            .get(material as usize)
+            .is_some_and(|material| material.no_shadow)
     }
 
     /// What a shadow ray from `ray.origin` meets between the limits, skipping `no_shadow`
@@ -261,13 +278,6 @@ impl World {
     /// Measured on radiosity/cornell.pov and a field of spheres: the same images, bit for
     /// bit, as the nearest-hit search.
     pub fn shadow_query(&self, ray: &Ray, min_distance: f64, max_distance: f64) -> ShadowQuery {
-        let materials = &self.materials;
-        let skip = |material: u32| {
-            materials
-                .get(material as usize)
-                .is_some_and(|material| material.no_shadow)
-        };
-        let blocked = std::cell::Cell::new(false);
         let blocking = |pending: &PendingHit| match pending {
             PendingHit::Leaf(leaf, _) => self
                 .blocks_shadows
@@ -276,20 +286,8 @@ impl World {
                 .unwrap_or(false),
             PendingHit::MeshTriangle(..) => false,
         };
-        let found = self.search_until(ray, min_distance, max_distance, true, &skip, &|pending| {
-            let stop = blocking(pending);
-            if stop {
-                blocked.set(true);
-            }
-            stop
-        });
-        if blocked.get() {
-            return ShadowQuery::Blocked;
-        }
-        match found {
-            Some(hit) => ShadowQuery::Hit(hit),
-            None => ShadowQuery::Clear,
-        }
+        let skip = |material: u32| self.casts_no_shadow(material);
+        self.search(ray, min_distance, max_distance, true, &skip, &blocking)
     }
 
     /// Nearest hit like [`World::first_hit`], ignoring objects whose material `skip` rejects.
@@ -300,7 +298,8 @@ impl World {
         max_distance: f64,
         skip: &impl Fn(u32) -> bool,
     ) -> Option<SurfaceHit> {
-        self.search(ray, min_distance, max_distance, false, skip)
+        self.search(ray, min_distance, max_distance, false, skip, &|_| false)
+            .hit()
     }
 
     /// Number of leaf primitives (shapes), counting every CSG child.
@@ -325,7 +324,8 @@ impl World {
     }
 
     /// The nearest hit, skipping leaves for which `skip` is true; `shadow` rays ignore
-    /// `bounded_by` boxes.
+    /// `bounded_by` boxes. The search ends as soon as a hit satisfies `stop`
+    /// ([`ShadowQuery::Blocked`]), visiting no further node.
     fn search(
         &self,
         ray: &Ray,
@@ -333,23 +333,10 @@ impl World {
         max_distance: f64,
         shadow: bool,
         skip: &impl Fn(u32) -> bool,
-    ) -> Option<SurfaceHit> {
-        self.search_until(ray, min_distance, max_distance, shadow, skip, &|_| false)
-    }
-
-    /// [`World::search`] that ends as soon as a hit satisfies `stop` (returning nothing:
-    /// `stop` has seen it), visiting no further node.
-    fn search_until(
-        &self,
-        ray: &Ray,
-        min_distance: f64,
-        max_distance: f64,
-        shadow: bool,
-        skip: &impl Fn(u32) -> bool,
-        stop: &dyn Fn(&PendingHit) -> bool,
-    ) -> Option<SurfaceHit> {
+        stop: &impl Fn(&PendingHit) -> bool,
+    ) -> ShadowQuery {
         if !usable(ray, min_distance, max_distance) {
-            return None;
+            return ShadowQuery::Clear;
         }
         let inverse_direction = DVec3::ONE / ray.direction;
         let mut closest = max_distance;
@@ -367,7 +354,7 @@ impl World {
                 skip,
             ) {
                 if stop(&found.1) {
-                    return None;
+                    return ShadowQuery::Blocked;
                 }
                 closest = found.0;
                 best = Some(found);
@@ -399,9 +386,12 @@ impl World {
             },
         );
         if stopped {
-            return None;
+            return ShadowQuery::Blocked;
         }
-        finish(ray, from_bvh.or(best), &self.materials)
+        match finish(ray, from_bvh.or(best), &self.materials) {
+            Some(hit) => ShadowQuery::Hit(hit),
+            None => ShadowQuery::Clear,
+        }
     }
 
     /// The same world with the child indexes of wide CSG nodes removed, so every CSG node
